@@ -1,0 +1,20 @@
+// The subcommands of `medial` (GUIDE §3). Each returns an exit code or throws UsageError / Failure.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace medial::cli {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  const char* usage;  // the full --help text
+  int (*run)(const std::vector<std::string>& args);
+};
+
+const std::vector<Command>& commands();
+
+int runRender(const std::vector<std::string>& args);
+
+}  // namespace medial::cli

@@ -1,0 +1,28 @@
+// Progress line of the `medial` command: "label  42%" redrawn on stderr when it is a terminal and
+// --quiet was not given (GUIDE §3). Observes a VTK algorithm's ProgressEvent.
+#pragma once
+
+#include <string>
+
+class vtkAlgorithm;
+
+namespace medial::cli {
+
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool quiet);
+  ~ProgressLine();
+
+  // Shows progress of `algorithm` under `label` until the next watch() or finish().
+  void watch(vtkAlgorithm* algorithm, const std::string& label);
+  void show(const std::string& label, double fraction);
+  // Clears the line.
+  void finish();
+
+ private:
+  bool enabled_;
+  bool drawn_ = false;
+  int lastPercent_ = -1;
+};
+
+}  // namespace medial::cli

@@ -1,0 +1,40 @@
+#include "Timings.h"
+
+#include <cstdio>
+
+namespace medial::cli {
+
+void Timings::start(const std::string& stage) {
+  stop();
+  current_ = stage;
+  begin_ = Clock::now();
+}
+
+void Timings::stop() {
+  if (current_.empty()) return;
+  const double seconds = std::chrono::duration<double>(Clock::now() - begin_).count();
+  for (auto& [name, total] : stages_)  // a stage run several times (one read per input) adds up
+    if (name == current_) {
+      total += seconds;
+      current_.clear();
+      return;
+    }
+  stages_.emplace_back(current_, seconds);
+  current_.clear();
+}
+
+std::string Timings::json() const {
+  std::string out = "{";
+  double total = 0;
+  for (const auto& [name, seconds] : stages_) {
+    char number[64];
+    std::snprintf(number, sizeof number, "%.6f", seconds);
+    out += "\"" + name + "\": " + number + ", ";
+    total += seconds;
+  }
+  char number[64];
+  std::snprintf(number, sizeof number, "%.6f", total);
+  return out + "\"total\": " + number + "}";
+}
+
+}  // namespace medial::cli

@@ -1,0 +1,125 @@
+// `medial`: Medial's batch command (GUIDE §3). Dispatches to one subcommand per algorithm.
+#include "Commands.h"
+#include "CommandLine.h"
+
+#include <vtkObject.h>
+#include <vtkVersion.h>
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#ifndef MEDIAL_VERSION
+#define MEDIAL_VERSION "unknown"
+#endif
+
+namespace medial::cli {
+namespace {
+
+int notYetAvailable(const char* name) {
+  std::fprintf(stderr, "medial %s: not yet available in this build\n", name);
+  return kFailure;
+}
+
+int runSkeleton(const std::vector<std::string>&) { return notYetAvailable("skeleton"); }
+int runCenterline(const std::vector<std::string>&) { return notYetAvailable("centerline"); }
+int runSqm(const std::vector<std::string>&) { return notYetAvailable("sqm"); }
+int runSketch(const std::vector<std::string>&) { return notYetAvailable("sketch"); }
+
+}  // namespace
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> all = {
+      {"skeleton", "curve skeleton of a closed mesh by mesh contraction (not yet available)",
+       "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig RIG.glb|RIG.fbx]\n",
+       runSkeleton},
+      {"centerline", "TSK centerline of a tubular structure in a CT volume (not yet available)",
+       "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] "
+       "[--profile PROFILE.csv]\n",
+       runCenterline},
+      {"sqm", "quad-dominant tube mesh of a skeleton with radii (not yet available)",
+       "usage: medial sqm SKELETON.vtp|SKELETON.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--capsule] "
+       "[--subdivide K]\n",
+       runSqm},
+      {"sketch", "skeleton and inflated mesh of a closed 2-D stroke (not yet available)",
+       "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp]\n", runSketch},
+      {"render", "render meshes, skeletons and volumes offscreen to a PNG",
+       "usage: medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION]\n"
+       "                     [--skeleton-scale S] [--quiet] [--timings]\n"
+       "\n"
+       "Renders every INPUT (meshes: .vtp .vtk .vtu .obj .ply .stl .off; skeletons: .vtp .swc, drawn as\n"
+       "tubes from their Radius; volumes: .nii .nii.gz .mha .mhd .nrrd .inr .inr.gz .vti .inv3 or a DICOM\n"
+       "directory, drawn as three orthogonal slices) into one PNG.\n"
+       "  -o, --output IMAGE.png   the image to write (written atomically)\n"
+       "  --size WxH               image size in pixels (default 1024x768)\n"
+       "  --camera AZ,EL           degrees around the front view (default 30,20)\n"
+       "  --skeleton-scale S       scale of skeleton tube radii (default 1)\n"
+       "  --quiet                  no progress line\n"
+       "  --timings                print stage times as JSON on stdout\n"
+       "Without an X display, a private Xvfb is started (package xvfb).\n",
+       runRender},
+  };
+  return all;
+}
+
+namespace {
+
+void printHelp(FILE* out) {
+  std::fprintf(out,
+               "medial %s: skeletons, centerlines, tube meshes and ghost views\n\n"
+               "usage: medial COMMAND [ARGS...]\n"
+               "       medial COMMAND --help\n"
+               "       medial --help | --version\n\ncommands:\n",
+               MEDIAL_VERSION);
+  for (const Command& c : commands()) std::fprintf(out, "  %-11s %s\n", c.name, c.summary);
+  std::fprintf(out, "\nExit status: 0 success, 1 failure (one line on stderr), 2 usage error.\n");
+}
+
+}  // namespace
+}  // namespace medial::cli
+
+int main(int argc, char** argv) {
+  using namespace medial::cli;
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) {
+    printHelp(stderr);
+    return kUsageError;
+  }
+  if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    printHelp(stdout);
+    return kSuccess;
+  }
+  if (args[0] == "--version") {
+    std::printf("medial %s (VTK %s)\n", MEDIAL_VERSION, vtkVersion::GetVTKVersion());
+    return kSuccess;
+  }
+  const Command* command = nullptr;
+  for (const Command& c : commands())
+    if (args[0] == c.name) command = &c;
+  if (!command) {
+    std::fprintf(stderr, "medial: unknown command '%s' (see medial --help)\n", args[0].c_str());
+    return kUsageError;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  for (const std::string& a : rest)
+    if (a == "--help" || a == "-h") {
+      std::fputs(command->usage, stdout);
+      return kSuccess;
+    }
+
+  // Errors are reported once, by the command, in one line: VTK's own multi-line reports are off.
+  vtkObject::GlobalWarningDisplayOff();
+  try {
+    return command->run(rest);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "medial %s: %s\n%s", command->name, e.what(), command->usage);
+    return kUsageError;
+  } catch (const Failure& e) {
+    std::fprintf(stderr, "medial %s: %s\n", command->name, e.what());
+    return kFailure;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "medial %s: %s\n", command->name, e.what());
+    return kFailure;
+  }
+}

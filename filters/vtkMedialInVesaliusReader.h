@@ -1,0 +1,28 @@
+/**
+ * @class vtkMedialInVesaliusReader
+ * @brief Reads the CT volume of an InVesalius 3 project (.inv3: a gzip-compressed tar holding
+ * `main.plist` and the raw voxel matrix it names).
+ *
+ * `main.plist` gives the matrix file, its numpy dtype (int16 for CT in Hounsfield units) and its shape
+ * (slices, rows, columns), and the spacing (x, y, z) in mm. The matrix is raw little-endian, x fastest.
+ * The origin is (0, 0, 0): the project does not store the scanner's. The project's masks and surfaces
+ * are not read.
+ */
+#pragma once
+
+#include "vtkMedialImageFileReader.h"
+
+class MEDIALFILTERS_EXPORT vtkMedialInVesaliusReader : public vtkMedialImageFileReader {
+ public:
+  static vtkMedialInVesaliusReader* New();
+  vtkTypeMacro(vtkMedialInVesaliusReader, vtkMedialImageFileReader);
+
+ protected:
+  vtkMedialInVesaliusReader() = default;
+  ~vtkMedialInVesaliusReader() override = default;
+  bool ReadImage(const std::string& path, vtkImageData* image, std::string& error) override;
+
+ private:
+  vtkMedialInVesaliusReader(const vtkMedialInVesaliusReader&) = delete;
+  void operator=(const vtkMedialInVesaliusReader&) = delete;
+};

@@ -1,0 +1,181 @@
+#include "vtkMedialOFFReader.h"
+
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <OpenMesh/Core/IO/IOManager.hh>
+#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
+
+#include <fstream>
+
+vtkStandardNewMacro(vtkMedialOFFReader);
+
+vtkMedialOFFReader::vtkMedialOFFReader() { this->SetNumberOfInputPorts(0); }
+
+void vtkMedialOFFReader::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->FileName << "\n";
+}
+
+namespace {
+
+using namespace OpenMesh;
+
+// An OpenMesh importer that records the polygon soup as read, instead of a half-edge mesh (which would
+// drop non-manifold faces). Only the calls OFF reading makes do anything.
+class PolygonSoupImporter : public IO::BaseImporter {
+ public:
+  std::vector<Vec3d> points;
+  std::vector<Vec3uc> colors;
+  std::vector<Vec3f> normals;
+  std::vector<std::vector<int>> faces;
+  bool badFace = false;
+
+  VertexHandle add_vertex(const Vec3f& p) override { return add_vertex(Vec3d(p[0], p[1], p[2])); }
+  VertexHandle add_vertex(const Vec3d& p) override {
+    points.push_back(p);
+    return VertexHandle(static_cast<int>(points.size()) - 1);
+  }
+  VertexHandle add_vertex() override { return add_vertex(Vec3d(0, 0, 0)); }
+  FaceHandle add_face(const VHandles& handles) override {
+    std::vector<int> face;
+    for (const VertexHandle& h : handles) {
+      if (!h.is_valid() || h.idx() >= static_cast<int>(points.size())) {
+        badFace = true;
+        return FaceHandle();
+      }
+      face.push_back(h.idx());
+    }
+    faces.push_back(std::move(face));
+    return FaceHandle(static_cast<int>(faces.size()) - 1);
+  }
+  void set_point(VertexHandle v, const Vec3f& p) override { points.at(v.idx()) = Vec3d(p[0], p[1], p[2]); }
+  void set_normal(VertexHandle v, const Vec3f& n) override { normalAt(v) = n; }
+  void set_normal(VertexHandle v, const Vec3d& n) override { normalAt(v) = Vec3f(n[0], n[1], n[2]); }
+  void set_color(VertexHandle v, const Vec3uc& c) override { colorAt(v) = c; }
+  void set_color(VertexHandle v, const Vec4uc& c) override { colorAt(v) = Vec3uc(c[0], c[1], c[2]); }
+  void set_color(VertexHandle v, const Vec3f& c) override { colorAt(v) = toBytes(c[0], c[1], c[2]); }
+  void set_color(VertexHandle v, const Vec4f& c) override { colorAt(v) = toBytes(c[0], c[1], c[2]); }
+
+  // Everything below is not produced by OFF files (or not kept by Medial).
+  HalfedgeHandle add_edge(VertexHandle, VertexHandle) override { return HalfedgeHandle(); }
+  FaceHandle add_face(HalfedgeHandle) override { return FaceHandle(); }
+  void add_face_texcoords(FaceHandle, VertexHandle, const std::vector<Vec2f>&) override {}
+  void add_face_texcoords(FaceHandle, VertexHandle, const std::vector<Vec3f>&) override {}
+  void set_face_texindex(FaceHandle, int) override {}
+  void set_halfedge(VertexHandle, HalfedgeHandle) override {}
+  void set_texcoord(VertexHandle, const Vec2f&) override {}
+  void set_status(VertexHandle, const Attributes::StatusInfo&) override {}
+  void set_next(HalfedgeHandle, HalfedgeHandle) override {}
+  void set_face(HalfedgeHandle, FaceHandle) override {}
+  void request_face_texcoords2D() override {}
+  void set_texcoord(HalfedgeHandle, const Vec2f&) override {}
+  void set_texcoord(VertexHandle, const Vec3f&) override {}
+  void set_texcoord(HalfedgeHandle, const Vec3f&) override {}
+  void set_status(HalfedgeHandle, const Attributes::StatusInfo&) override {}
+  void set_color(EdgeHandle, const Vec3uc&) override {}
+  void set_color(EdgeHandle, const Vec4uc&) override {}
+  void set_color(EdgeHandle, const Vec3f&) override {}
+  void set_color(EdgeHandle, const Vec4f&) override {}
+  void set_status(EdgeHandle, const Attributes::StatusInfo&) override {}
+  void set_normal(FaceHandle, const Vec3f&) override {}
+  void set_normal(FaceHandle, const Vec3d&) override {}
+  void set_color(FaceHandle, const Vec3uc&) override {}
+  void set_color(FaceHandle, const Vec4uc&) override {}
+  void set_color(FaceHandle, const Vec3f&) override {}
+  void set_color(FaceHandle, const Vec4f&) override {}
+  void set_status(FaceHandle, const Attributes::StatusInfo&) override {}
+  void add_texture_information(int, std::string) override {}
+  size_t n_vertices() const override { return points.size(); }
+  size_t n_faces() const override { return faces.size(); }
+  size_t n_edges() const override { return 0; }
+
+ private:
+  static Vec3uc toBytes(float r, float g, float b) {
+    auto byte = [](float x) { return static_cast<unsigned char>(std::clamp(x, 0.f, 1.f) * 255.f + 0.5f); };
+    return Vec3uc(byte(r), byte(g), byte(b));
+  }
+  Vec3uc& colorAt(VertexHandle v) {
+    colors.resize(points.size(), Vec3uc(255, 255, 255));
+    return colors.at(v.idx());
+  }
+  Vec3f& normalAt(VertexHandle v) {
+    normals.resize(points.size(), Vec3f(0, 0, 0));
+    return normals.at(v.idx());
+  }
+};
+
+}  // namespace
+
+int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (this->FileName.empty()) {
+    vtkErrorMacro(<< "no file name given");
+    return 0;
+  }
+  if (!std::ifstream(this->FileName)) {
+    vtkErrorMacro(<< this->FileName << ": cannot open the file");
+    return 0;
+  }
+
+  PolygonSoupImporter soup;
+  IO::Options options = IO::Options::VertexColor | IO::Options::VertexNormal;
+  omerr().disable();  // OpenMesh would print its own complaints; ours name the file
+  const bool ok = IO::IOManager().read(this->FileName, soup, options);
+  omerr().enable();
+  if (!ok) {
+    vtkErrorMacro(<< this->FileName << ": not a readable OFF file");
+    return 0;
+  }
+  if (soup.badFace) {
+    vtkErrorMacro(<< this->FileName << ": a face refers to a vertex that does not exist");
+    return 0;
+  }
+  if (soup.points.empty()) {
+    vtkErrorMacro(<< this->FileName << ": the mesh has no vertices");
+    return 0;
+  }
+  this->UpdateProgress(0.7);
+
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(soup.points.size()));
+  for (size_t i = 0; i < soup.points.size(); ++i) points->SetPoint(i, soup.points[i].data());
+
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  polys->AllocateEstimate(static_cast<vtkIdType>(soup.faces.size()), 3);
+  std::vector<vtkIdType> ids;
+  for (const auto& face : soup.faces) {
+    ids.assign(face.begin(), face.end());
+    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+
+  if (options.vertex_has_color() && soup.colors.size() == soup.points.size()) {
+    auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colors->SetName("Colors");
+    colors->SetNumberOfComponents(3);
+    colors->SetNumberOfTuples(static_cast<vtkIdType>(soup.colors.size()));
+    for (size_t i = 0; i < soup.colors.size(); ++i)
+      for (int c = 0; c < 3; ++c) colors->SetComponent(i, c, soup.colors[i][c]);
+    output->GetPointData()->SetScalars(colors);
+  }
+  if (options.vertex_has_normal() && soup.normals.size() == soup.points.size()) {
+    auto normals = vtkSmartPointer<vtkFloatArray>::New();
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(static_cast<vtkIdType>(soup.normals.size()));
+    for (size_t i = 0; i < soup.normals.size(); ++i) normals->SetTypedTuple(i, soup.normals[i].data());
+    output->GetPointData()->SetNormals(normals);
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}

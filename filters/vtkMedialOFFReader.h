@@ -1,0 +1,38 @@
+/**
+ * @class vtkMedialOFFReader
+ * @brief Reads OFF meshes in all of their variants (OFF, COFF, NOFF, CNOFF, STOFF, binary) through
+ * OpenMesh's reader into a vtkPolyData.
+ *
+ * The faces are taken as the file lists them, without building a half-edge structure, so that
+ * non-manifold or inconsistently oriented meshes arrive intact (the algorithms report or repair them;
+ * a reader must not silently drop faces). Per-vertex colours become the `Colors` point array (RGB,
+ * unsigned char), per-vertex normals the point normals. An unreadable file, an empty mesh, or a face
+ * that refers to a missing vertex is an error and leaves the output empty.
+ */
+#pragma once
+
+#include "MedialFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string>
+
+class MEDIALFILTERS_EXPORT vtkMedialOFFReader : public vtkPolyDataAlgorithm {
+ public:
+  static vtkMedialOFFReader* New();
+  vtkTypeMacro(vtkMedialOFFReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetStdStringFromCharMacro(FileName);
+  vtkGetCharFromStdStringMacro(FileName);
+
+ protected:
+  vtkMedialOFFReader();
+  ~vtkMedialOFFReader() override = default;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+ private:
+  vtkMedialOFFReader(const vtkMedialOFFReader&) = delete;
+  void operator=(const vtkMedialOFFReader&) = delete;
+
+  std::string FileName;
+};

@@ -1,0 +1,65 @@
+/**
+ * @class vtkMedialReader
+ * @brief The one place that opens any input Medial supports, chosen by extension.
+ *
+ * Meshes and skeletons (output vtkPolyData): .vtp .vtk .vtu (its surface) .obj .ply .stl through VTK's
+ * readers, .off (OFF/COFF/NOFF...) through OpenMesh (vtkMedialOFFReader), .swc (vtkMedialSWCReader).
+ * Volumes (output vtkImageData, physical coordinates kept): .nii .nii.gz .mha .mhd .nrrd .nhdr .gipl .dcm
+ * and DICOM series directories through ITK (vtkMedialITKImageReader), .inr .inr.gz through CGAL
+ * (vtkMedialINRReader), .vti through VTK, .inv3 InVesalius projects (vtkMedialInVesaliusReader).
+ *
+ * A polydata with lines and no polygons is a skeleton and is validated (GUIDE §2). Errors (missing file,
+ * unknown extension, unreadable content, empty mesh, invalid skeleton) are reported with vtkErrorMacro
+ * naming the file, and the output is empty.
+ */
+#pragma once
+
+#include "MedialFiltersModule.h"
+#include "vtkDataObjectAlgorithm.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class MEDIALFILTERS_EXPORT vtkMedialReader : public vtkDataObjectAlgorithm {
+ public:
+  static vtkMedialReader* New();
+  vtkTypeMacro(vtkMedialReader, vtkDataObjectAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetStdStringFromCharMacro(FileName);
+  vtkGetCharFromStdStringMacro(FileName);
+
+  /// Whether the output is (or will be) a volume, judged from the file name (and a .vtk header).
+  static bool IsVolumeFile(const char* fileName);
+  /// Whether the extension (or a directory, read as a DICOM series) is supported.
+  static bool CanReadFile(const char* fileName);
+  /// Space-separated supported extensions, e.g. for file dialogs: "*.vtp *.obj ...".
+  static const char* GetMeshExtensions();
+  static const char* GetVolumeExtensions();
+
+  /// The last error in one line (empty after a successful read), without VTK's file/line prefix.
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+ protected:
+  vtkMedialReader();
+  ~vtkMedialReader() override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+ private:
+  vtkMedialReader(const vtkMedialReader&) = delete;
+  void operator=(const vtkMedialReader&) = delete;
+
+  // Reads FileName into Result, or sets ErrorMessage.
+  void ReadFile();
+  vtkSmartPointer<vtkDataObject> ReadPolyData(const std::string& extension);
+  vtkSmartPointer<vtkDataObject> ReadVolume(const std::string& extension);
+
+  std::string FileName;
+  std::string ErrorMessage;
+  std::string ResultFileName;
+  vtkMTimeType ResultTime = 0;
+  vtkSmartPointer<vtkDataObject> Result;
+};

@@ -1,0 +1,46 @@
+/**
+ * @class vtkMedialSWCWriter
+ * @brief Writes a GUIDE §2 skeleton polydata as SWC (`id type x y z radius parent`).
+ *
+ * SWC stores forests: every component is written as a tree rooted at `Root` (or, for components without
+ * it, at their lowest node id), ids 1-based in breadth-first order so that a parent precedes its
+ * children. The type column comes from `SWCType` when present, else `DefaultType` (0, "undefined").
+ * Errors (empty output file never left behind): no `Radius` array, invalid skeleton (GUIDE §2), or a cycle,
+ * which SWC cannot represent. The file is written to a temporary name and renamed on success.
+ */
+#pragma once
+
+#include "MedialFiltersModule.h"
+#include "vtkWriter.h"
+
+#include <string>
+
+class vtkPolyData;
+
+class MEDIALFILTERS_EXPORT vtkMedialSWCWriter : public vtkWriter {
+ public:
+  static vtkMedialSWCWriter* New();
+  vtkTypeMacro(vtkMedialSWCWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetStdStringFromCharMacro(FileName);
+  vtkGetCharFromStdStringMacro(FileName);
+
+  /// SWC type written for nodes without an `SWCType` value (default 0, undefined).
+  vtkSetMacro(DefaultType, int);
+  vtkGetMacro(DefaultType, int);
+
+ protected:
+  vtkMedialSWCWriter() = default;
+  ~vtkMedialSWCWriter() override = default;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  void WriteData() override;
+  bool WriteSkeleton();
+
+ private:
+  vtkMedialSWCWriter(const vtkMedialSWCWriter&) = delete;
+  void operator=(const vtkMedialSWCWriter&) = delete;
+
+  std::string FileName;
+  int DefaultType = 0;
+};

@@ -1,0 +1,73 @@
+/**
+ * @class vtkMedialScene
+ * @brief Builds what Medial shows for a data object: meshes as smoothly shaded surfaces (their own RGB
+ * colours when they have them), skeletons as tubes and spheres from `Radius`, volumes as three orthogonal
+ * slices with an outline. One scene serves `medial render`, the GUI and Python, so they look alike.
+ *
+ * Colours follow the order of AddData (a palette of ivory, red, blue, green...). The default camera is a
+ * three-quarter view from the front (+Z towards the viewer, +Y up, 30° azimuth, 20° elevation) that fits
+ * everything; lights come from a vtkLightKit. RenderToImage renders offscreen (needs an X display; see
+ * `medial render` for the private Xvfb) and writes a PNG atomically.
+ */
+#pragma once
+
+#include "MedialFiltersModule.h"
+#include "vtkObject.h"
+#include "vtkSmartPointer.h"
+
+class vtkDataObject;
+class vtkPolyData;
+class vtkImageData;
+class vtkProp3D;
+class vtkRenderer;
+
+class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
+ public:
+  static vtkMedialScene* New();
+  vtkTypeMacro(vtkMedialScene, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkRenderer* GetRenderer();
+
+  /// Adds a mesh, skeleton or volume and returns its prop (an actor, or an assembly for volumes), or
+  /// null for data it cannot show (an error is reported).
+  vtkProp3D* AddData(vtkDataObject* data);
+  /// Removes every prop added so far.
+  void Clear();
+
+  /// Scale applied to `Radius` when drawing skeleton tubes (default 1: the node spheres themselves).
+  vtkSetMacro(SkeletonRadiusScale, double);
+  vtkGetMacro(SkeletonRadiusScale, double);
+
+  /// The default three-quarter view that fits every visible prop, for the window's aspect ratio (4:3
+  /// when the renderer has no window yet).
+  void ResetCamera();
+  void ResetCamera(double aspect);
+  /// A view from `azimuth` and `elevation` degrees around the front view (+Z towards the viewer).
+  void ResetCamera(double aspect, double azimuth, double elevation);
+
+  /// Renders offscreen at width x height and writes a PNG (atomically). Returns false on failure.
+  bool RenderToImage(const char* fileName, int width, int height);
+
+  /// A skeleton is a polydata with lines and no polygons (GUIDE §2).
+  static bool IsSkeleton(vtkPolyData* polyData);
+
+  /// RGB of palette entry i (cycles).
+  static void GetPaletteColor(int i, double rgb[3]);
+
+ protected:
+  vtkMedialScene();
+  ~vtkMedialScene() override;
+
+ private:
+  vtkMedialScene(const vtkMedialScene&) = delete;
+  void operator=(const vtkMedialScene&) = delete;
+
+  vtkProp3D* AddMesh(vtkPolyData* mesh, const double rgb[3]);
+  vtkProp3D* AddSkeleton(vtkPolyData* skeleton, const double rgb[3]);
+  vtkProp3D* AddVolume(vtkImageData* image);
+
+  vtkSmartPointer<vtkRenderer> Renderer;
+  int ColorIndex = 0;
+  double SkeletonRadiusScale = 1.0;
+};
