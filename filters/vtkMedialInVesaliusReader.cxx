@@ -139,7 +139,15 @@ bool vtkMedialInVesaliusReader::ReadImage(const std::string& path, vtkImageData*
   image->SetSpacing(spacing[0], spacing[1], spacing[2]);
   image->SetOrigin(0, 0, 0);
   image->AllocateScalars(type, 1);
-  std::memcpy(image->GetScalarPointer(), voxels.data(), expected);  // little-endian data on a little-endian host
+  // InVesalius keeps its rows flipped with respect to DICOM: the face lies at high row indices. Flip them
+  // back so that +y runs anterior to posterior and +z inferior to superior, as in DICOM's LPS space.
+  const size_t rowBytes = static_cast<size_t>(nx) * bytes;
+  auto* target = static_cast<char*>(image->GetScalarPointer());
+  for (int z = 0; z < nz; ++z)
+    for (int y = 0; y < ny; ++y)
+      std::memcpy(target + (static_cast<size_t>(z) * ny + y) * rowBytes,
+                  voxels.data() + (static_cast<size_t>(z) * ny + (ny - 1 - y)) * rowBytes, rowBytes);
+  // (little-endian data on a little-endian host: no byte swapping)
   image->GetPointData()->GetScalars()->SetName("ImageScalars");
   return true;
 }

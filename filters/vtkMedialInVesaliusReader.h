@@ -4,7 +4,10 @@
  * `main.plist` and the raw voxel matrix it names).
  *
  * `main.plist` gives the matrix file, its numpy dtype (int16 for CT in Hounsfield units) and its shape
- * (slices, rows, columns), and the spacing (x, y, z) in mm. The matrix is raw little-endian, x fastest.
+ * (slices, rows, columns), and the spacing (x, y, z) in mm. The matrix is raw little-endian, x fastest,
+ * with rows flipped with respect to DICOM; the reader flips them back so that the volume is in DICOM's LPS
+ * orientation (+y towards posterior, +z towards superior; checked on the Cranium sample: dental metal in
+ * the first slices, the face at low y).
  * The origin is (0, 0, 0): the project does not store the scanner's. The project's masks and surfaces
  * are not read.
  */
