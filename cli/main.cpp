@@ -2,7 +2,8 @@
 #include "Commands.h"
 #include "CommandLine.h"
 
-#include <vtkObject.h>
+#include <vtkLogger.h>
+#include <vtkOutputWindow.h>
 #include <vtkVersion.h>
 
 #include <cstdio>
@@ -108,8 +109,10 @@ int main(int argc, char** argv) {
       return kSuccess;
     }
 
-  // Errors are reported once, by the command, in one line: VTK's own multi-line reports are off.
-  vtkObject::GlobalWarningDisplayOff();
+  // Errors are reported once, by the command, in one line: VTK's own multi-line reports do not reach
+  // the terminal. (GlobalWarningDisplayOff would also silence the ErrorEvent observers the command reads.)
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);  // the executive's "returned failure" reports
   try {
     return command->run(rest);
   } catch (const UsageError& e) {

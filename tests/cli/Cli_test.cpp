@@ -1,0 +1,115 @@
+// The `medial` command (GUIDE §3): exit codes, help, atomic outputs, render, private Xvfb.
+#include "ImageComparison.h"
+#include "RunCommand.h"
+#include "TestPaths.h"
+
+#include <vtkImageData.h>
+#include <vtkSmartPointer.h>
+
+#include <filesystem>
+
+namespace {
+
+using namespace medial::test;
+
+std::string medialCommand(const std::string& args) { return medialExe() + " " + args; }
+
+int lineCount(const std::string& text) {
+  int lines = 0;
+  for (char c : text) lines += c == '\n';
+  return lines;
+}
+
+double foregroundOf(const std::string& png) {
+  vtkSmartPointer<vtkImageData> image;
+  image.TakeReference(loadPng(png));
+  return image ? foregroundFraction(image) : -1.0;
+}
+
+}  // namespace
+
+TEST(Cli, HelpAndVersionExitZero) {
+  auto help = runCommand(medialCommand("--help"));
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.out.find("render"), std::string::npos);
+  EXPECT_NE(help.out.find("skeleton"), std::string::npos);
+  auto version = runCommand(medialCommand("--version"));
+  EXPECT_EQ(version.exitCode, 0);
+  EXPECT_NE(version.out.find("medial 0."), std::string::npos) << version.out;
+  auto commandHelp = runCommand(medialCommand("render --help"));
+  EXPECT_EQ(commandHelp.exitCode, 0);
+  EXPECT_NE(commandHelp.out.find("usage: medial render"), std::string::npos);
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  for (const char* args : {"", "frobnicate", "render", "render in.off", "render in.off -o out.png --size 12",
+                           "render in.off -o out.png --bogus", "render in.off -o out.jpg",
+                           "render in.off -o out.png --camera 1", "render in.off -o"}) {
+    auto r = runCommand(medialCommand(args));
+    EXPECT_EQ(r.exitCode, 2) << "medial " << args << "\n" << r.err;
+    EXPECT_FALSE(r.err.empty()) << "medial " << args;
+  }
+}
+
+TEST(Cli, CommandsNotYetAvailableExitOne) {
+  for (const char* command : {"skeleton", "centerline", "sqm", "sketch"}) {
+    auto r = runCommand(medialCommand(std::string(command) + " x -o y"));
+    EXPECT_EQ(r.exitCode, 1) << command;
+    EXPECT_NE(r.err.find("not yet available"), std::string::npos) << r.err;
+  }
+}
+
+TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {
+  MEDIAL_REQUIRE_DISPLAY();
+  const std::string dir = scratchDir("cli-render");
+  for (const char* input : {"meshes/torus.off", "meshes/capsule.vtp", "skeletons/figure.vtp", "skeletons/hand.swc"}) {
+    const std::string png = dir + "/" + std::filesystem::path(input).stem().string() + ".png";
+    auto r = runCommand(medialCommand("render " + dataPath(input) + " -o " + png + " --size 200x150 --quiet"));
+    ASSERT_EQ(r.exitCode, 0) << input << ": " << r.err;
+    EXPECT_GT(foregroundOf(png), 0.05) << input << " rendered blank";
+  }
+}
+
+TEST(Cli, RenderFailureIsOneLineAndLeavesNoFile) {
+  MEDIAL_REQUIRE_DISPLAY();
+  const std::string dir = scratchDir("cli-render-failure");
+  const std::string png = dir + "/out.png";
+  auto missing = runCommand(medialCommand("render " + dir + "/missing.off -o " + png));
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_EQ(lineCount(missing.err), 1) << missing.err;
+  EXPECT_NE(missing.err.find(dir + "/missing.off"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("no such file"), std::string::npos) << missing.err;
+
+  std::ofstream(dir + "/bad.swc") << "1 1 0 0 0 -3 -1\n";
+  auto invalid = runCommand(medialCommand("render " + dir + "/bad.swc -o " + png));
+  EXPECT_EQ(invalid.exitCode, 1);
+  EXPECT_EQ(lineCount(invalid.err), 1) << invalid.err;
+  EXPECT_NE(invalid.err.find("radius -3"), std::string::npos) << invalid.err;
+
+  auto unwritable = runCommand(medialCommand("render " + dataPath("meshes/torus.off") + " -o " + dir + "/no/such/dir/x.png"));
+  EXPECT_EQ(unwritable.exitCode, 1);
+  EXPECT_EQ(lineCount(unwritable.err), 1) << unwritable.err;
+  EXPECT_TRUE(std::filesystem::is_empty(dir + "/") || !std::filesystem::exists(png));
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    EXPECT_EQ(entry.path().extension(), ".swc") << "left behind: " << entry.path();
+}
+
+TEST(Cli, RenderStartsPrivateXvfbWithoutDisplay) {
+  if (std::system("command -v Xvfb >/dev/null") != 0) GTEST_SKIP() << "Xvfb is not installed";
+  const std::string png = scratchDir("cli-private-xvfb") + "/torus.png";
+  auto r = runCommand("env -u DISPLAY " + medialCommand("render " + dataPath("meshes/torus.off") + " -o " + png +
+                                                 " --size 160x120"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_GT(foregroundOf(png), 0.05);
+}
+
+TEST(Cli, TimingsArePrintedAsJson) {
+  MEDIAL_REQUIRE_DISPLAY();
+  const std::string png = scratchDir("cli-timings") + "/t.png";
+  auto r = runCommand(medialCommand("render " + dataPath("meshes/torus.off") + " -o " + png + " --size 64x48 --timings"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.front(), '{');
+  EXPECT_NE(r.out.find("\"read\": "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"render\": "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"total\": "), std::string::npos) << r.out;
+}

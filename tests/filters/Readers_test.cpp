@@ -1,0 +1,279 @@
+// vtkMedialReader: every supported kind of input opened by extension, physical coordinates kept, and
+// clear errors on bad files.
+#include "TestPaths.h"
+
+#include "MedialErrorCollector.h"
+#include "vtkMedialMeshTopology.h"
+#include "vtkMedialReader.h"
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <itkImage.h>
+#include <itkImageFileWriter.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+namespace {
+
+using medial::test::externalPath;
+using medial::test::scratchDir;
+
+struct ReadResult {
+  vtkSmartPointer<vtkDataObject> data;
+  std::string error;
+};
+
+ReadResult readFile(const std::string& path) {
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  auto errors = medial::ErrorCollector::Watch(reader);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return {reader->GetOutputDataObject(0), errors->HasErrors() ? reader->GetErrorMessage() : ""};
+}
+
+void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+const char* kCubeOff =
+    "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+    "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+
+// A 3-D ITK image with a rotated direction, written to `path` (format by extension).
+void writeItkImage(const std::string& path) {
+  using Image = itk::Image<short, 3>;
+  auto image = Image::New();
+  Image::RegionType region;
+  region.SetSize({{5, 4, 3}});
+  image->SetRegions(region);
+  image->Allocate();
+  short value = 0;
+  for (itk::ImageRegionIterator<Image> it(image, region); !it.IsAtEnd(); ++it) it.Set(value++);
+  const double spacing[3] = {0.7, 0.8, 2.5};
+  const double origin[3] = {-10.0, 20.0, 3.5};
+  image->SetSpacing(spacing);
+  image->SetOrigin(origin);
+  Image::DirectionType direction;  // a rotation of 90° about z
+  direction.Fill(0.0);
+  direction(0, 1) = -1.0;
+  direction(1, 0) = 1.0;
+  direction(2, 2) = 1.0;
+  image->SetDirection(direction);
+  auto writer = itk::ImageFileWriter<Image>::New();
+  writer->SetFileName(path);
+  writer->SetInput(image);
+  writer->Update();
+}
+
+}  // namespace
+
+TEST(Readers, OffQuadMeshKeepsItsPolygons) {
+  const std::string path = scratchDir("off-quads") + "/cube.off";
+  writeText(path, kCubeOff);
+  const ReadResult r = readFile(path);
+  ASSERT_EQ(r.error, "");
+  auto* mesh = vtkPolyData::SafeDownCast(r.data);
+  EXPECT_EQ(mesh->GetNumberOfPoints(), 8);
+  EXPECT_EQ(mesh->GetNumberOfPolys(), 6);
+  EXPECT_EQ(mesh->GetCell(0)->GetNumberOfPoints(), 4);
+}
+
+TEST(Readers, OffVariantsCoffAndNoffAreRead) {
+  const std::string dir = scratchDir("off-variants");
+  writeText(dir + "/colored.off",
+            "COFF\n4 4 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n0 0 1 255 255 255 255\n"
+            "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+  writeText(dir + "/normals.off",
+            "NOFF\n4 4 0\n0 0 0 0 0 -1\n1 0 0 1 0 0\n0 1 0 0 1 0\n0 0 1 0 0 1\n"
+            "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+  const ReadResult colored = readFile(dir + "/colored.off");
+  ASSERT_EQ(colored.error, "");
+  auto* mesh = vtkPolyData::SafeDownCast(colored.data);
+  EXPECT_EQ(mesh->GetNumberOfPolys(), 4);
+  vtkDataArray* colors = mesh->GetPointData()->GetScalars();
+  ASSERT_NE(colors, nullptr);
+  EXPECT_EQ(colors->GetComponent(1, 1), 255);
+  EXPECT_EQ(colors->GetComponent(1, 0), 0);
+
+  const ReadResult normals = readFile(dir + "/normals.off");
+  ASSERT_EQ(normals.error, "");
+  auto* withNormals = vtkPolyData::SafeDownCast(normals.data);
+  ASSERT_NE(withNormals->GetPointData()->GetNormals(), nullptr);
+  EXPECT_FLOAT_EQ(withNormals->GetPointData()->GetNormals()->GetComponent(3, 2), 1.0f);
+}
+
+TEST(Readers, OffNonManifoldFacesAreKept) {
+  // Three triangles on one edge: a half-edge mesh would drop one; Medial's algorithms must see them all.
+  const std::string path = scratchDir("off-non-manifold") + "/fin.off";
+  writeText(path, "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  const ReadResult r = readFile(path);
+  ASSERT_EQ(r.error, "");
+  auto topology = vtkSmartPointer<vtkMedialMeshTopology>::New();
+  topology->SetInputData(r.data);
+  topology->Update();
+  EXPECT_EQ(topology->GetNumberOfFaces(), 3);
+  EXPECT_EQ(topology->GetNumberOfNonManifoldEdges(), 1);
+}
+
+TEST(Readers, CgalSampleMeshesHaveTheirKnownTopology) {
+  struct Known {
+    const char* name;
+    vtkIdType vertices, genus, borderEdges;
+  };
+  for (const Known& k : {Known{"armadillo", 26002, 0, 0}, Known{"elephant", 2775, 3, 0}, Known{"femur", 3897, 2, 0},
+                         Known{"knot1", 3200, 1, 0}, Known{"mannequin-devil", 12977, 0, 64}}) {
+    const std::string path = externalPath(std::string("cgal/meshes/") + k.name + ".off");
+    MEDIAL_REQUIRE_FILE(path);
+    const ReadResult r = readFile(path);
+    ASSERT_EQ(r.error, "") << k.name;
+    auto topology = vtkSmartPointer<vtkMedialMeshTopology>::New();
+    topology->SetInputData(r.data);
+    topology->Update();
+    EXPECT_EQ(vtkPolyData::SafeDownCast(r.data)->GetNumberOfPoints(), k.vertices) << k.name;
+    EXPECT_EQ(topology->GetGenus(), k.genus) << k.name;
+    EXPECT_EQ(topology->GetNumberOfBorderEdges(), k.borderEdges) << k.name;
+    EXPECT_EQ(topology->GetNumberOfComponents(), 1) << k.name;
+  }
+}
+
+TEST(Readers, BundledMeshesAreClosed) {
+  for (const char* name : {"meshes/torus.off", "meshes/capsule.vtp"}) {
+    const ReadResult r = readFile(medial::test::dataPath(name));
+    ASSERT_EQ(r.error, "") << name;
+    auto topology = vtkSmartPointer<vtkMedialMeshTopology>::New();
+    topology->SetInputData(r.data);
+    topology->Update();
+    EXPECT_TRUE(topology->GetClosedManifold()) << name;
+  }
+}
+
+class ItkFormats : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ItkFormats, KeepOriginSpacingDirectionAndVoxels) {
+  const std::string path = scratchDir(std::string("itk") + GetParam()) + "/image" + GetParam();
+  writeItkImage(path);
+  const ReadResult r = readFile(path);
+  ASSERT_EQ(r.error, "");
+  auto* image = vtkImageData::SafeDownCast(r.data);
+  ASSERT_NE(image, nullptr);
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 5);
+  EXPECT_EQ(dims[1], 4);
+  EXPECT_EQ(dims[2], 3);
+  EXPECT_NEAR(image->GetSpacing()[0], 0.7, 1e-6);
+  EXPECT_NEAR(image->GetSpacing()[2], 2.5, 1e-6);
+  EXPECT_NEAR(image->GetOrigin()[0], -10.0, 1e-6);
+  EXPECT_NEAR(image->GetOrigin()[1], 20.0, 1e-6);
+  vtkMatrix3x3* direction = image->GetDirectionMatrix();
+  EXPECT_NEAR(direction->GetElement(0, 1), -1.0, 1e-6);
+  EXPECT_NEAR(direction->GetElement(1, 0), 1.0, 1e-6);
+  EXPECT_NEAR(direction->GetElement(0, 0), 0.0, 1e-6);
+  EXPECT_EQ(image->GetScalarType(), VTK_SHORT);
+  EXPECT_EQ(image->GetScalarComponentAsDouble(4, 3, 2, 0), 59);  // x fastest: 4 + 5 * (3 + 4 * 2)
+  // Physical position of voxel (1, 0, 0): origin + direction * (spacing_x, 0, 0).
+  double world[3];
+  image->TransformIndexToPhysicalPoint(1, 0, 0, world);
+  EXPECT_NEAR(world[0], -10.0, 1e-6);
+  EXPECT_NEAR(world[1], 20.7, 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(Readers, ItkFormats, ::testing::Values(".nii", ".nii.gz", ".mha", ".nrrd"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                           std::string name = info.param + 1;
+                           for (char& c : name)
+                             if (c == '.') c = '_';
+                           return name;
+                         });
+
+TEST(Readers, InrimageThroughCgal) {
+  // A 3 x 2 x 2 unsigned-char INRIMAGE written by hand: a 256-byte header, then the voxels.
+  std::string header =
+      "#INRIMAGE-4#{\nXDIM=3\nYDIM=2\nZDIM=2\nVDIM=1\nTYPE=unsigned fixed\nPIXSIZE=8 bits\nSCALE=2**0\n"
+      "CPU=decm\nVX=0.5\nVY=0.75\nVZ=2\n";
+  header += std::string(256 - 4 - header.size(), '\n') + "##}\n";
+  ASSERT_EQ(header.size(), 256u);
+  const std::string path = scratchDir("inr") + "/tiny.inr";
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << header;
+    for (int i = 0; i < 12; ++i) out.put(static_cast<char>(10 * i));
+  }
+  const ReadResult r = readFile(path);
+  ASSERT_EQ(r.error, "");
+  auto* image = vtkImageData::SafeDownCast(r.data);
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0] * dims[1] * dims[2], 12);
+  EXPECT_DOUBLE_EQ(image->GetSpacing()[1], 0.75);
+  EXPECT_EQ(image->GetScalarType(), VTK_UNSIGNED_CHAR);
+  EXPECT_EQ(image->GetScalarComponentAsDouble(2, 1, 1, 0), 110);
+}
+
+TEST(Readers, CgalLiverLabelVolume) {
+  const std::string path = externalPath("cgal/images/liver.inr.gz");
+  MEDIAL_REQUIRE_FILE(path);
+  const ReadResult r = readFile(path);
+  ASSERT_EQ(r.error, "");
+  auto* image = vtkImageData::SafeDownCast(r.data);
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 438);
+  EXPECT_EQ(dims[1], 353);
+  EXPECT_EQ(dims[2], 165);
+  EXPECT_NEAR(image->GetSpacing()[0], 0.617, 1e-3);
+  EXPECT_NEAR(image->GetSpacing()[2], 1.333, 1e-3);
+  double range[2];
+  image->GetScalarRange(range);
+  EXPECT_EQ(range[1], 255);
+}
+
+TEST(Readers, InVesaliusHeadCt) {
+  const std::string path = externalPath("invesalius/Cranium.inv3");
+  MEDIAL_REQUIRE_FILE(path);
+  const ReadResult r = readFile(path);
+  ASSERT_EQ(r.error, "");
+  auto* image = vtkImageData::SafeDownCast(r.data);
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 256);
+  EXPECT_EQ(dims[1], 256);
+  EXPECT_EQ(dims[2], 108);
+  EXPECT_NEAR(image->GetSpacing()[0], 0.957, 1e-3);
+  EXPECT_NEAR(image->GetSpacing()[2], 1.5, 1e-9);
+  EXPECT_EQ(image->GetScalarType(), VTK_SHORT);
+  double range[2];
+  image->GetScalarRange(range);
+  EXPECT_EQ(range[0], -1024);  // Hounsfield units
+  EXPECT_GT(range[1], 2000);   // dental metal
+}
+
+TEST(Readers, ClearErrorsOnBadFiles) {
+  const std::string dir = scratchDir("bad-files");
+  writeText(dir + "/garbage.vtp", "this is not XML at all\n");
+  writeText(dir + "/garbage.off", "OFF\n3 1 0\n0 0 0\n1 0\n");
+  writeText(dir + "/bad-index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  writeText(dir + "/empty.obj", "# no geometry\n");
+  writeText(dir + "/garbage.nii", "not an image");
+  writeText(dir + "/garbage.inv3", "not a tar");
+  writeText(dir + "/notes.txt", "hello");
+  struct Case {
+    std::string path, expected;
+  };
+  for (const Case& c : {Case{dir + "/missing.off", "no such file"}, Case{dir + "/notes.txt", "unsupported file type"},
+                        Case{dir + "/garbage.vtp", ""}, Case{dir + "/garbage.off", ""},
+                        Case{dir + "/bad-index.off", "vertex that does not exist"},
+                        Case{dir + "/empty.obj", "holds no mesh"}, Case{dir + "/garbage.nii", ""},
+                        Case{dir + "/garbage.inv3", "not an InVesalius project"}}) {
+    const ReadResult r = readFile(c.path);
+    EXPECT_FALSE(r.error.empty()) << c.path;
+    EXPECT_NE(r.error.find(c.path), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find(c.expected), std::string::npos) << r.error;
+    EXPECT_EQ(r.error.find("ERROR: In"), std::string::npos) << "VTK's prefix leaked: " << r.error;
+  }
+}

@@ -1,0 +1,52 @@
+"""The Python package `medial` next to Debian's `vtk`: run with /usr/bin/python3 and
+PYTHONPATH=build/lib/python3/dist-packages."""
+import os
+import sys
+import tempfile
+import unittest
+
+import vtk
+import medial
+
+
+class MedialPython(unittest.TestCase):
+    def test_mesh_topology_filter_in_a_vtk_pipeline(self):
+        sphere = vtk.vtkSphereSource()
+        sphere.SetThetaResolution(24)
+        sphere.SetPhiResolution(12)
+        topology = medial.vtkMedialMeshTopology()
+        topology.SetInputConnection(sphere.GetOutputPort())
+        topology.Update()
+        self.assertIsInstance(topology, vtk.vtkPolyDataAlgorithm)
+        self.assertTrue(topology.GetClosedManifold())
+        self.assertEqual(topology.GetGenus(), 0)
+        self.assertEqual(topology.GetEulerCharacteristic(), 2)
+        output = topology.GetOutput()
+        self.assertEqual(output.GetNumberOfPolys(), sphere.GetOutput().GetNumberOfPolys())
+        self.assertEqual(output.GetFieldData().GetArray("Genus").GetValue(0), 0)
+
+    def test_reader_and_skeleton_validator(self):
+        data = os.path.join(os.environ.get("MEDIAL_SOURCE_DIR", "."), "data")
+        reader = medial.vtkMedialReader()
+        reader.SetFileName(os.path.join(data, "skeletons", "hand.swc"))
+        validator = medial.vtkMedialSkeletonValidator()
+        validator.SetInputConnection(reader.GetOutputPort())
+        validator.RequireRadiusOn()
+        validator.Update()
+        self.assertEqual(validator.GetProblemCount(), 0)
+        self.assertGreater(validator.GetOutput().GetNumberOfLines(), 10)
+        self.assertIsNotNone(validator.GetOutput().GetPointData().GetArray("NodeType"))
+
+    def test_bad_file_gives_error_and_empty_output(self):
+        reader = medial.vtkMedialReader()
+        reader.SetFileName(os.path.join(tempfile.gettempdir(), "does-not-exist.off"))
+        messages = []
+        reader.AddObserver("ErrorEvent", lambda caller, event: messages.append(event))
+        reader.Update()
+        self.assertEqual(len(messages), 1)
+        self.assertIn("no such file", reader.GetErrorMessage())
+        self.assertEqual(reader.GetOutputDataObject(0).GetNumberOfPoints(), 0)
+
+
+if __name__ == "__main__":
+    sys.exit(unittest.main(verbosity=2).result.wasSuccessful() is False)
