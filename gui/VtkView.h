@@ -1,0 +1,60 @@
+// VtkView: a QOpenGLWidget hosting a vtkGenericOpenGLRenderWindow with full mouse interaction, without
+// VTK's Qt module (Debian builds it for Qt5 only). The recipe is in ../shared/PLATFORM.md: VTK renders
+// into its own framebuffers inside Qt's context, and paintGL blits the result into the widget's.
+#pragma once
+
+#include <QOpenGLWidget>
+
+#include <vtkNew.h>
+
+class vtkGenericOpenGLRenderWindow;
+class vtkGenericRenderWindowInteractor;
+class vtkRenderer;
+class vtkObject;
+
+namespace medial::gui {
+
+class VtkView : public QOpenGLWidget {
+  Q_OBJECT
+
+ public:
+  explicit VtkView(QWidget* parent = nullptr);
+  ~VtkView() override;
+
+  vtkGenericOpenGLRenderWindow* renderWindow() const;
+  void addRenderer(vtkRenderer* renderer);
+
+  // Sets the default surface format VTK needs (OpenGL 3.2 core, depth 24, stencil 8, alpha 8). Call
+  // before constructing the QApplication.
+  static void setDefaultSurfaceFormat();
+
+ signals:
+  // Key R: the owner resets the camera its own way.
+  void resetCameraRequested();
+
+ protected:
+  void initializeGL() override;
+  void resizeGL(int width, int height) override;
+  void paintGL() override;
+
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseDoubleClickEvent(QMouseEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+  void keyReleaseEvent(QKeyEvent* event) override;
+  void enterEvent(QEnterEvent* event) override;
+  void leaveEvent(QEvent* event) override;
+
+ private:
+  void onVtkEvent(vtkObject* caller, unsigned long eventId, void* callData);
+  // Tells the interactor where the pointer is and which modifiers are down (VTK's y axis points up).
+  void setEventPosition(const QPointF& position, Qt::KeyboardModifiers modifiers, int repeat = 0);
+
+  vtkNew<vtkGenericOpenGLRenderWindow> window_;
+  vtkNew<vtkGenericRenderWindowInteractor> interactor_;
+  bool initialized_ = false;
+};
+
+}  // namespace medial::gui

@@ -1,0 +1,54 @@
+// medial-gui: Medial's Qt6 application.
+//   medial-gui [FILE...]                         open the files in the window
+//   medial-gui --screenshot IMAGE.png [FILE...]  open, render, save the 3-D view, quit (for tests);
+//                                                errors go to stderr and the exit code is 1
+#include "MainWindow.h"
+#include "VtkView.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTimer>
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+  medial::gui::VtkView::setDefaultSurfaceFormat();  // before QApplication
+  QApplication app(argc, argv);
+  QApplication::setApplicationName("medial-gui");
+  QApplication::setApplicationVersion(MEDIAL_VERSION);
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Medial: skeletons, centerlines, tube meshes and ghost views");
+  parser.addHelpOption();
+  parser.addVersionOption();
+  QCommandLineOption screenshot("screenshot", "Open FILEs, save the 3-D view to IMAGE and quit.", "IMAGE");
+  QCommandLineOption size("size", "Window size for --screenshot (default 1024x768).", "WxH", "1024x768");
+  parser.addOption(screenshot);
+  parser.addOption(size);
+  parser.addPositionalArgument("files", "Meshes, skeletons or volumes to open.", "[FILE...]");
+  parser.process(app);
+
+  medial::gui::MainWindow window;
+  const bool batch = parser.isSet(screenshot);
+  bool failed = false;
+  if (batch) {
+    window.setErrorHandler([&failed](const QString&, const QString& message) {
+      std::fprintf(stderr, "medial-gui: %s\n", message.toLocal8Bit().constData());
+      failed = true;
+    });
+    const QStringList wh = parser.value(size).split('x');
+    if (wh.size() == 2 && wh[0].toInt() > 0 && wh[1].toInt() > 0) window.resize(wh[0].toInt(), wh[1].toInt());
+  }
+  for (const QString& file : parser.positionalArguments()) window.openFile(file);
+  window.show();
+  if (!batch) return app.exec();
+
+  if (failed) return 1;
+  QTimer::singleShot(0, &window, [&] {
+    window.resetCamera();
+    failed = !window.saveScreenshot(parser.value(screenshot));
+    app.quit();
+  });
+  app.exec();
+  return failed ? 1 : 0;
+}
