@@ -21,6 +21,7 @@
 #include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkProp3D.h>
+#include <vtkRenderer.h>
 #include <vtkVersion.h>
 
 namespace medial::gui {
@@ -29,6 +30,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), scene_(vtkSmartPo
   setWindowTitle("Medial");
   view_ = new VtkView(this);
   view_->addRenderer(scene_->GetRenderer());
+  scene_->GetRenderer()->UseFXAAOn();  // the widget's framebuffer has no multisampling
   setCentralWidget(view_);
   connect(view_, &VtkView::resetCameraRequested, this, &MainWindow::resetCamera);
 
@@ -121,6 +123,8 @@ bool MainWindow::openFile(const QString& path) {
 }
 
 int MainWindow::objectCount() const { return static_cast<int>(props_.size()); }
+
+vtkMedialScene* MainWindow::scene() const { return scene_; }
 
 void MainWindow::onItemChanged(QListWidgetItem* item) {
   const int row = objects_->row(item);

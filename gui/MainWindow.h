@@ -32,6 +32,8 @@ class MainWindow : public QMainWindow {
   bool saveScreenshot(const QString& path);
   void resetCamera();
   int objectCount() const;
+  VtkView* view() const { return view_; }
+  vtkMedialScene* scene() const;
 
   // Replaces the error dialog (the --screenshot mode prints to stderr instead).
   void setErrorHandler(std::function<void(const QString& title, const QString& message)> handler);

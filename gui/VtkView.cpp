@@ -179,9 +179,10 @@ void VtkView::mouseMoveEvent(QMouseEvent* event) {
 
 void VtkView::wheelEvent(QWheelEvent* event) {
   setEventPosition(event->position(), event->modifiers());
-  const int delta = event->angleDelta().y();
-  if (delta > 0) interactor_->InvokeEvent(vtkCommand::MouseWheelForwardEvent);
-  if (delta < 0) interactor_->InvokeEvent(vtkCommand::MouseWheelBackwardEvent);
+  // One VTK wheel step per notch (120 units); touchpads send smaller deltas, which add up.
+  wheelRemainder_ += event->angleDelta().y();
+  for (; wheelRemainder_ >= 120; wheelRemainder_ -= 120) interactor_->InvokeEvent(vtkCommand::MouseWheelForwardEvent);
+  for (; wheelRemainder_ <= -120; wheelRemainder_ += 120) interactor_->InvokeEvent(vtkCommand::MouseWheelBackwardEvent);
   event->accept();
 }
 

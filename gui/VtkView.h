@@ -55,6 +55,7 @@ class VtkView : public QOpenGLWidget {
   vtkNew<vtkGenericOpenGLRenderWindow> window_;
   vtkNew<vtkGenericRenderWindowInteractor> interactor_;
   bool initialized_ = false;
+  int wheelRemainder_ = 0;  // angle delta not yet turned into wheel steps
 };
 
 }  // namespace medial::gui
