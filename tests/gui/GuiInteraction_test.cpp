@@ -17,27 +17,16 @@
 #include <array>
 #include <memory>
 
+// The QApplication is made by tests/gui/main.cpp.
+
 namespace {
 
 using Vector = std::array<double, 3>;
-
-QApplication* application() {
-  static int argc = 1;
-  static char name[] = "medial_gui_tests";
-  static char* argv[] = {name, nullptr};
-  static std::unique_ptr<QApplication> app;
-  if (!app) {
-    medial::gui::VtkView::setDefaultSurfaceFormat();
-    app = std::make_unique<QApplication>(argc, argv);
-  }
-  return app.get();
-}
 
 class GuiInteraction : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!medial::test::hasDisplay()) GTEST_SKIP() << "no X display: run the tests under xvfb-run -a";
-    application();
     window = std::make_unique<medial::gui::MainWindow>();
     window->setErrorHandler([this](const QString&, const QString& message) { lastError = message; });
     window->resize(800, 600);
