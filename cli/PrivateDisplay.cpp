@@ -14,13 +14,15 @@
 namespace medial::cli {
 namespace {
 
-bool displayReachable() {
+// Opens $DISPLAY, retrying a few times over about a second; null when unset or unreachable.
+Display* openDisplay() {
   const char* name = std::getenv("DISPLAY");
-  if (!name || !*name) return false;
-  Display* display = XOpenDisplay(nullptr);
-  if (!display) return false;
-  XCloseDisplay(display);
-  return true;
+  if (!name || !*name) return nullptr;
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    if (Display* display = XOpenDisplay(nullptr)) return display;
+    ::usleep(50000u << attempt / 2);
+  }
+  return nullptr;
 }
 
 std::string findInPath(const std::string& program) {
@@ -41,6 +43,7 @@ std::string findInPath(const std::string& program) {
 }  // namespace
 
 PrivateDisplay::~PrivateDisplay() {
+  if (display_) XCloseDisplay(static_cast<Display*>(display_));
   if (xvfb_ > 0) {
     ::kill(xvfb_, SIGTERM);
     ::waitpid(xvfb_, nullptr, 0);
@@ -48,7 +51,7 @@ PrivateDisplay::~PrivateDisplay() {
 }
 
 bool PrivateDisplay::ensure(std::string& error) {
-  if (displayReachable()) return true;
+  if ((display_ = openDisplay())) return true;
   const std::string xvfb = findInPath("Xvfb");
   if (xvfb.empty()) {
     error = "no X display to render with (DISPLAY is unset or unreachable) and Xvfb is not installed: "
@@ -93,7 +96,7 @@ bool PrivateDisplay::ensure(std::string& error) {
     return false;
   }
   ::setenv("DISPLAY", (":" + number).c_str(), 1);
-  if (!displayReachable()) {
+  if (!(display_ = openDisplay())) {
     error = "the private Xvfb on :" + number + " does not accept connections";
     return false;
   }

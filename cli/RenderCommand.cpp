@@ -54,6 +54,7 @@ int runRender(const std::vector<std::string>& args) {
   PrivateDisplay display;
   std::string error;
   if (!display.ensure(error)) throw Failure(error);
+  scene->SetDisplayId(display.displayId());
 
   timings.start("render");
   progress.show("rendering " + output, 0.0);

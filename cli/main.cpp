@@ -7,6 +7,7 @@
 #include <vtkVersion.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -111,8 +112,12 @@ int main(int argc, char** argv) {
 
   // Errors are reported once, by the command, in one line: VTK's own multi-line reports do not reach
   // the terminal. (GlobalWarningDisplayOff would also silence the ErrorEvent observers the command reads.)
-  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);  // the executive's "returned failure" reports
+  // MEDIAL_VTK_LOG=1 keeps them, for diagnosing VTK itself.
+  const char* vtkLog = std::getenv("MEDIAL_VTK_LOG");
+  if (!vtkLog || std::strcmp(vtkLog, "1") != 0) {
+    vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);  // the executive's "returned failure" reports
+  }
   try {
     return command->run(rest);
   } catch (const UsageError& e) {

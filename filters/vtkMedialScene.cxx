@@ -34,9 +34,13 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <X11/Xlib.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 vtkStandardNewMacro(vtkMedialScene);
 
@@ -270,7 +274,23 @@ bool vtkMedialScene::RenderToImage(const char* fileName, int width, int height) 
     vtkErrorMacro(<< "RenderToImage needs a file name and a positive size");
     return false;
   }
+  // VTK's X window aborts the process when it cannot connect; connect here (with retries: a busy Xvfb
+  // refuses a connection now and then) and report a failure as an error instead.
+  Display* ownDisplay = nullptr;
+  if (!this->DisplayId) {
+    const char* name = std::getenv("DISPLAY");
+    for (int attempt = 0; name && *name && attempt < 6 && !ownDisplay; ++attempt) {
+      ownDisplay = XOpenDisplay(nullptr);
+      if (!ownDisplay) ::usleep(50000u << attempt / 2);
+    }
+    if (!ownDisplay) {
+      vtkErrorMacro(<< "cannot render: no X display (DISPLAY=" << (name ? name : "") << ") to connect to; "
+                    << "run under xvfb-run -a, or use `medial render`, which starts its own Xvfb");
+      return false;
+    }
+  }
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetDisplayId(this->DisplayId ? this->DisplayId : ownDisplay);
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(8);
   window->SetSize(width, height);
@@ -291,6 +311,10 @@ bool vtkMedialScene::RenderToImage(const char* fileName, int width, int height) 
   auto errors = medial::ErrorCollector::Watch(writer);
   writer->Write();
   window->RemoveRenderer(this->Renderer);
+  grab = nullptr;
+  window->Finalize();  // before its X connection closes
+  window = nullptr;
+  if (ownDisplay) XCloseDisplay(ownDisplay);
   std::string error;
   if (errors->HasErrors()) {
     std::remove(temporary.c_str());

@@ -49,6 +49,11 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   /// Renders offscreen at width x height and writes a PNG (atomically). Returns false on failure.
   bool RenderToImage(const char* fileName, int width, int height);
 
+  /// An open X11 Display* for RenderToImage's window (vtkRenderWindow::SetDisplayId). Null (default):
+  /// RenderToImage connects to $DISPLAY itself, with retries, and reports an error when it cannot (VTK
+  /// alone would abort the process).
+  void SetDisplayId(void* display) { this->DisplayId = display; }
+
   /// A skeleton is a polydata with lines and no polygons (GUIDE §2).
   static bool IsSkeleton(vtkPolyData* polyData);
 
@@ -70,4 +75,5 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   vtkSmartPointer<vtkRenderer> Renderer;
   int ColorIndex = 0;
   double SkeletonRadiusScale = 1.0;
+  void* DisplayId = nullptr;
 };

@@ -20,12 +20,6 @@ int lineCount(const std::string& text) {
   return lines;
 }
 
-double foregroundOf(const std::string& png) {
-  vtkSmartPointer<vtkImageData> image;
-  image.TakeReference(loadPng(png));
-  return image ? foregroundFraction(image) : -1.0;
-}
-
 }  // namespace
 
 TEST(Cli, HelpAndVersionExitZero) {
@@ -66,7 +60,7 @@ TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {
     const std::string png = dir + "/" + std::filesystem::path(input).stem().string() + ".png";
     auto r = runCommand(medialCommand("render " + dataPath(input) + " -o " + png + " --size 200x150 --quiet"));
     ASSERT_EQ(r.exitCode, 0) << input << ": " << r.err;
-    EXPECT_GT(foregroundOf(png), 0.05) << input << " rendered blank";
+    EXPECT_GT(foregroundFractionOfPng(png), 0.05) << input << " rendered blank";
   }
 }
 
@@ -100,7 +94,7 @@ TEST(Cli, RenderStartsPrivateXvfbWithoutDisplay) {
   auto r = runCommand("env -u DISPLAY " + medialCommand("render " + dataPath("meshes/torus.off") + " -o " + png +
                                                  " --size 160x120"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_GT(foregroundOf(png), 0.05);
+  EXPECT_GT(foregroundFractionOfPng(png), 0.05);
 }
 
 TEST(Cli, TimingsArePrintedAsJson) {

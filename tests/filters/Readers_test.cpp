@@ -70,6 +70,20 @@ void writeItkImage(const std::string& path) {
   writer->Update();
 }
 
+// Reads a volume that must read cleanly and have dimensions nx x ny x nz.
+vtkImageData* readVolume(const std::string& path, ReadResult& r, int nx, int ny, int nz) {
+  r = readFile(path);
+  EXPECT_EQ(r.error, "");
+  auto* image = vtkImageData::SafeDownCast(r.data);
+  if (!image) return nullptr;
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0], nx);
+  EXPECT_EQ(dims[1], ny);
+  EXPECT_EQ(dims[2], nz);
+  return image;
+}
+
 }  // namespace
 
 TEST(Readers, OffQuadMeshKeepsItsPolygons) {
@@ -157,15 +171,9 @@ class ItkFormats : public ::testing::TestWithParam<const char*> {};
 TEST_P(ItkFormats, KeepOriginSpacingDirectionAndVoxels) {
   const std::string path = scratchDir(std::string("itk") + GetParam()) + "/image" + GetParam();
   writeItkImage(path);
-  const ReadResult r = readFile(path);
-  ASSERT_EQ(r.error, "");
-  auto* image = vtkImageData::SafeDownCast(r.data);
+  ReadResult r;
+  vtkImageData* image = readVolume(path, r, 5, 4, 3);
   ASSERT_NE(image, nullptr);
-  int dims[3];
-  image->GetDimensions(dims);
-  EXPECT_EQ(dims[0], 5);
-  EXPECT_EQ(dims[1], 4);
-  EXPECT_EQ(dims[2], 3);
   EXPECT_NEAR(image->GetSpacing()[0], 0.7, 1e-6);
   EXPECT_NEAR(image->GetSpacing()[2], 2.5, 1e-6);
   EXPECT_NEAR(image->GetOrigin()[0], -10.0, 1e-6);
@@ -218,14 +226,9 @@ TEST(Readers, InrimageThroughCgal) {
 TEST(Readers, CgalLiverLabelVolume) {
   const std::string path = externalPath("cgal/images/liver.inr.gz");
   MEDIAL_REQUIRE_FILE(path);
-  const ReadResult r = readFile(path);
-  ASSERT_EQ(r.error, "");
-  auto* image = vtkImageData::SafeDownCast(r.data);
-  int dims[3];
-  image->GetDimensions(dims);
-  EXPECT_EQ(dims[0], 438);
-  EXPECT_EQ(dims[1], 353);
-  EXPECT_EQ(dims[2], 165);
+  ReadResult r;
+  vtkImageData* image = readVolume(path, r, 438, 353, 165);
+  ASSERT_NE(image, nullptr);
   EXPECT_NEAR(image->GetSpacing()[0], 0.617, 1e-3);
   EXPECT_NEAR(image->GetSpacing()[2], 1.333, 1e-3);
   double range[2];
@@ -236,14 +239,9 @@ TEST(Readers, CgalLiverLabelVolume) {
 TEST(Readers, InVesaliusHeadCt) {
   const std::string path = externalPath("invesalius/Cranium.inv3");
   MEDIAL_REQUIRE_FILE(path);
-  const ReadResult r = readFile(path);
-  ASSERT_EQ(r.error, "");
-  auto* image = vtkImageData::SafeDownCast(r.data);
-  int dims[3];
-  image->GetDimensions(dims);
-  EXPECT_EQ(dims[0], 256);
-  EXPECT_EQ(dims[1], 256);
-  EXPECT_EQ(dims[2], 108);
+  ReadResult r;
+  vtkImageData* image = readVolume(path, r, 256, 256, 108);
+  ASSERT_NE(image, nullptr);
   EXPECT_NEAR(image->GetSpacing()[0], 0.957, 1e-3);
   EXPECT_NEAR(image->GetSpacing()[2], 1.5, 1e-9);
   EXPECT_EQ(image->GetScalarType(), VTK_SHORT);

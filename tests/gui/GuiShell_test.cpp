@@ -14,12 +14,6 @@ namespace {
 
 using namespace medial::test;
 
-double foregroundOf(const std::string& png) {
-  vtkSmartPointer<vtkImageData> image;
-  image.TakeReference(loadPng(png));
-  return image ? foregroundFraction(image) : -1.0;
-}
-
 }  // namespace
 
 TEST(GuiShell, ScreenshotShowsMeshSkeletonAndSwc) {
@@ -29,7 +23,7 @@ TEST(GuiShell, ScreenshotShowsMeshSkeletonAndSwc) {
     const std::string png = dir + "/" + std::filesystem::path(input).stem().string() + ".png";
     auto r = runCommand(medialGuiExe() + " --screenshot " + png + " --size 640x480 " + dataPath(input));
     ASSERT_EQ(r.exitCode, 0) << input << ": " << r.err;
-    EXPECT_GT(foregroundOf(png), 0.03) << input << ": the screenshot is blank";
+    EXPECT_GT(foregroundFractionOfPng(png), 0.03) << input << ": the screenshot is blank";
   }
 }
 
@@ -39,7 +33,7 @@ TEST(GuiShell, ScreenshotOfSeveralObjects) {
   auto r = runCommand(medialGuiExe() + " --screenshot " + png + " " + dataPath("meshes/capsule.vtp") + " " +
                       dataPath("skeletons/figure.vtp"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_GT(foregroundOf(png), 0.05);
+  EXPECT_GT(foregroundFractionOfPng(png), 0.05);
 }
 
 TEST(GuiShell, UnreadableFileGivesMessageAndCleanExit) {

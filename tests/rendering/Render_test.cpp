@@ -10,6 +10,9 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <cstdlib>
+#include <filesystem>
+
 namespace {
 
 using namespace medial::test;
@@ -92,4 +95,23 @@ TEST(Render, BaselineComparisonNoticesAMissingObject) {
   ASSERT_NE(baseline, nullptr);
   const auto comparison = compareImages(image, baseline);
   EXPECT_FALSE(comparison.passed) << comparison.message;
+}
+
+TEST(Render, NoDisplayIsAnErrorNotAnAbort) {
+  // VTK's own X window would abort the process here; the scene reports an error instead.
+  const char* display = std::getenv("DISPLAY");
+  const std::string saved = display ? display : "";
+  ::setenv("DISPLAY", ":9999", 1);  // nothing listens there
+  auto scene = vtkSmartPointer<vtkMedialScene>::New();
+  auto errors = medial::ErrorCollector::Watch(scene);
+  ASSERT_NE(scene->AddData(read(dataPath("meshes/torus.off"))), nullptr);
+  const std::string path = scratchDir("render-no-display") + "/never.png";
+  const bool rendered = scene->RenderToImage(path.c_str(), 64, 48);
+  if (saved.empty())
+    ::unsetenv("DISPLAY");
+  else
+    ::setenv("DISPLAY", saved.c_str(), 1);
+  EXPECT_FALSE(rendered);
+  EXPECT_NE(errors->Joined().find("no X display"), std::string::npos) << errors->Joined();
+  EXPECT_FALSE(std::filesystem::exists(path));
 }

@@ -52,6 +52,12 @@ double foregroundFraction(vtkImageData* image) {
   return static_cast<double>(foreground) / (static_cast<double>(dims[0]) * dims[1]);
 }
 
+double foregroundFractionOfPng(const std::string& path) {
+  vtkSmartPointer<vtkImageData> image;
+  image.TakeReference(loadPng(path));
+  return image ? foregroundFraction(image) : -1.0;
+}
+
 ImageComparison compareImages(vtkImageData* image, vtkImageData* baseline, int pixelTolerance,
                               double maxFractionDifferent, vtkImageData* difference) {
   ImageComparison result;

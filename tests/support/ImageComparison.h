@@ -31,5 +31,7 @@ vtkImageData* loadPng(const std::string& path);  // caller owns (Delete) the res
 // Pixels whose colour differs from the top-left pixel's and the bottom-left's (the background gradient
 // ends), as a share of all pixels: a blank render gives ~0.
 double foregroundFraction(vtkImageData* image);
+// The same for a PNG file; -1 when it cannot be read.
+double foregroundFractionOfPng(const std::string& path);
 
 }  // namespace medial::test
