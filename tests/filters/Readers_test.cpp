@@ -14,7 +14,12 @@
 #include <vtkSmartPointer.h>
 
 #include <itkImage.h>
+#include <itkGDCMImageIO.h>
 #include <itkImageFileWriter.h>
+#include <itkImageSeriesWriter.h>
+#include <itkMetaDataObject.h>
+
+#include <memory>
 
 #include <cmath>
 #include <cstring>
@@ -274,4 +279,57 @@ TEST(Readers, ClearErrorsOnBadFiles) {
     EXPECT_NE(r.error.find(c.expected), std::string::npos) << r.error;
     EXPECT_EQ(r.error.find("ERROR: In"), std::string::npos) << "VTK's prefix leaked: " << r.error;
   }
+}
+
+TEST(Readers, DicomSeriesDirectory) {
+  // Writes a 6 x 5 x 4 CT-like volume as four DICOM slices with their positions, then reads the folder.
+  using Volume = itk::Image<short, 3>;
+  using Slice = itk::Image<short, 2>;
+  auto volume = Volume::New();
+  Volume::RegionType region;
+  region.SetSize({{6, 5, 4}});
+  volume->SetRegions(region);
+  volume->Allocate();
+  short value = -1000;
+  for (itk::ImageRegionIterator<Volume> it(volume, region); !it.IsAtEnd(); ++it) it.Set(value += 7);
+  const double spacing[3] = {0.7, 0.7, 1.25};
+  const double origin[3] = {-20.0, 15.0, 100.0};
+  volume->SetSpacing(spacing);
+  volume->SetOrigin(origin);
+
+  const std::string dir = scratchDir("dicom-series");
+  auto io = itk::GDCMImageIO::New();
+  std::vector<std::string> files;
+  itk::ImageSeriesWriter<Volume, Slice>::DictionaryArrayType dictionaries;
+  std::vector<std::unique_ptr<itk::MetaDataDictionary>> owned;
+  for (int z = 0; z < 4; ++z) {
+    owned.push_back(std::make_unique<itk::MetaDataDictionary>());
+    itk::MetaDataDictionary& d = *owned.back();
+    itk::EncapsulateMetaData<std::string>(d, "0008|0060", "CT");
+    itk::EncapsulateMetaData<std::string>(d, "0020|000d", "1.2.826.0.1.3680043.2.1125.1");
+    itk::EncapsulateMetaData<std::string>(d, "0020|000e", "1.2.826.0.1.3680043.2.1125.1.2");
+    itk::EncapsulateMetaData<std::string>(d, "0020|0013", std::to_string(z + 1));
+    itk::EncapsulateMetaData<std::string>(d, "0020|0037", "1\\0\\0\\0\\1\\0");
+    itk::EncapsulateMetaData<std::string>(d, "0020|0032",
+                                          "-20\\15\\" + std::to_string(100.0 + 1.25 * z));
+    itk::EncapsulateMetaData<std::string>(d, "0028|0030", "0.7\\0.7");
+    itk::EncapsulateMetaData<std::string>(d, "0018|0050", "1.25");
+    dictionaries.push_back(&d);
+    files.push_back(dir + "/slice" + std::to_string(z) + ".dcm");
+  }
+  auto writer = itk::ImageSeriesWriter<Volume, Slice>::New();
+  writer->SetInput(volume);
+  writer->SetImageIO(io);
+  writer->SetFileNames(files);
+  writer->SetMetaDataDictionaryArray(&dictionaries);
+  writer->Update();
+
+  ReadResult r;
+  vtkImageData* image = readVolume(dir, r, 6, 5, 4);
+  ASSERT_NE(image, nullptr);
+  EXPECT_NEAR(image->GetSpacing()[0], 0.7, 1e-4);
+  EXPECT_NEAR(image->GetSpacing()[2], 1.25, 1e-4);
+  EXPECT_NEAR(image->GetOrigin()[0], -20.0, 1e-4);
+  EXPECT_NEAR(image->GetOrigin()[2], 100.0, 1e-4);
+  EXPECT_EQ(image->GetScalarComponentAsDouble(5, 4, 3, 0), -1000 + 7 * 120);  // the last voxel
 }
