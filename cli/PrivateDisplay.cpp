@@ -1,6 +1,6 @@
 #include "PrivateDisplay.h"
 
-#include <X11/Xlib.h>
+#include "MedialXDisplay.h"
 
 #include <cerrno>
 #include <csignal>
@@ -13,17 +13,6 @@
 
 namespace medial::cli {
 namespace {
-
-// Opens $DISPLAY, retrying a few times over about a second; null when unset or unreachable.
-Display* openDisplay() {
-  const char* name = std::getenv("DISPLAY");
-  if (!name || !*name) return nullptr;
-  for (int attempt = 0; attempt < 6; ++attempt) {
-    if (Display* display = XOpenDisplay(nullptr)) return display;
-    ::usleep(50000u << attempt / 2);
-  }
-  return nullptr;
-}
 
 std::string findInPath(const std::string& program) {
   const char* path = std::getenv("PATH");
@@ -43,7 +32,7 @@ std::string findInPath(const std::string& program) {
 }  // namespace
 
 PrivateDisplay::~PrivateDisplay() {
-  if (display_) XCloseDisplay(static_cast<Display*>(display_));
+  medial::closeXDisplay(display_);
   if (xvfb_ > 0) {
     ::kill(xvfb_, SIGTERM);
     ::waitpid(xvfb_, nullptr, 0);
@@ -51,7 +40,7 @@ PrivateDisplay::~PrivateDisplay() {
 }
 
 bool PrivateDisplay::ensure(std::string& error) {
-  if ((display_ = openDisplay())) return true;
+  if ((display_ = medial::openXDisplay())) return true;
   const std::string xvfb = findInPath("Xvfb");
   if (xvfb.empty()) {
     error = "no X display to render with (DISPLAY is unset or unreachable) and Xvfb is not installed: "
@@ -96,7 +85,7 @@ bool PrivateDisplay::ensure(std::string& error) {
     return false;
   }
   ::setenv("DISPLAY", (":" + number).c_str(), 1);
-  if (!(display_ = openDisplay())) {
+  if (!(display_ = medial::openXDisplay())) {
     error = "the private Xvfb on :" + number + " does not accept connections";
     return false;
   }

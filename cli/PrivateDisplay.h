@@ -18,9 +18,7 @@ class PrivateDisplay {
   // True when rendering can go ahead; false with `error` set otherwise.
   bool ensure(std::string& error);
   bool startedXvfb() const { return xvfb_ > 0; }
-  // The open X connection (an X11 Display*), for vtkRenderWindow::SetDisplayId: VTK aborts the process
-  // when its own XOpenDisplay fails, and under load Xvfb refuses a connection now and then (about one in
-  // 40 in a test run), so the connection is opened here, with retries, and handed over.
+  // The open X connection (an X11 Display*; see filters/MedialXDisplay.h), for vtkMedialScene.
   void* displayId() const { return display_; }
 
  private:

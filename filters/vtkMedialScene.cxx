@@ -3,6 +3,7 @@
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"
 #include "MedialSkeletonData.h"
+#include "MedialXDisplay.h"
 
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
@@ -33,9 +34,6 @@
 #include <vtkTubeFilter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
-
-#include <X11/Xlib.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -276,18 +274,12 @@ bool vtkMedialScene::RenderToImage(const char* fileName, int width, int height) 
   }
   // VTK's X window aborts the process when it cannot connect; connect here (with retries: a busy Xvfb
   // refuses a connection now and then) and report a failure as an error instead.
-  Display* ownDisplay = nullptr;
-  if (!this->DisplayId) {
+  void* ownDisplay = nullptr;
+  if (!this->DisplayId && !(ownDisplay = medial::openXDisplay())) {
     const char* name = std::getenv("DISPLAY");
-    for (int attempt = 0; name && *name && attempt < 6 && !ownDisplay; ++attempt) {
-      ownDisplay = XOpenDisplay(nullptr);
-      if (!ownDisplay) ::usleep(50000u << attempt / 2);
-    }
-    if (!ownDisplay) {
-      vtkErrorMacro(<< "cannot render: no X display (DISPLAY=" << (name ? name : "") << ") to connect to; "
-                    << "run under xvfb-run -a, or use `medial render`, which starts its own Xvfb");
-      return false;
-    }
+    vtkErrorMacro(<< "cannot render: no X display (DISPLAY=" << (name ? name : "") << ") to connect to; "
+                  << "run under xvfb-run -a, or use `medial render`, which starts its own Xvfb");
+    return false;
   }
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetDisplayId(this->DisplayId ? this->DisplayId : ownDisplay);
@@ -314,7 +306,7 @@ bool vtkMedialScene::RenderToImage(const char* fileName, int width, int height) 
   grab = nullptr;
   window->Finalize();  // before its X connection closes
   window = nullptr;
-  if (ownDisplay) XCloseDisplay(ownDisplay);
+  medial::closeXDisplay(ownDisplay);
   std::string error;
   if (errors->HasErrors()) {
     std::remove(temporary.c_str());
