@@ -17,7 +17,6 @@ class PrivateDisplay {
 
   // True when rendering can go ahead; false with `error` set otherwise.
   bool ensure(std::string& error);
-  bool startedXvfb() const { return xvfb_ > 0; }
   // The open X connection (an X11 Display*; see filters/MedialXDisplay.h), for vtkMedialScene.
   void* displayId() const { return display_; }
 

@@ -106,7 +106,8 @@ int vtkMedialReader::FillOutputPortInformation(int, vtkInformation* info) {
 
 int vtkMedialReader::RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  const bool volume = IsVolumeFile(this->FileName.c_str());
+  // Decided once per update: for a legacy .vtk file it means reading the header.
+  const bool volume = this->ReadsVolume = IsVolumeFile(this->FileName.c_str());
   vtkDataObject* current = outInfo->Get(vtkDataObject::DATA_OBJECT());
   if (volume && !vtkImageData::SafeDownCast(current)) {
     outInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkImageData>::New());
@@ -132,7 +133,7 @@ int vtkMedialReader::RequestInformation(vtkInformation*, vtkInformationVector**,
     outInfo->Set(vtkDataObject::DIRECTION(), image->GetDirectionMatrix()->GetData(), 9);
     if (vtkDataArray* scalars = image->GetPointData()->GetScalars())
       vtkDataObject::SetPointDataActiveScalarInfo(outInfo, scalars->GetDataType(), scalars->GetNumberOfComponents());
-  } else if (IsVolumeFile(this->FileName.c_str())) {
+  } else if (this->ReadsVolume) {
     const int empty[6] = {0, -1, 0, -1, 0, -1};
     outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), empty, 6);
   }
@@ -175,7 +176,7 @@ void vtkMedialReader::ReadFile() {
   }
   this->UpdateProgress(0.05);
   vtkSmartPointer<vtkDataObject> data =
-      IsVolumeFile(path.c_str()) ? this->ReadVolume(extension) : this->ReadPolyData(extension);
+      this->ReadsVolume ? this->ReadVolume(extension) : this->ReadPolyData(extension);
   if (!data) return;  // ErrorMessage set
   this->Result = data;
 }

@@ -58,6 +58,7 @@ class MEDIALFILTERS_EXPORT vtkMedialReader : public vtkDataObjectAlgorithm {
   vtkSmartPointer<vtkDataObject> ReadVolume(const std::string& extension);
 
   std::string FileName;
+  bool ReadsVolume = false;  // set by RequestDataObject from the file name
   std::string ErrorMessage;
   std::string ResultFileName;
   vtkMTimeType ResultTime = 0;

@@ -109,15 +109,20 @@ bool writeWith(const std::string& path, vtkPolyData* data, std::string* error = 
   return ok && !errors->HasErrors();
 }
 
+// Writes `skeleton` to dir/name with vtkMedialPolyDataWriter and reads it back with vtkMedialReader.
+vtkSmartPointer<vtkPolyData> roundTrip(vtkPolyData* skeleton, const std::string& dir, const std::string& name) {
+  const std::string path = dir + "/" + name;
+  EXPECT_TRUE(writeWith(path, skeleton));
+  vtkSmartPointer<vtkDataObject> read;
+  EXPECT_EQ(readError(path, &read), "");
+  return vtkPolyData::SafeDownCast(read);
+}
+
 }  // namespace
 
 TEST(SkeletonIO, SwcRoundTripKeepsNodesRadiiEdgesAndRoot) {
-  const std::string dir = scratchDir("swc-round-trip");
   auto tree = makeTree();
-  ASSERT_TRUE(writeWith(dir + "/tree.swc", tree));
-  vtkSmartPointer<vtkDataObject> read;
-  ASSERT_EQ(readError(dir + "/tree.swc", &read), "");
-  auto* skeleton = vtkPolyData::SafeDownCast(read);
+  vtkSmartPointer<vtkPolyData> skeleton = roundTrip(tree, scratchDir("swc-round-trip"), "tree.swc");
   ASSERT_NE(skeleton, nullptr);
   EXPECT_EQ(skeleton->GetNumberOfPoints(), 4);
   EXPECT_EQ(edgeSet(skeleton), edgeSet(tree));
@@ -134,12 +139,8 @@ TEST(SkeletonIO, SwcRoundTripKeepsNodesRadiiEdgesAndRoot) {
 }
 
 TEST(SkeletonIO, VtpRoundTripKeepsEverything) {
-  const std::string dir = scratchDir("vtp-round-trip");
   auto tree = makeTree();
-  ASSERT_TRUE(writeWith(dir + "/tree.vtp", tree));
-  vtkSmartPointer<vtkDataObject> read;
-  ASSERT_EQ(readError(dir + "/tree.vtp", &read), "");
-  auto* skeleton = vtkPolyData::SafeDownCast(read);
+  vtkSmartPointer<vtkPolyData> skeleton = roundTrip(tree, scratchDir("vtp-round-trip"), "tree.vtp");
   ASSERT_NE(skeleton, nullptr);
   EXPECT_EQ(edgeSet(skeleton), edgeSet(tree));
   for (vtkIdType i = 0; i < 4; ++i)
