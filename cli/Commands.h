@@ -16,5 +16,6 @@ struct Command {
 const std::vector<Command>& commands();
 
 int runRender(const std::vector<std::string>& args);
+int runSkeleton(const std::vector<std::string>& args);
 
 }  // namespace medial::cli

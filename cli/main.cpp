@@ -24,7 +24,6 @@ int notYetAvailable(const char* name) {
   return kFailure;
 }
 
-int runSkeleton(const std::vector<std::string>&) { return notYetAvailable("skeleton"); }
 int runCenterline(const std::vector<std::string>&) { return notYetAvailable("centerline"); }
 int runSqm(const std::vector<std::string>&) { return notYetAvailable("sqm"); }
 int runSketch(const std::vector<std::string>&) { return notYetAvailable("sketch"); }
@@ -33,8 +32,21 @@ int runSketch(const std::vector<std::string>&) { return notYetAvailable("sketch"
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> all = {
-      {"skeleton", "curve skeleton of a closed mesh by mesh contraction (not yet available)",
-       "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig RIG.glb|RIG.fbx]\n",
+      {"skeleton", "curve skeleton of a surface mesh by mesh contraction",
+       "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig RIG.glb|RIG.fbx]\n"
+       "                       [--solver NAME] [--iterations N] [--no-refine] [--quiet] [--timings]\n\n"
+       "Contracts MESH (.off .obj .ply .stl .vtp .vtk; polygons are triangulated) by constrained Laplacian\n"
+       "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, III.A-D).\n"
+       "  -o, --output SKELETON     the skeleton: .vtp (nodes, edges, Radius, Root) or .vtk .obj .ply\n"
+       "  --segmentation MESH_OUT   the triangulated mesh with point data SkeletonNode (vertex -> node)\n"
+       "  --nodes N                 nodes kept by the selection stage (default 30; 0 keeps all)\n"
+       "  --solver NAME             cholmod-metis (default), cholmod-amd, llt-amd, ldlt-amd, llt-metis,\n"
+       "                            ldlt-metis, lu-colamd, lu-amd, lu-metis, qr-colamd, cg\n"
+       "  --iterations N            maximum contraction iterations (default 40)\n"
+       "  --no-refine               keep the nodes where the contraction put them (no III.C refinement)\n"
+       "  --rig RIG.glb|RIG.fbx     skinning weights and rig export: not available yet\n"
+       "  --quiet                   no progress line\n"
+       "  --timings                 print stage times as JSON on stdout\n",
        runSkeleton},
       {"centerline", "TSK centerline of a tubular structure in a CT volume (not yet available)",
        "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] "

@@ -1,0 +1,99 @@
+// `medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--solver NAME]`
+#include "Commands.h"
+#include "CommandLine.h"
+#include "Progress.h"
+#include "Timings.h"
+
+#include "MedialErrorCollector.h"
+#include "vtkMedialContractionSkeleton.h"
+#include "vtkMedialPolyDataWriter.h"
+#include "vtkMedialReader.h"
+
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <cstdio>
+
+namespace medial::cli {
+
+namespace {
+
+void writePolyData(vtkPolyData* data, const std::string& path) {
+  auto writer = vtkSmartPointer<vtkMedialPolyDataWriter>::New();
+  auto errors = medial::ErrorCollector::Watch(writer);
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(data);
+  if (!writer->Write() || errors->HasErrors()) throw Failure(errors->Joined());
+}
+
+void requireWritableExtension(const std::string& path, const char* option) {
+  if (!vtkMedialPolyDataWriter::CanWriteFile(path.c_str()))
+    throw UsageError(std::string(option) + " must end in one of " + vtkMedialPolyDataWriter::GetExtensions() + ": " +
+                     path);
+}
+
+}  // namespace
+
+int runSkeleton(const std::vector<std::string>& args) {
+  const ParsedArgs parsed = parseArgs(
+      args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations"},
+             {"--no-refine", "--quiet", "--timings"}});
+  if (parsed.positional.size() != 1) throw UsageError("skeleton needs exactly one MESH file");
+  const std::string input = parsed.positional[0];
+  const std::string output = parsed.value("-o", parsed.value("--output"));
+  if (output.empty()) throw UsageError("skeleton needs -o SKELETON.vtp");
+  requireWritableExtension(output, "-o");
+  const std::string segmentation = parsed.value("--segmentation");
+  if (!segmentation.empty()) requireWritableExtension(segmentation, "--segmentation");
+  if (parsed.has("--rig")) throw Failure("--rig: rig export (skinning weights, glTF/FBX) is not available yet");
+
+  auto filter = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
+  if (parsed.has("--nodes")) {
+    const double nodes = parseNumbers(parsed.value("--nodes"), 1, "--nodes")[0];
+    if (!(nodes >= 0) || nodes != int(nodes)) throw UsageError("--nodes must be a whole number >= 0");
+    filter->SetTargetNodes(int(nodes));
+  }
+  if (parsed.has("--iterations")) {
+    const double iterations = parseNumbers(parsed.value("--iterations"), 1, "--iterations")[0];
+    if (!(iterations >= 1) || iterations != int(iterations)) throw UsageError("--iterations must be a whole number >= 1");
+    filter->SetMaxIterations(int(iterations));
+  }
+  if (parsed.has("--solver")) {
+    auto errors = medial::ErrorCollector::Watch(filter);
+    filter->SetSolver(parsed.value("--solver"));
+    if (errors->HasErrors()) throw UsageError("--solver: " + errors->Joined());
+  }
+  filter->SetRefineEmbedding(!parsed.has("--no-refine"));
+
+  Timings timings;
+  ProgressLine progress(parsed.has("--quiet"));
+  timings.start("read");
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  auto readErrors = medial::ErrorCollector::Watch(reader);
+  reader->SetFileName(input.c_str());
+  progress.watch(reader, "reading " + input);
+  reader->Update();
+  progress.finish();
+  if (readErrors->HasErrors())
+    throw Failure(reader->GetErrorMessage()[0] ? reader->GetErrorMessage() : readErrors->Joined());
+  vtkPolyData* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!mesh || mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
+    throw Failure(input + ": not a surface mesh (no polygons)");
+
+  timings.start("skeleton");
+  auto errors = medial::ErrorCollector::Watch(filter);
+  filter->SetInputData(mesh);
+  progress.watch(filter, "skeleton of " + input);
+  filter->Update();
+  progress.finish();
+  if (errors->HasErrors()) throw Failure(input + ": " + errors->Joined());
+
+  timings.start("write");
+  writePolyData(filter->GetOutput(0), output);
+  if (!segmentation.empty()) writePolyData(filter->GetOutput(1), segmentation);
+  timings.stop();
+  if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
+  return kSuccess;
+}
+
+}  // namespace medial::cli

@@ -1,0 +1,132 @@
+#include "vtkMedialContractionSkeleton.h"
+
+#include "MedialSkeletonData.h"
+#include "contraction/SkeletonByContraction.h"
+
+#include <vtkCellArray.h>
+#include <vtkIdList.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkTriangleFilter.h>
+
+vtkStandardNewMacro(vtkMedialContractionSkeleton);
+
+namespace {
+const char* const kStages[6] = {"contraction", "factorization", "surgery", "refinement", "selection", "radii"};
+}
+
+vtkMedialContractionSkeleton::vtkMedialContractionSkeleton() { this->SetNumberOfOutputPorts(2); }
+
+void vtkMedialContractionSkeleton::SetSolver(const std::string& name) {
+  medial::SparseSolverKind kind;
+  if (!medial::parseSparseSolverKind(name, kind)) {
+    vtkErrorMacro(<< "unknown solver '" << name << "'");
+    return;
+  }
+  if (name != this->Solver) {
+    this->Solver = name;
+    this->Modified();
+  }
+}
+
+double vtkMedialContractionSkeleton::GetStageSeconds(const std::string& stage) const {
+  for (int s = 0; s < 6; ++s)
+    if (stage == kStages[s]) return this->Seconds[s];
+  return 0;
+}
+
+void vtkMedialContractionSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TargetNodes: " << this->TargetNodes << "\n";
+  os << indent << "InitialContractionFactor: " << this->InitialContractionFactor << "\n";
+  os << indent << "ContractionScale: " << this->ContractionScale << "\n";
+  os << indent << "MaxContractionWeight: " << this->MaxContractionWeight << "\n";
+  os << indent << "MaxAttractionWeight: " << this->MaxAttractionWeight << "\n";
+  os << indent << "MaxIterations: " << this->MaxIterations << "\n";
+  os << indent << "ShapeWeight: " << this->ShapeWeight << "\n";
+  os << indent << "SamplingWeight: " << this->SamplingWeight << "\n";
+  os << indent << "RefineEmbedding: " << this->RefineEmbedding << "\n";
+  os << indent << "Solver: " << this->Solver << "\n";
+}
+
+namespace {
+
+// The triangles of a polygonal mesh, as plain arrays for src/.
+medial::TriangleMesh toTriangleMesh(vtkPolyData* triangles) {
+  medial::TriangleMesh mesh;
+  mesh.vertices.resize(triangles->GetNumberOfPoints(), 3);
+  for (vtkIdType i = 0; i < triangles->GetNumberOfPoints(); ++i) {
+    double p[3];
+    triangles->GetPoint(i, p);
+    mesh.vertices.row(i) << p[0], p[1], p[2];
+  }
+  mesh.faces.resize(triangles->GetNumberOfPolys(), 3);
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  vtkCellArray* polys = triangles->GetPolys();
+  Eigen::Index f = 0;
+  for (polys->InitTraversal(); polys->GetNextCell(ids);)
+    if (ids->GetNumberOfIds() == 3) mesh.faces.row(f++) << int(ids->GetId(0)), int(ids->GetId(1)), int(ids->GetId(2));
+  mesh.faces.conservativeResize(f, 3);
+  return mesh;
+}
+
+}  // namespace
+
+int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                              vtkInformationVector* outputVector) {
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* skeletonOutput = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* meshOutput = vtkPolyData::GetData(outputVector, 1);
+  if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0) {
+    vtkErrorMacro(<< "the input has no polygons: a surface mesh is needed");
+    return 0;
+  }
+
+  auto triangulate = vtkSmartPointer<vtkTriangleFilter>::New();
+  triangulate->SetInputData(input);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  vtkPolyData* triangles = triangulate->GetOutput();
+  const medial::TriangleMesh mesh = toTriangleMesh(triangles);
+
+  medial::SkeletonByContractionParameters p;
+  p.targetNodes = this->TargetNodes;
+  p.refineEmbedding = this->RefineEmbedding;
+  p.contraction.initialContractionFactor = this->InitialContractionFactor;
+  p.contraction.contractionScale = this->ContractionScale;
+  p.contraction.maxContractionWeight = this->MaxContractionWeight;
+  p.contraction.maxAttractionWeight = this->MaxAttractionWeight;
+  p.contraction.maxIterations = this->MaxIterations;
+  medial::parseSparseSolverKind(this->Solver, p.contraction.solver);
+  p.surgery.shapeWeight = this->ShapeWeight;
+  p.surgery.samplingWeight = this->SamplingWeight;
+
+  const medial::SkeletonByContractionResult result = medial::skeletonByContraction(mesh, p, [this](double f) {
+    this->UpdateProgress(f);
+    return !this->GetAbortExecute();
+  });
+  this->ContractionIterations = result.contractionIterations;
+  this->CurveSkeletonNodes = result.curveSkeletonNodes;
+  const double seconds[6] = {result.contractionSeconds, result.factorizationSeconds, result.surgerySeconds,
+                             result.refinementSeconds,  result.selectionSeconds,     result.radiiSeconds};
+  std::copy(seconds, seconds + 6, this->Seconds);
+  if (!result.ok()) {
+    vtkErrorMacro(<< result.error);
+    return 0;
+  }
+
+  skeletonOutput->ShallowCopy(medial::polyDataFromSkeleton(result.skeleton));
+  meshOutput->ShallowCopy(triangles);
+  auto nodes = vtkSmartPointer<vtkIntArray>::New();
+  nodes->SetName("SkeletonNode");
+  nodes->SetNumberOfValues(triangles->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < triangles->GetNumberOfPoints(); ++i) nodes->SetValue(i, result.vertexToNode[size_t(i)]);
+  meshOutput->GetPointData()->AddArray(nodes);
+  return 1;
+}

@@ -1,0 +1,119 @@
+#include "contraction/MeshContraction.h"
+
+#include "mesh/MeshGeometry.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace medial {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// W_L^2 L^T L + diag(W_H^2): the normal matrix of eq. (5). L is symmetric, so L^T L = L L.
+Eigen::SparseMatrix<double> normalMatrix(const Eigen::SparseMatrix<double>& laplacian, double contractionWeight,
+                                         const Eigen::VectorXd& attraction) {
+  Eigen::SparseMatrix<double> matrix = (laplacian * laplacian) * (contractionWeight * contractionWeight);
+  for (Eigen::Index i = 0; i < matrix.rows(); ++i) matrix.coeffRef(i, i) += attraction[i] * attraction[i];
+  return matrix;
+}
+
+}  // namespace
+
+ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParameters& p,
+                               const ProgressCallback& progress) {
+  ContractionResult result;
+  const Eigen::Index n = mesh.vertices.rows();
+  if (n == 0 || mesh.faces.rows() == 0) {
+    result.error = "the mesh has no triangles";
+    return result;
+  }
+
+  // Normalized frame (see the header): centre of the bounding box at the origin, diagonal frameDiagonal.
+  const Eigen::RowVector3d centre = 0.5 * (mesh.vertices.colwise().maxCoeff() + mesh.vertices.colwise().minCoeff());
+  const double diagonal = boundingBoxDiagonal(mesh.vertices) / p.frameDiagonal;
+  if (!(diagonal > 0) || !std::isfinite(diagonal)) {
+    result.error = "the mesh has no extent (all vertices coincide) or non-finite coordinates";
+    return result;
+  }
+  Vertices positions = (mesh.vertices.rowwise() - centre) / diagonal;
+
+  const double minAngle = p.minAngleDegrees * M_PI / 180.0;
+  const Eigen::VectorXd initialRingAreas = oneRingAreas(positions, mesh.faces);
+  const double initialArea = faceAreas(positions, mesh.faces).sum();
+  const double initialVolume = std::abs(enclosedVolume(positions, mesh.faces));
+  double contractionWeight = p.initialContractionFactor * std::sqrt(initialArea / double(mesh.faces.rows()));
+  Eigen::VectorXd attraction = Eigen::VectorXd::Constant(n, p.initialAttraction);
+
+  SparseSolver solver(p.solver);
+  double previousArea = initialArea;
+  Vertices best = positions;
+  result.stopReason = "maximum iterations";
+  for (int iteration = 0; iteration < p.maxIterations; ++iteration) {
+    auto start = Clock::now();
+    const Eigen::SparseMatrix<double> laplacian = cotangentLaplacian(positions, mesh.faces, minAngle);
+    const Eigen::SparseMatrix<double> matrix = normalMatrix(laplacian, contractionWeight, attraction);
+    const Eigen::MatrixXd rhs = attraction.array().square().matrix().asDiagonal() * positions;
+    result.assembleSeconds += secondsSince(start);
+
+    if (iteration == 0) {
+      start = Clock::now();
+      solver.analyze(matrix);
+      result.analyzeSeconds += secondsSince(start);
+    }
+    start = Clock::now();
+    const bool factorized = solver.factorize(matrix);
+    result.factorizeSeconds += secondsSince(start);
+    Eigen::MatrixXd solution;
+    start = Clock::now();
+    if (!factorized || !solver.solve(rhs, solution)) {
+      result.error = "contraction iteration " + std::to_string(iteration + 1) + ": " + solver.error();
+      return result;
+    }
+    result.solveSeconds += secondsSince(start);
+    positions = solution;
+    result.iterations = iteration + 1;
+
+    // Weight updates of III.A, steps 2 and 3.
+    contractionWeight = std::min(contractionWeight * p.contractionScale, p.maxContractionWeight);
+    const Eigen::VectorXd ringAreas = oneRingAreas(positions, mesh.faces);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double ratio = ringAreas[i] > 0 ? initialRingAreas[i] / ringAreas[i] : INFINITY;
+      attraction[i] = std::min(p.initialAttraction * std::sqrt(ratio), p.maxAttractionWeight);
+    }
+
+    const double area = faceAreas(positions, mesh.faces).sum();
+    result.areaRatio = area / initialArea;
+    result.volumeRatio = initialVolume > 0 ? std::abs(enclosedVolume(positions, mesh.faces)) / initialVolume : 0;
+    if (progress && !progress(double(result.iterations) / p.maxIterations)) {
+      result.error = "aborted";
+      return result;
+    }
+    if (result.areaRatio < p.areaRatioStop) {
+      result.stopReason = "area ratio below threshold";
+      break;
+    }
+    if (area > previousArea * p.areaGrowthGuard) {
+      // The Laplacian of a nearly degenerate mesh grows unreliable: keep the last shrinking iterate.
+      positions = best;
+      result.areaRatio = previousArea / initialArea;
+      result.stopReason = "area grew: kept the previous iterate";
+      break;
+    }
+    if (area > previousArea * (1.0 - p.stallFraction) && contractionWeight >= p.maxContractionWeight) {
+      result.stopReason = "converged (area no longer shrinks)";
+      break;
+    }
+    previousArea = area;
+    best = positions;
+  }
+  result.contracted = (positions * diagonal).rowwise() + centre;
+  return result;
+}
+
+}  // namespace medial

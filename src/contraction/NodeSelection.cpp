@@ -1,0 +1,130 @@
+#include "contraction/NodeSelection.h"
+
+#include <algorithm>
+#include <queue>
+#include <vector>
+
+namespace medial {
+
+namespace {
+
+struct Graph {
+  std::vector<Eigen::Vector3d> position;
+  std::vector<std::vector<int>> neighbours;
+  std::vector<bool> alive;
+  std::vector<unsigned> version;
+  std::vector<int> owner;
+
+  bool adjacent(int a, int b) const {
+    return std::find(neighbours[a].begin(), neighbours[a].end(), b) != neighbours[a].end();
+  }
+  bool shareNeighbour(int a, int b) const {
+    for (int k : neighbours[a])
+      if (k != b && adjacent(b, k)) return true;
+    return false;
+  }
+  // 2: leaf, 1: branch node, 0: connection node.
+  int significance(int a) const {
+    const size_t degree = neighbours[a].size();
+    return degree <= 1 ? 2 : degree >= 3 ? 1 : 0;
+  }
+  double length(int a, int b) const { return (position[a] - position[b]).norm(); }
+};
+
+struct Candidate {
+  double length;
+  int a, b;
+  unsigned versionA, versionB;
+  bool operator>(const Candidate& other) const { return length > other.length; }
+};
+
+}  // namespace
+
+int selectNodes(CurveSkeleton& skeleton, int targetNodes, const std::vector<double>& radii) {
+  const int n = int(skeleton.nodes.rows());
+  Graph g{std::vector<Eigen::Vector3d>(size_t(n)), std::vector<std::vector<int>>(size_t(n)),
+          std::vector<bool>(size_t(n), true), std::vector<unsigned>(size_t(n), 0), std::vector<int>(size_t(n))};
+  for (int i = 0; i < n; ++i) {
+    g.position[size_t(i)] = skeleton.nodes.row(i).transpose();
+    g.owner[size_t(i)] = i;
+  }
+  for (const auto& [a, b] : skeleton.edges)
+    if (a != b && !g.adjacent(a, b)) {
+      g.neighbours[size_t(a)].push_back(b);
+      g.neighbours[size_t(b)].push_back(a);
+    }
+
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
+  auto push = [&](int a, int b) { queue.push({g.length(a, b), a, b, g.version[size_t(a)], g.version[size_t(b)]}); };
+  for (int a = 0; a < n; ++a)
+    for (int b : g.neighbours[size_t(a)])
+      if (a < b) push(a, b);
+
+  int aliveCount = n, collapses = 0;
+  while (aliveCount > targetNodes && !queue.empty()) {
+    const Candidate c = queue.top();
+    queue.pop();
+    if (!g.alive[size_t(c.a)] || !g.alive[size_t(c.b)] || g.version[size_t(c.a)] != c.versionA ||
+        g.version[size_t(c.b)] != c.versionB || !g.adjacent(c.a, c.b))
+      continue;
+    const int sa = g.significance(c.a), sb = g.significance(c.b);
+    // A twig: a leaf whose edge ends inside the tube of its neighbour is no branch of the shape.
+    const bool twigA = sa == 2 && sb != 2 && !radii.empty() && c.length < radii[size_t(c.b)];
+    const bool twigB = sb == 2 && sa != 2 && !radii.empty() && c.length < radii[size_t(c.a)];
+    // Two leaves: a lone segment. A leaf and a branch node: the branch itself would vanish.
+    if (!twigA && !twigB && ((sa == 2 && sb >= 1) || (sb == 2 && sa >= 1))) continue;
+    if (g.shareNeighbour(c.a, c.b)) continue;
+    // Keep the more significant end (the inner end of a twig); merge the other into it.
+    int keep = sa >= sb ? c.a : c.b;
+    if (twigA) keep = c.b;
+    if (twigB) keep = c.a;
+    const int drop = keep == c.a ? c.b : c.a;
+    if (sa == sb) g.position[size_t(keep)] = 0.5 * (g.position[size_t(c.a)] + g.position[size_t(c.b)]);
+    for (int k : g.neighbours[size_t(drop)]) {
+      auto& list = g.neighbours[size_t(k)];
+      list.erase(std::remove(list.begin(), list.end(), drop), list.end());
+      if (k != keep && !g.adjacent(keep, k)) {
+        g.neighbours[size_t(keep)].push_back(k);
+        list.push_back(keep);
+      }
+      ++g.version[size_t(k)];
+    }
+    g.neighbours[size_t(drop)].clear();
+    g.alive[size_t(drop)] = false;
+    g.owner[size_t(drop)] = keep;
+    ++g.version[size_t(keep)];
+    --aliveCount;
+    ++collapses;
+    // Lengths around the kept node changed; the significance of its neighbours may have changed too.
+    for (int k : g.neighbours[size_t(keep)]) {
+      push(keep, k);
+      for (int m : g.neighbours[size_t(k)])
+        if (m != keep) push(k, m);
+    }
+  }
+
+  // Renumber the surviving nodes and map every absorbed vertex through the merge chain.
+  std::vector<int> newId(size_t(n), -1);
+  std::vector<Eigen::Vector3d> nodes;
+  for (int i = 0; i < n; ++i)
+    if (g.alive[size_t(i)]) {
+      newId[size_t(i)] = int(nodes.size());
+      nodes.push_back(g.position[size_t(i)]);
+    }
+  auto finalOwner = [&](int i) {
+    while (g.owner[size_t(i)] != i) i = g.owner[size_t(i)];
+    return i;
+  };
+  skeleton.nodes.resize(Eigen::Index(nodes.size()), 3);
+  for (size_t k = 0; k < nodes.size(); ++k) skeleton.nodes.row(Eigen::Index(k)) = nodes[k].transpose();
+  skeleton.edges.clear();
+  for (int a = 0; a < n; ++a)
+    if (g.alive[size_t(a)])
+      for (int b : g.neighbours[size_t(a)])
+        if (a < b) skeleton.edges.emplace_back(newId[size_t(a)], newId[size_t(b)]);
+  for (int& node : skeleton.vertexToNode)
+    if (node >= 0) node = newId[size_t(finalOwner(node))];
+  return collapses;
+}
+
+}  // namespace medial

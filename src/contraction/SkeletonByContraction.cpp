@@ -1,0 +1,104 @@
+#include "contraction/SkeletonByContraction.h"
+
+#include "contraction/EmbeddingRefinement.h"
+#include "contraction/NodeRadii.h"
+#include "contraction/NodeSelection.h"
+#include "mesh/InsideTest.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace medial {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The root: the node of highest degree, ties broken by the number of vertices it absorbed.
+int chooseRoot(const Skeleton& skeleton, const std::vector<int>& vertexToNode) {
+  if (skeleton.nodes.empty()) return -1;
+  std::vector<int> absorbed(skeleton.nodes.size(), 0);
+  for (int node : vertexToNode)
+    if (node >= 0) ++absorbed[size_t(node)];
+  const std::vector<int> degree = nodeDegrees(skeleton);
+  int best = 0;
+  for (int k = 1; k < skeleton.nodeCount(); ++k)
+    if (std::make_pair(degree[size_t(k)], absorbed[size_t(k)]) >
+        std::make_pair(degree[size_t(best)], absorbed[size_t(best)]))
+      best = k;
+  return best;
+}
+
+}  // namespace
+
+std::string checkContractionInput(const TriangleMesh& mesh) {
+  if (mesh.faces.rows() == 0) return "the mesh has no triangles";
+  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
+    if (!mesh.vertices.row(v).allFinite())
+      return "vertex " + std::to_string(v) + " has a non-finite coordinate (NaN or infinity)";
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
+    for (int c = 0; c < 3; ++c)
+      if (mesh.faces(f, c) < 0 || mesh.faces(f, c) >= mesh.vertices.rows())
+        return "triangle " + std::to_string(f) + " refers to vertex " + std::to_string(mesh.faces(f, c)) +
+               ", which does not exist";
+  return {};
+}
+
+SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
+                                                  const SkeletonByContractionParameters& p,
+                                                  const std::function<bool(double)>& progress) {
+  SkeletonByContractionResult result;
+  result.error = checkContractionInput(mesh);
+  if (!result.error.empty()) return result;
+  auto report = [&](double from, double to) {
+    return [&progress, from, to](double f) { return !progress || progress(from + (to - from) * f); };
+  };
+
+  // III.A geometry contraction.
+  auto start = Clock::now();
+  ContractionResult contraction = contractMesh(mesh, p.contraction, report(0.0, 0.75));
+  result.contractionSeconds = secondsSince(start);
+  result.factorizationSeconds = contraction.analyzeSeconds + contraction.factorizeSeconds;
+  result.contractionIterations = contraction.iterations;
+  result.contractionVolumeRatio = contraction.volumeRatio;
+  result.contractionStop = contraction.stopReason;
+  if (!contraction.ok()) {
+    result.error = "contraction failed: " + contraction.error;
+    return result;
+  }
+
+  // III.B connectivity surgery.
+  start = Clock::now();
+  CurveSkeleton curve = collapseToCurveSkeleton(contraction.contracted, mesh.faces, p.surgery, report(0.75, 0.9));
+  result.surgerySeconds = secondsSince(start);
+  if (curve.nodes.rows() == 0) {
+    result.error = "aborted";
+    return result;
+  }
+  result.curveSkeletonNodes = int(curve.nodes.rows());
+  result.contracted = std::move(contraction.contracted);
+
+  // III.C refinement, III.D selection, radii.
+  start = Clock::now();
+  const InsideTest inside(mesh);
+  if (p.refineEmbedding) result.refinedNodes = refineEmbedding(curve, mesh.vertices, inside);
+  result.refinementSeconds = secondsSince(start);
+  start = Clock::now();
+  if (p.targetNodes > 0) selectNodes(curve, p.targetNodes, nodeRadii(curve, mesh.vertices, inside));
+  result.selectionSeconds = secondsSince(start);
+  start = Clock::now();
+  result.skeleton.radii = nodeRadii(curve, mesh.vertices, inside);
+  result.radiiSeconds = secondsSince(start);
+
+  for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k) result.skeleton.nodes.push_back(curve.nodes.row(k).transpose());
+  for (const auto& [a, b] : curve.edges) result.skeleton.edges.push_back({a, b});
+  result.vertexToNode = std::move(curve.vertexToNode);
+  result.skeleton.root = chooseRoot(result.skeleton, result.vertexToNode);
+  if (progress && !progress(1.0)) result.error = "aborted";
+  return result;
+}
+
+}  // namespace medial

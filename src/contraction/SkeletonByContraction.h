@@ -1,0 +1,48 @@
+// SkeletonByContraction: the whole skeleton pipeline of the contraction paper (section III, stages 1-4)
+// plus node radii: contraction (III.A), connectivity surgery (III.B), embedding refinement (III.C), node
+// selection (III.D), radii. Input: a triangle mesh (any number of components, open or closed). Output: a
+// Skeleton (GUIDE §2) with radii and a root, and the skeleton-mesh mapping (vertex -> node).
+#pragma once
+
+#include "contraction/ConnectivitySurgery.h"
+#include "contraction/MeshContraction.h"
+#include "skeleton/Skeleton.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace medial {
+
+struct SkeletonByContractionParameters {
+  ContractionParameters contraction;
+  SurgeryParameters surgery;
+  bool refineEmbedding = true;
+  int targetNodes = 30;  // node selection; 0 keeps every node of the refined curve skeleton
+};
+
+struct SkeletonByContractionResult {
+  Skeleton skeleton;
+  std::vector<int> vertexToNode;  // per input vertex: its node, -1 for vertices no face uses
+  Vertices contracted;            // the contracted mesh positions (same faces as the input)
+  int contractionIterations = 0;
+  double contractionVolumeRatio = 1.0;
+  std::string contractionStop;
+  int curveSkeletonNodes = 0;  // before selection
+  int refinedNodes = 0;        // nodes the refinement moved
+  // Seconds per stage, and the share of the contraction spent factorizing.
+  double contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0, refinementSeconds = 0,
+         selectionSeconds = 0, radiiSeconds = 0;
+  std::string error;
+  bool ok() const { return error.empty(); }
+};
+
+// Checks what the algorithm needs: at least one triangle, finite coordinates, valid vertex ids. The
+// message names the first problem; empty when the mesh is usable.
+std::string checkContractionInput(const TriangleMesh& mesh);
+
+SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
+                                                  const SkeletonByContractionParameters& parameters = {},
+                                                  const std::function<bool(double)>& progress = {});
+
+}  // namespace medial

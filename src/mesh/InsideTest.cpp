@@ -1,0 +1,65 @@
+#include "mesh/InsideTest.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <vector>
+
+namespace medial {
+
+namespace {
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point = Kernel::Point_3;
+using Triangle = Kernel::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+Point toPoint(const Eigen::Vector3d& p) { return Point(p.x(), p.y(), p.z()); }
+}  // namespace
+
+struct InsideTest::Tree {
+  std::vector<Triangle> triangles;
+  medial::Tree tree;
+};
+
+InsideTest::InsideTest(const TriangleMesh& mesh) : tree_(std::make_unique<Tree>()) {
+  tree_->triangles.reserve(size_t(mesh.faces.rows()));
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
+    const Triangle t(toPoint(mesh.vertices.row(mesh.faces(f, 0)).transpose()),
+                     toPoint(mesh.vertices.row(mesh.faces(f, 1)).transpose()),
+                     toPoint(mesh.vertices.row(mesh.faces(f, 2)).transpose()));
+    if (!t.is_degenerate()) tree_->triangles.push_back(t);
+  }
+  tree_->tree.insert(tree_->triangles.begin(), tree_->triangles.end());
+  tree_->tree.build();
+  if (!tree_->triangles.empty()) tree_->tree.accelerate_distance_queries();
+}
+
+InsideTest::~InsideTest() = default;
+
+bool InsideTest::contains(const Eigen::Vector3d& point) const {
+  if (tree_->triangles.empty()) return false;
+  static const Kernel::Vector_3 directions[3] = {
+      {0.5773, 0.5821, 0.5727}, {-0.7071, 0.1013, 0.6998}, {0.2113, -0.9349, 0.2851}};
+  int insideVotes = 0;
+  for (const auto& direction : directions) {
+    const Kernel::Ray_3 ray(toPoint(point), direction);
+    if (tree_->tree.number_of_intersected_primitives(ray) % 2 == 1) ++insideVotes;
+  }
+  return insideVotes >= 2;
+}
+
+bool InsideTest::segmentIsClear(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  // Shrink the segment a little at both ends so that touching the surface at an end point is allowed.
+  const Eigen::Vector3d shrink = 1e-6 * (b - a);
+  return !tree_->tree.do_intersect(Kernel::Segment_3(toPoint(a + shrink), toPoint(b - shrink)));
+}
+
+double InsideTest::squaredDistanceToSurface(const Eigen::Vector3d& point) const {
+  if (tree_->triangles.empty()) return INFINITY;
+  return tree_->tree.squared_distance(toPoint(point));
+}
+
+}  // namespace medial

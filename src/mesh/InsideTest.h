@@ -1,0 +1,29 @@
+// InsideTest: is a point inside a triangle mesh, and does a segment stay inside it? Ray parity over an
+// AABB tree of the triangles (CGAL), voted over three fixed, generic directions so that a ray grazing an
+// edge or a vertex, or a small hole in an open mesh, does not decide alone.
+#pragma once
+
+#include "mesh/TriangleMesh.h"
+
+#include <memory>
+
+namespace medial {
+
+class InsideTest {
+ public:
+  explicit InsideTest(const TriangleMesh& mesh);
+  ~InsideTest();
+  InsideTest(const InsideTest&) = delete;
+  InsideTest& operator=(const InsideTest&) = delete;
+
+  bool contains(const Eigen::Vector3d& point) const;
+  // True when the open segment a-b crosses no triangle (its end points may lie on the surface).
+  bool segmentIsClear(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  double squaredDistanceToSurface(const Eigen::Vector3d& point) const;
+
+ private:
+  struct Tree;
+  std::unique_ptr<Tree> tree_;
+};
+
+}  // namespace medial

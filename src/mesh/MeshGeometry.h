@@ -1,0 +1,32 @@
+// MeshGeometry: the per-face and per-vertex measures the contraction and weight solvers share:
+// the cotangent Laplacian of eq. (1) of the contraction paper (Desbrun et al. 1999) with clamped angles,
+// face areas, one-ring areas, barycentric vertex areas, enclosed volume, and the bounding-box diagonal.
+#pragma once
+
+#include "mesh/TriangleMesh.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/SparseCore>
+
+namespace medial {
+
+// L of eq. (1): L_ij = cot(alpha_ij) + cot(beta_ij) for an edge (i,j), L_ii = -sum_k L_ik, 0 elsewhere.
+// Angles are clamped to [minAngle, pi - minAngle] (radians) so that the cotangents stay finite on the
+// degenerate triangles of a contracted mesh (paper, III.A detail 1). Every mesh edge is a structural
+// entry even when its weight is zero, so the sparsity pattern depends on the connectivity alone.
+Eigen::SparseMatrix<double> cotangentLaplacian(const Vertices& vertices, const Faces& faces, double minAngle);
+
+Eigen::VectorXd faceAreas(const Vertices& vertices, const Faces& faces);
+
+// Sum of the areas of the faces around each vertex (A_i of the attraction-weight update in III.A).
+Eigen::VectorXd oneRingAreas(const Vertices& vertices, const Faces& faces);
+
+// A third of the one-ring area: the lumped (barycentric) mass of each vertex.
+Eigen::VectorXd barycentricAreas(const Vertices& vertices, const Faces& faces);
+
+// Signed volume enclosed by the faces (divergence theorem); meaningful for closed, oriented meshes.
+double enclosedVolume(const Vertices& vertices, const Faces& faces);
+
+double boundingBoxDiagonal(const Vertices& vertices);
+
+}  // namespace medial

@@ -1,0 +1,63 @@
+// SparseSolver: one interface over the sparse solvers of the contraction paper's study (Table I):
+// Cholesky (CHOLMOD supernodal; Eigen simplicial LLT / LDLT), LU and QR, each with a fill-reducing
+// ordering (METIS, AMD, COLAMD), plus conjugate gradients as the iterative alternative.
+//
+// The contraction solves a symmetric positive definite system whose sparsity pattern never changes, so the
+// symbolic analysis (ordering, elimination tree, supernodes) runs once in analyze() and each iteration only
+// calls factorize() and solve().
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace medial {
+
+enum class SparseSolverKind {
+  CholmodSupernodalMetis,  // default: the paper's winner, METIS + Cholesky
+  CholmodSupernodalAmd,
+  SimplicialLltAmd,
+  SimplicialLdltAmd,
+  SimplicialLltMetis,
+  SimplicialLdltMetis,
+  LuColamd,
+  LuAmd,
+  LuMetis,
+  QrColamd,
+  ConjugateGradient,
+};
+
+// Short names used on the command line and in benchmarks: cholmod-metis, cholmod-amd, llt-amd, ldlt-amd,
+// llt-metis, ldlt-metis, lu-colamd, lu-amd, lu-metis, qr-colamd, cg.
+std::string sparseSolverName(SparseSolverKind kind);
+bool parseSparseSolverKind(const std::string& name, SparseSolverKind& kind);
+std::vector<SparseSolverKind> allSparseSolverKinds();
+
+class SparseSolver {
+ public:
+  explicit SparseSolver(SparseSolverKind kind = SparseSolverKind::CholmodSupernodalMetis);
+  ~SparseSolver();
+  SparseSolver(const SparseSolver&) = delete;
+  SparseSolver& operator=(const SparseSolver&) = delete;
+
+  SparseSolverKind kind() const { return kind_; }
+  // Symbolic analysis of the pattern of a symmetric matrix (both triangles stored).
+  void analyze(const Eigen::SparseMatrix<double>& matrix);
+  // Numeric factorization; false (with error()) when the matrix is not positive definite or singular.
+  bool factorize(const Eigen::SparseMatrix<double>& matrix);
+  // Solves for every column of rhs; false (with error()) on failure.
+  bool solve(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& solution);
+  const std::string& error() const { return error_; }
+
+  struct Backend;
+
+ private:
+  SparseSolverKind kind_;
+  std::unique_ptr<Backend> backend_;
+  std::string error_;
+};
+
+}  // namespace medial
