@@ -7,6 +7,7 @@
 #include <vtkSmartPointer.h>
 
 #include <filesystem>
+#include <fstream>
 
 namespace {
 
@@ -38,7 +39,9 @@ TEST(Cli, HelpAndVersionExitZero) {
 TEST(Cli, UsageErrorsExitTwo) {
   for (const char* args : {"", "frobnicate", "render", "render in.off", "render in.off -o out.png --size 12",
                            "render in.off -o out.png --bogus", "render in.off -o out.jpg",
-                           "render in.off -o out.png --camera 1", "render in.off -o"}) {
+                           "render in.off -o out.png --camera 1", "render in.off -o", "skeleton in.off",
+                           "skeleton in.off -o out.png", "skeleton in.off -o s.vtp --nodes -3",
+                           "skeleton in.off -o s.vtp --solver magic", "skeleton a.off b.off -o s.vtp"}) {
     auto r = runCommand(medialCommand(args));
     EXPECT_EQ(r.exitCode, 2) << "medial " << args << "\n" << r.err;
     EXPECT_FALSE(r.err.empty()) << "medial " << args;
@@ -46,11 +49,45 @@ TEST(Cli, UsageErrorsExitTwo) {
 }
 
 TEST(Cli, CommandsNotYetAvailableExitOne) {
-  for (const char* command : {"skeleton", "centerline", "sqm", "sketch"}) {
+  for (const char* command : {"centerline", "sqm", "sketch"}) {
     auto r = runCommand(medialCommand(std::string(command) + " x -o y"));
     EXPECT_EQ(r.exitCode, 1) << command;
     EXPECT_NE(r.err.find("not yet available"), std::string::npos) << r.err;
   }
+}
+
+TEST(Cli, SkeletonOfTorusWritesSkeletonAndSegmentation) {
+  const std::string dir = scratchDir("cli-skeleton");
+  const std::string skeleton = dir + "/torus-skeleton.vtp", segmentation = dir + "/torus-segmentation.vtp";
+  auto r = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + skeleton +
+                                    " --segmentation " + segmentation + " --nodes 12 --timings --quiet"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("\"skeleton\""), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(skeleton));
+  EXPECT_TRUE(std::filesystem::exists(segmentation));
+  // The skeleton renders as a valid skeleton (Radius on every node).
+  auto render = runCommand(medialCommand("render " + dataPath("meshes/torus.off") + " " + skeleton +
+                                         " -o " + dir + "/torus-skeleton.png --size 320x240 --quiet"));
+  EXPECT_EQ(render.exitCode, 0) << render.err;
+}
+
+TEST(Cli, SkeletonOfBadInputFailsWithOneLine) {
+  const std::string dir = scratchDir("cli-skeleton-bad");
+  const std::string notMesh = dir + "/lines.obj";
+  {
+    std::ofstream out(notMesh);
+    out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3\n";
+  }
+  for (const std::string& input : {notMesh, dir + "/missing.off"}) {
+    auto r = runCommand(medialCommand("skeleton " + input + " -o " + dir + "/out.vtp --quiet"));
+    EXPECT_EQ(r.exitCode, 1) << input;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.vtp"));
+  }
+  auto rig = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir +
+                                      "/out.vtp --rig rig.glb --quiet"));
+  EXPECT_EQ(rig.exitCode, 1);
+  EXPECT_NE(rig.err.find("not available yet"), std::string::npos) << rig.err;
 }
 
 TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {

@@ -37,6 +37,21 @@ class MedialPython(unittest.TestCase):
         self.assertGreater(validator.GetOutput().GetNumberOfLines(), 10)
         self.assertIsNotNone(validator.GetOutput().GetPointData().GetArray("NodeType"))
 
+    def test_contraction_skeleton_of_a_torus(self):
+        data = os.path.join(os.environ.get("MEDIAL_SOURCE_DIR", "."), "data")
+        reader = medial.vtkMedialReader()
+        reader.SetFileName(os.path.join(data, "meshes", "torus.off"))
+        skeleton = medial.vtkMedialContractionSkeleton()
+        skeleton.SetInputConnection(reader.GetOutputPort())
+        skeleton.SetTargetNodes(12)
+        skeleton.SetSolver("ldlt-amd")
+        skeleton.Update()
+        out = skeleton.GetOutput(0)
+        self.assertGreaterEqual(out.GetNumberOfPoints(), 3)
+        self.assertEqual(out.GetNumberOfLines(), out.GetNumberOfPoints())  # one cycle
+        self.assertIsNotNone(out.GetPointData().GetArray("Radius"))
+        self.assertIsNotNone(skeleton.GetOutput(1).GetPointData().GetArray("SkeletonNode"))
+
     def test_bad_file_gives_error_and_empty_output(self):
         reader = medial.vtkMedialReader()
         reader.SetFileName(os.path.join(tempfile.gettempdir(), "does-not-exist.off"))
