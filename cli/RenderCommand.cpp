@@ -3,11 +3,11 @@
 #include "CommandLine.h"
 #include "PrivateDisplay.h"
 #include "Progress.h"
+#include "ReadInput.h"
 #include "Timings.h"
 
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"
-#include "vtkMedialReader.h"
 #include "vtkMedialScene.h"
 
 #include <vtkSmartPointer.h>
@@ -38,16 +38,10 @@ int runRender(const std::vector<std::string>& args) {
   scene->SetSkeletonRadiusScale(skeletonScale);
   for (const std::string& input : parsed.positional) {
     timings.start("read");
-    auto reader = vtkSmartPointer<vtkMedialReader>::New();
-    auto errors = medial::ErrorCollector::Watch(reader);
-    reader->SetFileName(input.c_str());
-    progress.watch(reader, "reading " + input);
-    reader->Update();
-    progress.finish();
-    if (errors->HasErrors()) throw Failure(reader->GetErrorMessage()[0] ? reader->GetErrorMessage() : errors->Joined());
+    const vtkSmartPointer<vtkDataObject> data = readInput(input, progress);
     timings.start("scene");
     auto sceneErrors = medial::ErrorCollector::Watch(scene);
-    if (!scene->AddData(reader->GetOutputDataObject(0))) throw Failure(input + ": " + sceneErrors->Joined());
+    if (!scene->AddData(data)) throw Failure(input + ": " + sceneErrors->Joined());
   }
 
   timings.start("display");

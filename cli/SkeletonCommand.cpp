@@ -2,12 +2,12 @@
 #include "Commands.h"
 #include "CommandLine.h"
 #include "Progress.h"
+#include "ReadInput.h"
 #include "Timings.h"
 
 #include "MedialErrorCollector.h"
 #include "vtkMedialContractionSkeleton.h"
 #include "vtkMedialPolyDataWriter.h"
-#include "vtkMedialReader.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -68,15 +68,8 @@ int runSkeleton(const std::vector<std::string>& args) {
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
   timings.start("read");
-  auto reader = vtkSmartPointer<vtkMedialReader>::New();
-  auto readErrors = medial::ErrorCollector::Watch(reader);
-  reader->SetFileName(input.c_str());
-  progress.watch(reader, "reading " + input);
-  reader->Update();
-  progress.finish();
-  if (readErrors->HasErrors())
-    throw Failure(reader->GetErrorMessage()[0] ? reader->GetErrorMessage() : readErrors->Joined());
-  vtkPolyData* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  const vtkSmartPointer<vtkDataObject> data = readInput(input, progress);
+  vtkPolyData* mesh = vtkPolyData::SafeDownCast(data);
   if (!mesh || mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
     throw Failure(input + ": not a surface mesh (no polygons)");
 

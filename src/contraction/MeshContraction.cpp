@@ -44,8 +44,9 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
   Vertices positions = (mesh.vertices.rowwise() - centre) / diagonal;
 
   const double minAngle = p.minAngleDegrees * M_PI / 180.0;
-  const Eigen::VectorXd initialRingAreas = oneRingAreas(positions, mesh.faces);
-  const double initialArea = faceAreas(positions, mesh.faces).sum();
+  const Eigen::VectorXd initialFaceAreas = faceAreas(positions, mesh.faces);
+  const Eigen::VectorXd initialRingAreas = oneRingAreas(mesh.faces, initialFaceAreas, n);
+  const double initialArea = initialFaceAreas.sum();
   const double initialVolume = std::abs(enclosedVolume(positions, mesh.faces));
   double contractionWeight = p.initialContractionFactor * std::sqrt(initialArea / double(mesh.faces.rows()));
   Eigen::VectorXd attraction = Eigen::VectorXd::Constant(n, p.initialAttraction);
@@ -81,13 +82,14 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
 
     // Weight updates of III.A, steps 2 and 3.
     contractionWeight = std::min(contractionWeight * p.contractionScale, p.maxContractionWeight);
-    const Eigen::VectorXd ringAreas = oneRingAreas(positions, mesh.faces);
+    const Eigen::VectorXd areas = faceAreas(positions, mesh.faces);
+    const Eigen::VectorXd ringAreas = oneRingAreas(mesh.faces, areas, n);
     for (Eigen::Index i = 0; i < n; ++i) {
       const double ratio = ringAreas[i] > 0 ? initialRingAreas[i] / ringAreas[i] : INFINITY;
       attraction[i] = std::min(p.initialAttraction * std::sqrt(ratio), p.maxAttractionWeight);
     }
 
-    const double area = faceAreas(positions, mesh.faces).sum();
+    const double area = areas.sum();
     result.areaRatio = area / initialArea;
     result.volumeRatio = initialVolume > 0 ? std::abs(enclosedVolume(positions, mesh.faces)) / initialVolume : 0;
     if (progress && !progress(double(result.iterations) / p.maxIterations)) {

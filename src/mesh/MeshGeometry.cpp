@@ -50,16 +50,11 @@ Eigen::VectorXd faceAreas(const Vertices& vertices, const Faces& faces) {
   return areas;
 }
 
-Eigen::VectorXd oneRingAreas(const Vertices& vertices, const Faces& faces) {
-  const Eigen::VectorXd areas = faceAreas(vertices, faces);
-  Eigen::VectorXd ring = Eigen::VectorXd::Zero(vertices.rows());
+Eigen::VectorXd oneRingAreas(const Faces& faces, const Eigen::VectorXd& faceAreas, Eigen::Index vertexCount) {
+  Eigen::VectorXd ring = Eigen::VectorXd::Zero(vertexCount);
   for (Eigen::Index f = 0; f < faces.rows(); ++f)
-    for (int c = 0; c < 3; ++c) ring[faces(f, c)] += areas[f];
+    for (int c = 0; c < 3; ++c) ring[faces(f, c)] += faceAreas[f];
   return ring;
-}
-
-Eigen::VectorXd barycentricAreas(const Vertices& vertices, const Faces& faces) {
-  return oneRingAreas(vertices, faces) / 3.0;
 }
 
 double enclosedVolume(const Vertices& vertices, const Faces& faces) {

@@ -1,6 +1,6 @@
 // MeshGeometry: the per-face and per-vertex measures the contraction and weight solvers share:
 // the cotangent Laplacian of eq. (1) of the contraction paper (Desbrun et al. 1999) with clamped angles,
-// face areas, one-ring areas, barycentric vertex areas, enclosed volume, and the bounding-box diagonal.
+// face areas, one-ring areas, enclosed volume, and the bounding-box diagonal.
 #pragma once
 
 #include "mesh/TriangleMesh.h"
@@ -18,11 +18,9 @@ Eigen::SparseMatrix<double> cotangentLaplacian(const Vertices& vertices, const F
 
 Eigen::VectorXd faceAreas(const Vertices& vertices, const Faces& faces);
 
-// Sum of the areas of the faces around each vertex (A_i of the attraction-weight update in III.A).
-Eigen::VectorXd oneRingAreas(const Vertices& vertices, const Faces& faces);
-
-// A third of the one-ring area: the lumped (barycentric) mass of each vertex.
-Eigen::VectorXd barycentricAreas(const Vertices& vertices, const Faces& faces);
+// Sum of the areas of the faces around each vertex (A_i of the attraction-weight update in III.A), from
+// the areas faceAreas() gave.
+Eigen::VectorXd oneRingAreas(const Faces& faces, const Eigen::VectorXd& faceAreas, Eigen::Index vertexCount);
 
 // Signed volume enclosed by the faces (divergence theorem); meaningful for closed, oriented meshes.
 double enclosedVolume(const Vertices& vertices, const Faces& faces);
