@@ -1,4 +1,5 @@
-// `medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION] [--skeleton-scale S]`
+// `medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION] [--skeleton-scale S]
+//                [--mesh-opacity A]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "PrivateDisplay.h"
@@ -18,7 +19,7 @@ namespace medial::cli {
 
 int runRender(const std::vector<std::string>& args) {
   const ParsedArgs parsed =
-      parseArgs(args, {{"-o", "--output", "--size", "--camera", "--skeleton-scale"}, {"--quiet", "--timings"}});
+      parseArgs(args, {{"-o", "--output", "--size", "--camera", "--skeleton-scale", "--mesh-opacity"}, {"--quiet", "--timings"}});
   if (parsed.positional.empty()) throw UsageError("render needs at least one INPUT file");
   std::string output = parsed.value("-o", parsed.value("--output"));
   if (output.empty()) throw UsageError("render needs -o IMAGE.png");
@@ -32,10 +33,17 @@ int runRender(const std::vector<std::string>& args) {
     if (!(skeletonScale > 0)) throw UsageError("--skeleton-scale must be positive");
   }
 
+  double meshOpacity = 1.0;
+  if (parsed.has("--mesh-opacity")) {
+    meshOpacity = parseNumbers(parsed.value("--mesh-opacity"), 1, "--mesh-opacity")[0];
+    if (!(meshOpacity >= 0 && meshOpacity <= 1)) throw UsageError("--mesh-opacity must be in [0, 1]");
+  }
+
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
   auto scene = vtkSmartPointer<vtkMedialScene>::New();
   scene->SetSkeletonRadiusScale(skeletonScale);
+  scene->SetMeshOpacity(meshOpacity);
   for (const std::string& input : parsed.positional) {
     timings.start("read");
     const vtkSmartPointer<vtkDataObject> data = readInput(input, progress);

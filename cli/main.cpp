@@ -60,7 +60,7 @@ const std::vector<Command>& commands() {
        "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp]\n", runSketch},
       {"render", "render meshes, skeletons and volumes offscreen to a PNG",
        "usage: medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION]\n"
-       "                     [--skeleton-scale S] [--quiet] [--timings]\n"
+       "                     [--skeleton-scale S] [--mesh-opacity A] [--quiet] [--timings]\n"
        "\n"
        "Renders every INPUT (meshes: .vtp .vtk .vtu .obj .ply .stl .off; skeletons: .vtp .swc, drawn as\n"
        "tubes from their Radius; volumes: .nii .nii.gz .mha .mhd .nrrd .inr .inr.gz .vti .inv3 or a DICOM\n"
@@ -69,6 +69,7 @@ const std::vector<Command>& commands() {
        "  --size WxH               image size in pixels (default 1024x768)\n"
        "  --camera AZ,EL           degrees around the front view (default 30,20)\n"
        "  --skeleton-scale S       scale of skeleton tube radii (default 1)\n"
+       "  --mesh-opacity A         opacity of meshes in [0, 1] (default 1); below 1 shows skeletons inside\n"
        "  --quiet                  no progress line\n"
        "  --timings                print stage times as JSON on stdout\n"
        "Without an X display, a private Xvfb is started (package xvfb).\n",

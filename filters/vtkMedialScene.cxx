@@ -70,6 +70,7 @@ vtkMedialScene::~vtkMedialScene() = default;
 void vtkMedialScene::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SkeletonRadiusScale: " << this->SkeletonRadiusScale << "\n";
+  os << indent << "MeshOpacity: " << this->MeshOpacity << "\n";
 }
 
 vtkRenderer* vtkMedialScene::GetRenderer() { return this->Renderer; }
@@ -127,6 +128,7 @@ vtkProp3D* vtkMedialScene::AddMesh(vtkPolyData* mesh, const double rgb[3]) {
   actor->GetProperty()->SetSpecular(0.25);
   actor->GetProperty()->SetSpecularPower(30);
   actor->GetProperty()->BackfaceCullingOff();
+  actor->GetProperty()->SetOpacity(this->MeshOpacity);
   this->Renderer->AddActor(actor);
   return actor;
 }

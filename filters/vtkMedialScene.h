@@ -39,6 +39,11 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   vtkSetMacro(SkeletonRadiusScale, double);
   vtkGetMacro(SkeletonRadiusScale, double);
 
+  /// Opacity of meshes added after this call (default 1). Below 1 a mesh shows what lies inside it
+  /// (a skeleton, a centerline); translucency is sorted by depth peeling.
+  vtkSetClampMacro(MeshOpacity, double, 0.0, 1.0);
+  vtkGetMacro(MeshOpacity, double);
+
   /// The default three-quarter view that fits every visible prop, for the window's aspect ratio (4:3
   /// when the renderer has no window yet).
   void ResetCamera();
@@ -75,5 +80,6 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   vtkSmartPointer<vtkRenderer> Renderer;
   int ColorIndex = 0;
   double SkeletonRadiusScale = 1.0;
+  double MeshOpacity = 1.0;
   void* DisplayId = nullptr;
 };

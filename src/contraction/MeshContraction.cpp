@@ -51,13 +51,25 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
   double contractionWeight = p.initialContractionFactor * std::sqrt(initialArea / double(mesh.faces.rows()));
   Eigen::VectorXd attraction = Eigen::VectorXd::Constant(n, p.initialAttraction);
 
+  // Cotangents of faces that have collapsed are frozen at their last value (see the header).
+  Eigen::MatrixX3d cotangents = faceCotangents(positions, mesh.faces, minAngle);
+  std::vector<bool> frozen(size_t(mesh.faces.rows()), false);
+  Eigen::VectorXd areas = initialFaceAreas;
+
   SparseSolver solver(p.solver);
   double previousArea = initialArea;
   Vertices best = positions;
   result.stopReason = "maximum iterations";
   for (int iteration = 0; iteration < p.maxIterations; ++iteration) {
     auto start = Clock::now();
-    const Eigen::SparseMatrix<double> laplacian = cotangentLaplacian(positions, mesh.faces, minAngle);
+    if (iteration > 0) {
+      const Eigen::MatrixX3d current = faceCotangents(positions, mesh.faces, minAngle);
+      for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
+        if (!frozen[size_t(f)] && areas[f] < p.degenerateFaceFraction * initialFaceAreas[f]) frozen[size_t(f)] = true;
+        if (!frozen[size_t(f)]) cotangents.row(f) = current.row(f);
+      }
+    }
+    const Eigen::SparseMatrix<double> laplacian = laplacianFromCotangents(mesh.faces, cotangents, n);
     const Eigen::SparseMatrix<double> matrix = normalMatrix(laplacian, contractionWeight, attraction);
     const Eigen::MatrixXd rhs = attraction.array().square().matrix().asDiagonal() * positions;
     result.assembleSeconds += secondsSince(start);
@@ -82,7 +94,7 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
 
     // Weight updates of III.A, steps 2 and 3.
     contractionWeight = std::min(contractionWeight * p.contractionScale, p.maxContractionWeight);
-    const Eigen::VectorXd areas = faceAreas(positions, mesh.faces);
+    areas = faceAreas(positions, mesh.faces);
     const Eigen::VectorXd ringAreas = oneRingAreas(mesh.faces, areas, n);
     for (Eigen::Index i = 0; i < n; ++i) {
       const double ratio = ringAreas[i] > 0 ? initialRingAreas[i] / ringAreas[i] : INFINITY;

@@ -38,9 +38,22 @@ struct Candidate {
   bool operator>(const Candidate& other) const { return length > other.length; }
 };
 
+// Would the merged node at `kept` have no more edges leaving the mesh than its two ends had? (Edges of
+// the surgery that already cross the surface do not block a collapse; new crossings do.)
+bool staysInside(const Graph& g, const InsideTest& inside, const Eigen::Vector3d& kept, int keep, int drop) {
+  int crossingBefore = 0, crossingAfter = 0;
+  for (int node : {keep, drop})
+    for (int k : g.neighbours[size_t(node)]) {
+      if (k == keep || k == drop) continue;
+      crossingBefore += !inside.segmentIsClear(g.position[size_t(node)], g.position[size_t(k)]);
+      crossingAfter += !inside.segmentIsClear(kept, g.position[size_t(k)]);
+    }
+  return crossingAfter <= crossingBefore;
+}
+
 }  // namespace
 
-int selectNodes(CurveSkeleton& skeleton, int targetNodes, const std::vector<double>& radii) {
+int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* inside) {
   const int n = int(skeleton.nodes.rows());
   Graph g{std::vector<Eigen::Vector3d>(size_t(n)), std::vector<std::vector<int>>(size_t(n)),
           std::vector<bool>(size_t(n), true), std::vector<unsigned>(size_t(n), 0), std::vector<int>(size_t(n))};
@@ -68,18 +81,18 @@ int selectNodes(CurveSkeleton& skeleton, int targetNodes, const std::vector<doub
         g.version[size_t(c.b)] != c.versionB || !g.adjacent(c.a, c.b))
       continue;
     const int sa = g.significance(c.a), sb = g.significance(c.b);
-    // A twig: a leaf whose edge ends inside the tube of its neighbour is no branch of the shape.
-    const bool twigA = sa == 2 && sb != 2 && !radii.empty() && c.length < radii[size_t(c.b)];
-    const bool twigB = sb == 2 && sa != 2 && !radii.empty() && c.length < radii[size_t(c.a)];
-    // Two leaves: a lone segment. A leaf and a branch node: the branch itself would vanish.
-    if (!twigA && !twigB && ((sa == 2 && sb >= 1) || (sb == 2 && sa >= 1))) continue;
-    if (g.shareNeighbour(c.a, c.b)) continue;
-    // Keep the more significant end (the inner end of a twig); merge the other into it.
+    if (sa == 2 && sb == 2) continue;       // a segment on its own
+    if (g.shareNeighbour(c.a, c.b)) continue;  // would fold a cycle into a double edge
+    // Keep the more significant end: a tip or a junction stays where it is. A leaf on a branch node is
+    // the one case where the branch node is kept: the side branch, the shortest edge left, goes.
     int keep = sa >= sb ? c.a : c.b;
-    if (twigA) keep = c.b;
-    if (twigB) keep = c.a;
+    if (sa == 2 && sb == 1) keep = c.b;
+    if (sb == 2 && sa == 1) keep = c.a;
     const int drop = keep == c.a ? c.b : c.a;
-    if (sa == sb) g.position[size_t(keep)] = 0.5 * (g.position[size_t(c.a)] + g.position[size_t(c.b)]);
+    const Eigen::Vector3d kept =
+        sa == sb ? Eigen::Vector3d(0.5 * (g.position[size_t(c.a)] + g.position[size_t(c.b)])) : g.position[size_t(keep)];
+    if (inside && !staysInside(g, *inside, kept, keep, drop)) continue;
+    g.position[size_t(keep)] = kept;
     for (int k : g.neighbours[size_t(drop)]) {
       auto& list = g.neighbours[size_t(k)];
       list.erase(std::remove(list.begin(), list.end(), drop), list.end());

@@ -87,7 +87,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   if (p.refineEmbedding) result.refinedNodes = refineEmbedding(curve, mesh.vertices, inside);
   result.refinementSeconds = secondsSince(start);
   start = Clock::now();
-  if (p.targetNodes > 0) selectNodes(curve, p.targetNodes, nodeRadii(curve, mesh.vertices, inside));
+  if (p.targetNodes > 0) selectNodes(curve, p.targetNodes, &inside);
   result.selectionSeconds = secondsSince(start);
   start = Clock::now();
   result.skeleton.radii = nodeRadii(curve, mesh.vertices, inside);

@@ -20,25 +20,38 @@ double clampedCotangent(const Eigen::Vector3d& u, const Eigen::Vector3d& v, doub
 
 }  // namespace
 
-Eigen::SparseMatrix<double> cotangentLaplacian(const Vertices& vertices, const Faces& faces,
-                                               double minAngle) {
+Eigen::MatrixX3d faceCotangents(const Vertices& vertices, const Faces& faces, double minAngle) {
   const double cotLimit = 1.0 / std::tan(minAngle);
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(static_cast<size_t>(faces.rows()) * 12);
-  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+  Eigen::MatrixX3d cotangents(faces.rows(), 3);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
     for (int corner = 0; corner < 3; ++corner) {
       const int o = faces(f, corner), i = faces(f, (corner + 1) % 3), j = faces(f, (corner + 2) % 3);
-      const double w = clampedCotangent(row(vertices, i) - row(vertices, o), row(vertices, j) - row(vertices, o),
-                                        cotLimit);
+      cotangents(f, corner) = clampedCotangent(row(vertices, i) - row(vertices, o),
+                                               row(vertices, j) - row(vertices, o), cotLimit);
+    }
+  return cotangents;
+}
+
+Eigen::SparseMatrix<double> laplacianFromCotangents(const Faces& faces, const Eigen::MatrixX3d& cotangents,
+                                                    Eigen::Index vertexCount) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(static_cast<size_t>(faces.rows()) * 12);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+    for (int corner = 0; corner < 3; ++corner) {
+      const int i = faces(f, (corner + 1) % 3), j = faces(f, (corner + 2) % 3);
+      const double w = cotangents(f, corner);  // the angle at `corner` weighs the opposite edge (i, j)
       triplets.emplace_back(i, j, w);
       triplets.emplace_back(j, i, w);
       triplets.emplace_back(i, i, -w);
       triplets.emplace_back(j, j, -w);
     }
-  }
-  Eigen::SparseMatrix<double> laplacian(vertices.rows(), vertices.rows());
+  Eigen::SparseMatrix<double> laplacian(vertexCount, vertexCount);
   laplacian.setFromTriplets(triplets.begin(), triplets.end());  // sums the two faces of each edge
   return laplacian;
+}
+
+Eigen::SparseMatrix<double> cotangentLaplacian(const Vertices& vertices, const Faces& faces, double minAngle) {
+  return laplacianFromCotangents(faces, faceCotangents(vertices, faces, minAngle), vertices.rows());
 }
 
 Eigen::VectorXd faceAreas(const Vertices& vertices, const Faces& faces) {

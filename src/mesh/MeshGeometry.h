@@ -16,6 +16,12 @@ namespace medial {
 // entry even when its weight is zero, so the sparsity pattern depends on the connectivity alone.
 Eigen::SparseMatrix<double> cotangentLaplacian(const Vertices& vertices, const Faces& faces, double minAngle);
 
+// The two halves of cotangentLaplacian: the clamped cotangent of each face's angle at each corner
+// (row f, column c: the angle at faces(f, c)), and the Laplacian assembled from such cotangents.
+Eigen::MatrixX3d faceCotangents(const Vertices& vertices, const Faces& faces, double minAngle);
+Eigen::SparseMatrix<double> laplacianFromCotangents(const Faces& faces, const Eigen::MatrixX3d& cotangents,
+                                                    Eigen::Index vertexCount);
+
 Eigen::VectorXd faceAreas(const Vertices& vertices, const Faces& faces);
 
 // Sum of the areas of the faces around each vertex (A_i of the attraction-weight update in III.A), from

@@ -125,8 +125,15 @@ TEST(SkeletonByContraction, BadInputIsRefusedWithAMessage) {
             "triangle 3 refers to vertex 100000, which does not exist");
 }
 
+medial::Skeleton toSkeleton(const medial::CurveSkeleton& s) {
+  medial::Skeleton out;
+  for (Eigen::Index k = 0; k < s.nodes.rows(); ++k) out.nodes.push_back(s.nodes.row(k).transpose());
+  for (const auto& [a, b] : s.edges) out.edges.push_back({a, b});
+  return out;
+}
+
 TEST(NodeSelection, KeepsCyclesAndTips) {
-  // A square cycle with a long tail of 10 nodes: selection down to 3 keeps the cycle and the tip.
+  // A square cycle with a long tail of 10 nodes: selection down to 4 keeps the cycle and the tip.
   medial::CurveSkeleton s;
   s.nodes.resize(14, 3);
   s.nodes.row(0) << 0, 0, 0;
@@ -139,13 +146,56 @@ TEST(NodeSelection, KeepsCyclesAndTips) {
     s.edges.emplace_back(k == 0 ? 1 : 3 + k, 4 + k);
   }
   s.vertexToNode = {13, 0};
-  medial::selectNodes(s, 3);
-  medial::Skeleton out;
-  for (Eigen::Index k = 0; k < s.nodes.rows(); ++k) out.nodes.push_back(s.nodes.row(k).transpose());
-  for (const auto& [a, b] : s.edges) out.edges.push_back({a, b});
+  medial::selectNodes(s, 4);
+  const medial::Skeleton out = toSkeleton(s);
   const GraphCounts c = countGraph(out);
   EXPECT_EQ(c.cycles, 1);
   EXPECT_EQ(c.components, 1);
-  EXPECT_GE(out.nodeCount(), 4);  // a cycle needs three nodes, the tail its tip
+  EXPECT_EQ(out.nodeCount(), 4);  // a cycle needs three nodes, the tail its tip
   EXPECT_NEAR(out.nodes[size_t(s.vertexToNode[0])].x(), 4.0, 1e-12);  // the tip did not move
+}
+
+TEST(NodeSelection, ShortSideBranchesGoFirst) {
+  // A straight limb of 5 nodes along x with a short twig (0.2) and a long branch (3 edges of 1) off its
+  // middle node: down to 6 nodes the twig goes, the branch keeps its tip.
+  medial::CurveSkeleton s;
+  s.nodes.resize(9, 3);
+  for (int k = 0; k < 5; ++k) s.nodes.row(k) << k, 0, 0;
+  s.nodes.row(5) << 2, 0.2, 0;
+  for (int k = 0; k < 3; ++k) s.nodes.row(6 + k) << 2, -(k + 1.0), 0;
+  s.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {2, 5}, {2, 6}, {6, 7}, {7, 8}};
+  s.vertexToNode = {5, 8};
+  medial::selectNodes(s, 6);
+  const medial::Skeleton out = toSkeleton(s);
+  EXPECT_EQ(out.nodeCount(), 6);
+  EXPECT_EQ(countGraph(out).components, 1);
+  EXPECT_NEAR(out.nodes[size_t(s.vertexToNode[0])].y(), 0.0, 1e-12);  // the twig's vertex went to the limb
+  EXPECT_NEAR(out.nodes[size_t(s.vertexToNode[1])].y(), -3.0, 1e-12);  // the branch tip stayed
+}
+
+TEST(NodeSelection, RefusesCollapsesThatLeaveTheMesh) {
+  // The core circle of a torus (R 2, r 0.5) as 24 nodes. Down to 3 nodes without a mesh: a triangle,
+  // whose edge midpoints (1 from the axis) lie outside the tube. With the mesh, selection stops while
+  // every edge stays inside (a hexagon's midpoints are at 1.73).
+  auto circle = [] {
+    medial::CurveSkeleton s;
+    s.nodes.resize(24, 3);
+    for (int k = 0; k < 24; ++k) {
+      s.nodes.row(k) << 2 * std::cos(k * M_PI / 12), 2 * std::sin(k * M_PI / 12), 0;
+      s.edges.emplace_back(k, (k + 1) % 24);
+    }
+    return s;
+  };
+  medial::CurveSkeleton free = circle();
+  medial::selectNodes(free, 3);
+  EXPECT_EQ(free.nodes.rows(), 3);
+
+  const medial::TriangleMesh torus = torusMesh(2, 0.5);
+  const medial::InsideTest inside(torus);
+  medial::CurveSkeleton constrained = circle();
+  medial::selectNodes(constrained, 3, &inside);
+  EXPECT_GE(constrained.nodes.rows(), 6);
+  EXPECT_EQ(countGraph(toSkeleton(constrained)).cycles, 1);
+  for (const auto& [a, b] : constrained.edges)
+    EXPECT_TRUE(inside.segmentIsClear(constrained.nodes.row(a).transpose(), constrained.nodes.row(b).transpose()));
 }
