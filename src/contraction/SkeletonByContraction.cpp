@@ -59,7 +59,8 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
 
   // III.A geometry contraction.
   auto start = Clock::now();
-  ContractionResult contraction = contractMesh(mesh, p.contraction, report(0.0, 0.75));
+  const double contractionEnd = p.computeWeights ? 0.6 : 0.75, surgeryEnd = p.computeWeights ? 0.7 : 0.9;
+  ContractionResult contraction = contractMesh(mesh, p.contraction, report(0.0, contractionEnd));
   result.contractionSeconds = secondsSince(start);
   result.factorizationSeconds = contraction.analyzeSeconds + contraction.factorizeSeconds;
   result.contractionIterations = contraction.iterations;
@@ -72,7 +73,8 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
 
   // III.B connectivity surgery.
   start = Clock::now();
-  CurveSkeleton curve = collapseToCurveSkeleton(contraction.contracted, mesh.faces, p.surgery, report(0.75, 0.9));
+  CurveSkeleton curve = collapseToCurveSkeleton(contraction.contracted, mesh.faces, p.surgery,
+                                                  report(contractionEnd, surgeryEnd));
   result.surgerySeconds = secondsSince(start);
   if (curve.nodes.rows() == 0) {
     result.error = "aborted";
@@ -97,6 +99,19 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   for (const auto& [a, b] : curve.edges) result.skeleton.edges.push_back({a, b});
   result.vertexToNode = std::move(curve.vertexToNode);
   result.skeleton.root = chooseRoot(result.skeleton, result.vertexToNode);
+
+  // III.E skinning weights.
+  if (p.computeWeights) {
+    start = Clock::now();
+    HeatWeightResult weights = heatWeights(mesh, result.skeleton, inside, p.weights, report(0.8, 0.99));
+    result.weightsSeconds = secondsSince(start);
+    if (!weights.ok()) {
+      result.error = weights.error == "aborted" ? weights.error : "skinning weights: " + weights.error;
+      return result;
+    }
+    result.weights = std::move(weights.weights);
+    result.invisibleVertices = weights.invisibleVertices;
+  }
   if (progress && !progress(1.0)) result.error = "aborted";
   return result;
 }

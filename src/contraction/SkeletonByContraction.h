@@ -1,10 +1,11 @@
 // SkeletonByContraction: the whole skeleton pipeline of the contraction paper (section III, stages 1-4)
 // plus node radii: contraction (III.A), connectivity surgery (III.B), embedding refinement (III.C), node
-// selection (III.D), radii. Input: a triangle mesh (any number of components, open or closed). Output: a
+// selection (III.D), radii, and on request the heat-diffusion skinning weights (III.E). Input: a triangle mesh (any number of components, open or closed). Output: a
 // Skeleton (GUIDE §2) with radii and a root, and the skeleton-mesh mapping (vertex -> node).
 #pragma once
 
 #include "contraction/ConnectivitySurgery.h"
+#include "contraction/HeatWeights.h"
 #include "contraction/MeshContraction.h"
 #include "skeleton/Skeleton.h"
 
@@ -19,12 +20,16 @@ struct SkeletonByContractionParameters {
   SurgeryParameters surgery;
   bool refineEmbedding = true;
   int targetNodes = 30;  // node selection; 0 keeps every node of the refined curve skeleton
+  bool computeWeights = false;  // III.E: one weight per vertex and bone (skeleton edge)
+  HeatWeightParameters weights;
 };
 
 struct SkeletonByContractionResult {
   Skeleton skeleton;
   std::vector<int> vertexToNode;  // per input vertex: its node, -1 for vertices no face uses
   Vertices contracted;            // the contracted mesh positions (same faces as the input)
+  Eigen::MatrixXd weights;        // with computeWeights: (vertices x bones), rows summing to 1
+  int invisibleVertices = 0;      // vertices no nearest bone sees (HeatWeightResult)
   int contractionIterations = 0;
   double contractionVolumeRatio = 1.0;
   std::string contractionStop;
@@ -32,7 +37,7 @@ struct SkeletonByContractionResult {
   int refinedNodes = 0;        // nodes the refinement moved
   // Seconds per stage, and the share of the contraction spent factorizing.
   double contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0, refinementSeconds = 0,
-         selectionSeconds = 0, radiiSeconds = 0;
+         selectionSeconds = 0, radiiSeconds = 0, weightsSeconds = 0;
   std::string error;
   bool ok() const { return error.empty(); }
 };

@@ -1,0 +1,165 @@
+#include "contraction/HeatWeights.h"
+
+#include "mesh/MeshGeometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace medial {
+
+namespace {
+
+struct NearestBones {
+  std::vector<int> bones;  // the nearest bone, with every bone tied with it
+  double distance = INFINITY;
+  Eigen::Vector3d closestPoint;  // on the first of those bones
+};
+
+Eigen::Vector3d closestPointOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return a + t * ab;
+}
+
+NearestBones nearestBones(const Eigen::Vector3d& p, const Skeleton& skeleton) {
+  NearestBones nearest;
+  for (int i = 0; i < skeleton.edgeCount(); ++i) {
+    const auto& e = skeleton.edges[size_t(i)];
+    const Eigen::Vector3d q = closestPointOnSegment(p, skeleton.nodes[size_t(e[0])], skeleton.nodes[size_t(e[1])]);
+    const double d = (q - p).norm();
+    if (d < nearest.distance * (1 - 1e-6)) {
+      nearest.bones.assign(1, i);
+      nearest.distance = d;
+      nearest.closestPoint = q;
+    } else if (d <= nearest.distance * (1 + 1e-6)) {
+      nearest.bones.push_back(i);
+    }
+  }
+  return nearest;
+}
+
+// Component id of every vertex through the faces; -1 for vertices in no face.
+std::vector<int> vertexComponents(const Faces& faces, Eigen::Index vertexCount, int& componentCount) {
+  std::vector<int> parent(static_cast<size_t>(vertexCount));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&parent](int x) {
+    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+    return x;
+  };
+  std::vector<bool> used(static_cast<size_t>(vertexCount), false);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      used[size_t(faces(f, c))] = true;
+      parent[size_t(find(faces(f, c)))] = find(faces(f, (c + 1) % 3));
+    }
+  std::vector<int> id(size_t(vertexCount), -1), rootId(size_t(vertexCount), -1);
+  componentCount = 0;
+  for (Eigen::Index v = 0; v < vertexCount; ++v) {
+    if (!used[size_t(v)]) continue;
+    int& r = rootId[size_t(find(int(v)))];
+    if (r < 0) r = componentCount++;
+    id[size_t(v)] = r;
+  }
+  return id;
+}
+
+}  // namespace
+
+HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton, const InsideTest& inside,
+                             const HeatWeightParameters& p, const std::function<bool(double)>& progress) {
+  HeatWeightResult result;
+  const Eigen::Index n = mesh.vertices.rows();
+  const int bones = skeleton.edgeCount();
+  if (bones == 0) {
+    result.error = "the skeleton has no bones (edges) to weight";
+    return result;
+  }
+  if (n == 0) {
+    result.error = "the mesh has no vertices";
+    return result;
+  }
+  auto aborted = [&](double f) { return progress && !progress(f); };
+
+  // Nearest bones, their distance and whether they see the vertex (H_jj and p_j of eq. 13).
+  std::vector<NearestBones> nearest(static_cast<size_t>(n));
+  std::vector<bool> visible(static_cast<size_t>(n), false);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const Eigen::Vector3d v = mesh.vertices.row(j).transpose();
+    nearest[size_t(j)] = nearestBones(v, skeleton);
+    visible[size_t(j)] = inside.segmentIsClear(v, nearest[size_t(j)].closestPoint);
+    if (j % 4096 == 0 && aborted(0.4 * double(j) / double(n))) {
+      result.error = "aborted";
+      return result;
+    }
+  }
+  int componentCount = 0;
+  const std::vector<int> component = vertexComponents(mesh.faces, n, componentCount);
+  std::vector<bool> componentSeen(size_t(componentCount), false);
+  for (Eigen::Index j = 0; j < n; ++j)
+    if (component[size_t(j)] >= 0 && visible[size_t(j)]) componentSeen[size_t(component[size_t(j)])] = true;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const int c = component[size_t(j)];
+    if (c >= 0 && !componentSeen[size_t(c)]) visible[size_t(j)] = true;  // fallback: see the header
+    if (c >= 0 && !visible[size_t(j)]) ++result.invisibleVertices;
+  }
+  result.componentsWithoutSight = int(std::count(componentSeen.begin(), componentSeen.end(), false));
+
+  // System (14): A = -L_c + M H, B = M H P.
+  const double minAngle = p.minAngleDegrees * M_PI / 180.0;
+  const Eigen::VectorXd mass = oneRingAreas(mesh.faces, faceAreas(mesh.vertices, mesh.faces), n) / 3.0;
+  Eigen::SparseMatrix<double> matrix = -cotangentLaplacian(mesh.vertices, mesh.faces, minAngle);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, bones);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const NearestBones& near = nearest[size_t(j)];
+    const double share = 1.0 / double(near.bones.size());
+    if (component[size_t(j)] < 0) {  // in no triangle: a row of the identity, its nearest bone's weight
+      matrix.coeffRef(j, j) = 1.0;
+      for (int bone : near.bones) rhs(j, bone) = share;
+      continue;
+    }
+    if (!visible[size_t(j)]) continue;
+    // A vertex on a bone (d = 0) would make H infinite: bound d below by a millionth of the mesh size.
+    const double d = std::max(near.distance, 1e-6 * boundingBoxDiagonal(mesh.vertices));
+    const double heat = mass[j] * p.heatConstant / (d * d);
+    matrix.coeffRef(j, j) += heat;
+    for (int bone : near.bones) rhs(j, bone) = heat * share;
+  }
+  matrix.makeCompressed();
+  if (aborted(0.5)) {
+    result.error = "aborted";
+    return result;
+  }
+
+  SparseSolver solver(p.solver);
+  solver.analyze(matrix);
+  Eigen::MatrixXd solution;
+  if (!solver.factorize(matrix) || !solver.solve(rhs, solution)) {
+    result.error = "heat diffusion: " + solver.error();
+    return result;
+  }
+  if (aborted(0.9)) {
+    result.error = "aborted";
+    return result;
+  }
+
+  // Clamp, drop the negligible, renormalize.
+  result.weights = solution.cwiseMax(0.0).cwiseMin(1.0);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    auto row = result.weights.row(j);
+    for (Eigen::Index i = 0; i < row.size(); ++i)
+      if (row[i] < p.minimumWeight) row[i] = 0;
+    const double sum = row.sum();
+    if (sum > 0) {
+      row /= sum;
+    } else {  // cannot happen for a solvable system; keep every row a partition of unity regardless
+      for (int bone : nearest[size_t(j)].bones) row[bone] = 1.0 / double(nearest[size_t(j)].bones.size());
+    }
+  }
+  if (aborted(1.0)) result.error = "aborted";
+  return result;
+}
+
+}  // namespace medial

@@ -1,0 +1,52 @@
+// HeatWeights: skinning weights by heat diffusion, section III.E of the contraction paper (Baran and
+// Popović 2007, "Automatic rigging and animation of 3D characters", eqs. 13-14).
+//
+// Each bone i (a skeleton edge) is a heat source; its weight field w_i on the surface is the equilibrium
+// of eq. (13), -Δw_i + H w_i = H p_i, written with the cotangent Laplacian L_c (eq. 1, negative diagonal)
+// and the lumped mass matrix M (a third of each vertex's one-ring area) as the symmetric system
+//     (-L_c + M H) w_i = M H p_i                                                            (14)
+// where d(j) is the distance from vertex j to its nearest bone, p_j^i = 1 when bone i is that bone (shared
+// equally among bones tied within 1e-6 of the distance), and H_jj = c / d(j)^2 when the segment from j to
+// the nearest point of that bone lies inside the mesh (the bone "sees" the vertex), 0 otherwise.
+// The matrix is the same for every bone: it is factorized once and solved with one right-hand side per
+// bone. Since sum_i p^i = 1 wherever H > 0 and L_c 1 = 0, the weights of a vertex sum to 1 (the solution
+// of the summed system is the constant 1); they are then clamped to [0, 1], weights below `minimumWeight`
+// are dropped and each row is renormalized to sum exactly 1.
+//
+// A mesh component that no bone sees anywhere (every H_jj = 0 there: the system would be singular) gets
+// H from its nearest bones regardless of visibility; isolated vertices (in no triangle) take their
+// nearest bone's weight directly.
+#pragma once
+
+#include "mesh/InsideTest.h"
+#include "mesh/SparseSolver.h"
+#include "mesh/TriangleMesh.h"
+#include "skeleton/Skeleton.h"
+
+#include <functional>
+#include <string>
+
+namespace medial {
+
+struct HeatWeightParameters {
+  double heatConstant = 1.0;     // c of H_jj = c / d(j)^2 (Baran and Popović: 1)
+  double minimumWeight = 1e-4;   // smaller weights are dropped before renormalization
+  double minAngleDegrees = 1.0;  // cotangent clamping, as in the contraction
+  SparseSolverKind solver = SparseSolverKind::CholmodSupernodalMetis;
+};
+
+struct HeatWeightResult {
+  // weights(j, i): influence of bone i (skeleton edge i) on vertex j; each row sums to 1.
+  Eigen::MatrixXd weights;
+  int invisibleVertices = 0;      // vertices no nearest bone sees (H_jj = 0: weight by diffusion only)
+  int componentsWithoutSight = 0; // mesh components handled by the visibility fallback
+  std::string error;              // non-empty on failure (no bones, solver breakdown, aborted)
+  bool ok() const { return error.empty(); }
+};
+
+// progress(fraction) is called now and then; returning false aborts.
+HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton, const InsideTest& inside,
+                             const HeatWeightParameters& parameters = {},
+                             const std::function<bool(double)>& progress = {});
+
+}  // namespace medial
