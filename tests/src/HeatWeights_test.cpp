@@ -38,8 +38,8 @@ TEST(HeatWeights, TubeWithTwoBonesBlendsAtTheJoint) {
     // tube (checked ring by ring below).
     if (x < -4) { EXPECT_GT(r.weights(j, 0), 0.97) << x; }
     if (x > 4) { EXPECT_GT(r.weights(j, 1), 0.97) << x; }
-    if (std::abs(x) { > 2) EXPECT_GT(r.weights(j, x < 0 ? 0 : 1), 0.85) << x; }
-    if (std::abs(x) { < 0.2) EXPECT_NEAR(r.weights(j, 0), 0.5, 0.15) << x; }
+    if (std::abs(x) > 2) { EXPECT_GT(r.weights(j, x < 0 ? 0 : 1), 0.85) << x; }
+    if (std::abs(x) < 0.2) { EXPECT_NEAR(r.weights(j, 0), 0.5, 0.15) << x; }
   }
   const int sides = 16;
   for (int ring = 1; ring < 40; ++ring)
