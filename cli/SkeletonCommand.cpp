@@ -1,4 +1,5 @@
-// `medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--solver NAME]`
+// `medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig RIG.glb|RIG.fbx]
+//                  [--weights] [--solver NAME] [--iterations N] [--no-refine]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "Progress.h"
@@ -8,6 +9,7 @@
 #include "MedialErrorCollector.h"
 #include "vtkMedialContractionSkeleton.h"
 #include "vtkMedialPolyDataWriter.h"
+#include "vtkMedialRigWriter.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -37,7 +39,7 @@ void requireWritableExtension(const std::string& path, const char* option) {
 int runSkeleton(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations"},
-             {"--no-refine", "--quiet", "--timings"}});
+             {"--no-refine", "--weights", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("skeleton needs exactly one MESH file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -45,7 +47,9 @@ int runSkeleton(const std::vector<std::string>& args) {
   requireWritableExtension(output, "-o");
   const std::string segmentation = parsed.value("--segmentation");
   if (!segmentation.empty()) requireWritableExtension(segmentation, "--segmentation");
-  if (parsed.has("--rig")) throw Failure("--rig: rig export (skinning weights, glTF/FBX) is not available yet");
+  const std::string rig = parsed.value("--rig");
+  if (parsed.has("--rig") && !vtkMedialRigWriter::CanWriteFile(rig.c_str()))
+    throw UsageError(std::string("--rig must end in one of ") + vtkMedialRigWriter::GetExtensions() + ": " + rig);
 
   auto filter = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
   if (parsed.has("--nodes")) {
@@ -64,6 +68,7 @@ int runSkeleton(const std::vector<std::string>& args) {
     if (errors->HasErrors()) throw UsageError("--solver: " + errors->Joined());
   }
   filter->SetRefineEmbedding(!parsed.has("--no-refine"));
+  filter->SetComputeWeights(parsed.has("--rig") || parsed.has("--weights"));
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
@@ -84,6 +89,14 @@ int runSkeleton(const std::vector<std::string>& args) {
   timings.start("write");
   writePolyData(filter->GetOutput(0), output);
   if (!segmentation.empty()) writePolyData(filter->GetOutput(1), segmentation);
+  if (!rig.empty()) {
+    auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
+    auto rigErrors = medial::ErrorCollector::Watch(writer);
+    writer->SetFileName(rig.c_str());
+    writer->SetInputData(0, filter->GetOutput(1));
+    writer->SetSkeletonData(filter->GetOutput(0));
+    if (!writer->Write() || rigErrors->HasErrors()) throw Failure(rigErrors->Joined());
+  }
   timings.stop();
   if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
   return kSuccess;

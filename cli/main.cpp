@@ -34,17 +34,21 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> all = {
       {"skeleton", "curve skeleton of a surface mesh by mesh contraction",
        "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig RIG.glb|RIG.fbx]\n"
-       "                       [--solver NAME] [--iterations N] [--no-refine] [--quiet] [--timings]\n\n"
+       "                       [--weights] [--solver NAME] [--iterations N] [--no-refine] [--quiet]\n"
+       "                       [--timings]\n\n"
        "Contracts MESH (.off .obj .ply .stl .vtp .vtk; polygons are triangulated) by constrained Laplacian\n"
-       "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, III.A-D).\n"
+       "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, III.A-D);\n"
+       "with --rig, also computes heat-diffusion skinning weights (III.E) and writes a rig (III.F).\n"
        "  -o, --output SKELETON     the skeleton: .vtp (nodes, edges, Radius, Root) or .vtk .obj .ply\n"
-       "  --segmentation MESH_OUT   the triangulated mesh with point data SkeletonNode (vertex -> node)\n"
+       "  --segmentation MESH_OUT   the triangulated mesh with point data SkeletonNode (vertex -> node),\n"
+       "                            and SkinWeights (one component per bone) with --rig or --weights\n"
        "  --nodes N                 nodes kept by the selection stage (default 30; 0 keeps all)\n"
        "  --solver NAME             cholmod-metis (default), cholmod-amd, llt-amd, ldlt-amd, llt-metis,\n"
        "                            ldlt-metis, lu-colamd, lu-amd, lu-metis, qr-colamd, cg\n"
        "  --iterations N            maximum contraction iterations (default 40)\n"
        "  --no-refine               keep the nodes where the contraction put them (no III.C refinement)\n"
-       "  --rig RIG.glb|RIG.fbx     skinning weights and rig export: not available yet\n"
+       "  --rig RIG.glb|RIG.fbx     the skinned mesh and its bones (one per skeleton edge) as glTF 2.0 or FBX\n"
+       "  --weights                 compute the skinning weights without writing a rig\n"
        "  --quiet                   no progress line\n"
        "  --timings                 print stage times as JSON on stdout\n",
        runSkeleton},

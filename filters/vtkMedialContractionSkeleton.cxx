@@ -1,9 +1,11 @@
 #include "vtkMedialContractionSkeleton.h"
 
+#include "MedialMeshData.h"
 #include "MedialSkeletonData.h"
 #include "contraction/SkeletonByContraction.h"
 
 #include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -17,7 +19,9 @@
 vtkStandardNewMacro(vtkMedialContractionSkeleton);
 
 namespace {
-const char* const kStages[6] = {"contraction", "factorization", "surgery", "refinement", "selection", "radii"};
+const int kStageCount = 7;
+const char* const kStages[kStageCount] = {"contraction", "factorization", "surgery", "refinement",
+                                          "selection",   "radii",         "weights"};
 }
 
 vtkMedialContractionSkeleton::vtkMedialContractionSkeleton() { this->SetNumberOfOutputPorts(2); }
@@ -35,7 +39,7 @@ void vtkMedialContractionSkeleton::SetSolver(const std::string& name) {
 }
 
 double vtkMedialContractionSkeleton::GetStageSeconds(const std::string& stage) const {
-  for (int s = 0; s < 6; ++s)
+  for (int s = 0; s < kStageCount; ++s)
     if (stage == kStages[s]) return this->Seconds[s];
   return 0;
 }
@@ -51,31 +55,11 @@ void vtkMedialContractionSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "ShapeWeight: " << this->ShapeWeight << "\n";
   os << indent << "SamplingWeight: " << this->SamplingWeight << "\n";
   os << indent << "RefineEmbedding: " << this->RefineEmbedding << "\n";
+  os << indent << "ComputeWeights: " << this->ComputeWeights << "\n";
+  os << indent << "HeatConstant: " << this->HeatConstant << "\n";
   os << indent << "Solver: " << this->Solver << "\n";
 }
 
-namespace {
-
-// The triangles of a polygonal mesh, as plain arrays for src/.
-medial::TriangleMesh toTriangleMesh(vtkPolyData* triangles) {
-  medial::TriangleMesh mesh;
-  mesh.vertices.resize(triangles->GetNumberOfPoints(), 3);
-  for (vtkIdType i = 0; i < triangles->GetNumberOfPoints(); ++i) {
-    double p[3];
-    triangles->GetPoint(i, p);
-    mesh.vertices.row(i) << p[0], p[1], p[2];
-  }
-  mesh.faces.resize(triangles->GetNumberOfPolys(), 3);
-  auto ids = vtkSmartPointer<vtkIdList>::New();
-  vtkCellArray* polys = triangles->GetPolys();
-  Eigen::Index f = 0;
-  for (polys->InitTraversal(); polys->GetNextCell(ids);)
-    if (ids->GetNumberOfIds() == 3) mesh.faces.row(f++) << int(ids->GetId(0)), int(ids->GetId(1)), int(ids->GetId(2));
-  mesh.faces.conservativeResize(f, 3);
-  return mesh;
-}
-
-}  // namespace
 
 int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                               vtkInformationVector* outputVector) {
@@ -93,7 +77,7 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   triangulate->PassLinesOff();
   triangulate->Update();
   vtkPolyData* triangles = triangulate->GetOutput();
-  const medial::TriangleMesh mesh = toTriangleMesh(triangles);
+  const medial::TriangleMesh mesh = medial::toTriangleMesh(triangles);
 
   medial::SkeletonByContractionParameters p;
   p.targetNodes = this->TargetNodes;
@@ -106,6 +90,9 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   medial::parseSparseSolverKind(this->Solver, p.contraction.solver);
   p.surgery.shapeWeight = this->ShapeWeight;
   p.surgery.samplingWeight = this->SamplingWeight;
+  p.computeWeights = this->ComputeWeights;
+  p.weights.heatConstant = this->HeatConstant;
+  p.weights.solver = p.contraction.solver;
 
   const medial::SkeletonByContractionResult result = medial::skeletonByContraction(mesh, p, [this](double f) {
     this->UpdateProgress(f);
@@ -113,9 +100,11 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   });
   this->ContractionIterations = result.contractionIterations;
   this->CurveSkeletonNodes = result.curveSkeletonNodes;
-  const double seconds[6] = {result.contractionSeconds, result.factorizationSeconds, result.surgerySeconds,
-                             result.refinementSeconds,  result.selectionSeconds,     result.radiiSeconds};
-  std::copy(seconds, seconds + 6, this->Seconds);
+  const double seconds[kStageCount] = {result.contractionSeconds, result.factorizationSeconds,
+                                      result.surgerySeconds,     result.refinementSeconds,
+                                      result.selectionSeconds,   result.radiiSeconds,
+                                      result.weightsSeconds};
+  std::copy(seconds, seconds + kStageCount, this->Seconds);
   if (!result.ok()) {
     vtkErrorMacro(<< result.error);
     return 0;
@@ -128,5 +117,15 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   nodes->SetNumberOfValues(triangles->GetNumberOfPoints());
   for (vtkIdType i = 0; i < triangles->GetNumberOfPoints(); ++i) nodes->SetValue(i, result.vertexToNode[size_t(i)]);
   meshOutput->GetPointData()->AddArray(nodes);
+  if (this->ComputeWeights) {
+    auto weights = vtkSmartPointer<vtkDoubleArray>::New();
+    weights->SetName("SkinWeights");
+    weights->SetNumberOfComponents(int(result.weights.cols()));
+    weights->SetNumberOfTuples(result.weights.rows());
+    for (Eigen::Index v = 0; v < result.weights.rows(); ++v)
+      for (Eigen::Index bone = 0; bone < result.weights.cols(); ++bone)
+        weights->SetTypedComponent(v, int(bone), result.weights(v, bone));
+    meshOutput->GetPointData()->AddArray(weights);
+  }
   return 1;
 }

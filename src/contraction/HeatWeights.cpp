@@ -110,7 +110,8 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
   // System (14): A = -L_c + M H, B = M H P.
   const double minAngle = p.minAngleDegrees * M_PI / 180.0;
   const Eigen::VectorXd mass = oneRingAreas(mesh.faces, faceAreas(mesh.vertices, mesh.faces), n) / 3.0;
-  Eigen::SparseMatrix<double> matrix = -cotangentLaplacian(mesh.vertices, mesh.faces, minAngle);
+  const Eigen::MatrixX3d cotangents = faceCotangents(mesh.vertices, mesh.faces, minAngle).cwiseMax(0.0);
+  Eigen::SparseMatrix<double> matrix = -laplacianFromCotangents(mesh.faces, cotangents, n);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, bones);
   for (Eigen::Index j = 0; j < n; ++j) {
     const NearestBones& near = nearest[size_t(j)];

@@ -8,6 +8,10 @@
 // where d(j) is the distance from vertex j to its nearest bone, p_j^i = 1 when bone i is that bone (shared
 // equally among bones tied within 1e-6 of the distance), and H_jj = c / d(j)^2 when the segment from j to
 // the nearest point of that bone lies inside the mesh (the bone "sees" the vertex), 0 otherwise.
+// The cotangents enter with negative values clamped to 0. Clamped angles (needed for the degenerate
+// triangles of real meshes) can make the true cotangent matrix indefinite (a 0.5/0.5/179 degree triangle
+// clamped to 1/1/179 degrees has weights 57, 57, -57: CHOLMOD refused man.off), while non-negative weights
+// make -L_c + M H a symmetric M-matrix: positive definite, and the weights obey the maximum principle.
 // The matrix is the same for every bone: it is factorized once and solved with one right-hand side per
 // bone. Since sum_i p^i = 1 wherever H > 0 and L_c 1 = 0, the weights of a vertex sum to 1 (the solution
 // of the summed system is the constant 1); they are then clamped to [0, 1], weights below `minimumWeight`

@@ -84,10 +84,29 @@ TEST(Cli, SkeletonOfBadInputFailsWithOneLine) {
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir + "/out.vtp"));
   }
-  auto rig = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir +
-                                      "/out.vtp --rig rig.glb --quiet"));
-  EXPECT_EQ(rig.exitCode, 1);
-  EXPECT_NE(rig.err.find("not available yet"), std::string::npos) << rig.err;
+  auto badExtension = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir +
+                                               "/out.vtp --rig rig.obj --quiet"));
+  EXPECT_EQ(badExtension.exitCode, 2) << badExtension.err;
+  auto noDirectory = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir +
+                                              "/out.vtp --rig " + dir + "/missing/rig.glb --quiet"));
+  EXPECT_EQ(noDirectory.exitCode, 1);
+  EXPECT_EQ(lineCount(noDirectory.err), 1) << noDirectory.err;
+  EXPECT_NE(noDirectory.err.find("rig.glb"), std::string::npos) << noDirectory.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/missing/rig.glb"));
+}
+
+TEST(Cli, SkeletonWritesRigsAsGlbAndFbx) {
+  const std::string dir = scratchDir("cli-rig");
+  for (const auto& [name, magic] : {std::pair<std::string, std::string>{"torus.glb", "glTF"},
+                                    std::pair<std::string, std::string>{"torus.fbx", "Kaydara FBX Binary"}}) {
+    auto r = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir +
+                                      "/torus.vtp --nodes 8 --rig " + dir + "/" + name + " --quiet"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream file(dir + "/" + name, std::ios::binary);
+    std::string head(magic.size(), '\0');
+    file.read(head.data(), std::streamsize(head.size()));
+    EXPECT_EQ(head, magic) << name;
+  }
 }
 
 TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {

@@ -4,6 +4,9 @@
 #include "MedialErrorCollector.h"
 #include "vtkMedialContractionSkeleton.h"
 #include "vtkMedialReader.h"
+#include "vtkMedialRigWriter.h"
+
+#include <filesystem>
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -117,4 +120,48 @@ TEST(ContractionSkeleton, AbortStopsWithAnError) {
   filter->Update();
   EXPECT_NE(errors->Joined().find("aborted"), std::string::npos) << errors->Joined();
   EXPECT_EQ(filter->GetOutput(0)->GetNumberOfPoints(), 0);
+}
+
+TEST(ContractionSkeleton, WeightsPerBoneAndRigFile) {
+  auto torus = readMesh(medial::test::dataPath("meshes/torus.off"));
+  ASSERT_TRUE(torus);
+  auto filter = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
+  filter->SetInputData(torus);
+  filter->SetTargetNodes(8);
+  filter->ComputeWeightsOn();
+  filter->Update();
+  vtkPolyData* skeleton = filter->GetOutput(0);
+  vtkDataArray* weights = filter->GetOutput(1)->GetPointData()->GetArray("SkinWeights");
+  ASSERT_TRUE(weights);
+  EXPECT_EQ(weights->GetNumberOfComponents(), skeleton->GetNumberOfLines());
+  EXPECT_EQ(weights->GetNumberOfTuples(), torus->GetNumberOfPoints());
+  for (vtkIdType v = 0; v < weights->GetNumberOfTuples(); ++v) {
+    double sum = 0;
+    for (int bone = 0; bone < weights->GetNumberOfComponents(); ++bone) sum += weights->GetComponent(v, bone);
+    ASSERT_NEAR(sum, 1.0, 1e-9) << v;
+  }
+  EXPECT_GT(filter->GetStageSeconds("weights"), 0);
+
+  const std::string dir = medial::test::scratchDir("filter-rig");
+  auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
+  auto errors = medial::ErrorCollector::Watch(writer);
+  writer->SetFileName((dir + "/torus.glb").c_str());
+  writer->SetInputConnection(0, filter->GetOutputPort(1));
+  writer->SetInputConnection(1, filter->GetOutputPort(0));
+  EXPECT_EQ(writer->Write(), 1) << errors->Joined();
+  EXPECT_GT(std::filesystem::file_size(dir + "/torus.glb"), 1000u);
+
+  // Without weights the writer refuses and leaves nothing behind.
+  auto plain = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
+  plain->SetInputData(torus);
+  plain->SetTargetNodes(8);
+  plain->Update();
+  auto refused = vtkSmartPointer<vtkMedialRigWriter>::New();
+  auto refusal = medial::ErrorCollector::Watch(refused);
+  refused->SetFileName((dir + "/plain.glb").c_str());
+  refused->SetInputData(0, plain->GetOutput(1));
+  refused->SetSkeletonData(plain->GetOutput(0));
+  EXPECT_EQ(refused->Write(), 0);
+  EXPECT_NE(refusal->Joined().find("no SkinWeights"), std::string::npos) << refusal->Joined();
+  EXPECT_FALSE(std::filesystem::exists(dir + "/plain.glb"));
 }

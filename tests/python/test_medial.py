@@ -52,6 +52,20 @@ class MedialPython(unittest.TestCase):
         self.assertIsNotNone(out.GetPointData().GetArray("Radius"))
         self.assertIsNotNone(skeleton.GetOutput(1).GetPointData().GetArray("SkeletonNode"))
 
+        # Skinning weights and a rig file, as a rigging user would script them.
+        skeleton.ComputeWeightsOn()
+        skeleton.Update()
+        weights = skeleton.GetOutput(1).GetPointData().GetArray("SkinWeights")
+        self.assertEqual(weights.GetNumberOfComponents(), out.GetNumberOfLines())
+        rig_path = os.path.join(tempfile.mkdtemp(), "torus.glb")
+        writer = medial.vtkMedialRigWriter()
+        writer.SetFileName(rig_path)
+        writer.SetInputConnection(0, skeleton.GetOutputPort(1))
+        writer.SetInputConnection(1, skeleton.GetOutputPort(0))
+        self.assertEqual(writer.Write(), 1)
+        with open(rig_path, "rb") as rig:
+            self.assertEqual(rig.read(4), b"glTF")
+
     def test_bad_file_gives_error_and_empty_output(self):
         reader = medial.vtkMedialReader()
         reader.SetFileName(os.path.join(tempfile.gettempdir(), "does-not-exist.off"))

@@ -1,0 +1,93 @@
+#include "vtkMedialRigWriter.h"
+
+#include "MedialFileNames.h"
+#include "MedialMeshData.h"
+#include "MedialSkeletonData.h"
+#include "rig/RigExport.h"
+
+#include <vtkDataArray.h>
+#include <vtkErrorCode.h>
+#include <vtkInformation.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkTriangleFilter.h>
+
+#include <cstdio>
+
+vtkStandardNewMacro(vtkMedialRigWriter);
+
+vtkMedialRigWriter::vtkMedialRigWriter() { this->SetNumberOfInputPorts(2); }
+
+void vtkMedialRigWriter::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->FileName << "\n";
+  os << indent << "MaxInfluences: " << this->MaxInfluences << "\n";
+}
+
+void vtkMedialRigWriter::SetSkeletonData(vtkPolyData* skeleton) { this->SetInputData(1, skeleton); }
+
+bool vtkMedialRigWriter::CanWriteFile(const char* fileName) {
+  const std::string e = medial::fileExtension(fileName);
+  return e == ".glb" || e == ".fbx";
+}
+
+int vtkMedialRigWriter::FillInputPortInformation(int, vtkInformation* info) {
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+void vtkMedialRigWriter::Fail(unsigned long code) { this->SetErrorCode(code); }
+
+void vtkMedialRigWriter::WriteData() {
+  this->SetErrorCode(vtkErrorCode::NoError);
+  if (this->FileName.empty()) {
+    vtkErrorMacro(<< "no file name given");
+    return this->Fail(vtkErrorCode::NoFileNameError);
+  }
+  if (!CanWriteFile(this->FileName.c_str())) {
+    vtkErrorMacro(<< this->FileName << ": a rig is written as " << GetExtensions());
+    return this->Fail(vtkErrorCode::UnrecognizedFileTypeError);
+  }
+  vtkPolyData* mesh = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
+  vtkPolyData* skeletonData = vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
+  if (!mesh || !skeletonData) {
+    vtkErrorMacro(<< this->FileName << ": a rig needs the mesh (port 0) and the skeleton (port 1)");
+    return this->Fail(vtkErrorCode::UnknownError);
+  }
+  vtkDataArray* weights = mesh->GetPointData()->GetArray("SkinWeights");
+  if (!weights) {
+    vtkErrorMacro(<< this->FileName << ": the mesh has no SkinWeights point data (compute the weights first)");
+    return this->Fail(vtkErrorCode::UnknownError);
+  }
+
+  medial::Rig rig;
+  std::string error;
+  if (!medial::skeletonFromPolyData(skeletonData, rig.skeleton, error)) {
+    vtkErrorMacro(<< this->FileName << ": " << error);
+    return this->Fail(vtkErrorCode::UnknownError);
+  }
+  auto triangulate = vtkSmartPointer<vtkTriangleFilter>::New();
+  triangulate->SetInputData(mesh);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  rig.mesh = medial::toTriangleMesh(triangulate->GetOutput());
+  vtkDataArray* triangulatedWeights = triangulate->GetOutput()->GetPointData()->GetArray("SkinWeights");
+  rig.weights.resize(triangulatedWeights->GetNumberOfTuples(), triangulatedWeights->GetNumberOfComponents());
+  for (vtkIdType v = 0; v < triangulatedWeights->GetNumberOfTuples(); ++v)
+    for (int bone = 0; bone < triangulatedWeights->GetNumberOfComponents(); ++bone)
+      rig.weights(v, bone) = triangulatedWeights->GetComponent(v, bone);
+
+  medial::RigExportOptions options;
+  options.maxInfluences = this->MaxInfluences;
+  const std::string temporary = medial::temporarySiblingName(this->FileName);
+  error = medial::exportRig(rig, temporary, medial::rigFormatForFile(this->FileName), options);
+  if (error.empty()) medial::replaceFile(temporary, this->FileName, error);
+  if (!error.empty()) {
+    std::remove(temporary.c_str());
+    vtkErrorMacro(<< this->FileName << ": " << error);
+    return this->Fail(vtkErrorCode::CannotOpenFileError);
+  }
+}

@@ -1,0 +1,56 @@
+/**
+ * @class vtkMedialRigWriter
+ * @brief Writes a skinned mesh and its skeleton as a rig (contraction paper, III.F): glTF 2.0 binary
+ * (.glb) or FBX (.fbx), through Assimp, for Blender, Maya, 3ds Max or a game engine.
+ *
+ * Input port 0: the mesh with point data `SkinWeights` (one component per bone), as port 1 of
+ * vtkMedialContractionSkeleton gives it with ComputeWeights on; polygons are triangulated.
+ * Input port 1: the skeleton (GUIDE §2); bone i is its line cell i, rooted at field data `Root`.
+ * The rig: one bone per skeleton edge, head at the end nearer the root, Y along the bone, hierarchy from
+ * the root, at most 4 influences per vertex (see src/rig/RigExport.h).
+ *
+ * Atomic like vtkMedialPolyDataWriter: nothing is left behind on failure. Errors name the file; Write()
+ * returns 0 on failure.
+ */
+#pragma once
+
+#include "MedialFiltersModule.h"
+#include "vtkWriter.h"
+
+#include <string>
+
+class vtkPolyData;
+
+class MEDIALFILTERS_EXPORT vtkMedialRigWriter : public vtkWriter {
+ public:
+  static vtkMedialRigWriter* New();
+  vtkTypeMacro(vtkMedialRigWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetStdStringFromCharMacro(FileName);
+  vtkGetCharFromStdStringMacro(FileName);
+
+  /// The skeleton (input port 1).
+  void SetSkeletonData(vtkPolyData* skeleton);
+
+  /// Most bones influencing one vertex (default 4).
+  vtkSetClampMacro(MaxInfluences, int, 1, 64);
+  vtkGetMacro(MaxInfluences, int);
+
+  static bool CanWriteFile(const char* fileName);
+  static const char* GetExtensions() { return "*.glb *.fbx"; }
+
+ protected:
+  vtkMedialRigWriter();
+  ~vtkMedialRigWriter() override = default;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  void WriteData() override;
+
+ private:
+  vtkMedialRigWriter(const vtkMedialRigWriter&) = delete;
+  void operator=(const vtkMedialRigWriter&) = delete;
+  void Fail(unsigned long code);
+
+  std::string FileName;
+  int MaxInfluences = 4;
+};
