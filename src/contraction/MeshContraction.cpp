@@ -112,6 +112,10 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
       result.stopReason = "area ratio below threshold";
       break;
     }
+    if (initialVolume > 0 && result.volumeRatio < p.volumeRatioStop) {
+      result.stopReason = "volume ratio below threshold";
+      break;
+    }
     if (area > previousArea * p.areaGrowthGuard) {
       // The Laplacian of a nearly degenerate mesh grows unreliable: keep the last shrinking iterate.
       positions = best;
@@ -119,7 +123,7 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
       result.stopReason = "area grew: kept the previous iterate";
       break;
     }
-    if (area > previousArea * (1.0 - p.stallFraction) && contractionWeight >= p.maxContractionWeight) {
+    if (previousArea - area < p.stallFraction * initialArea && contractionWeight >= p.maxContractionWeight) {
       result.stopReason = "converged (area no longer shrinks)";
       break;
     }

@@ -43,9 +43,13 @@ struct ContractionParameters {
   // A face whose area falls below this fraction of its initial area keeps the cotangents it had then.
   double degenerateFaceFraction = 0.2;
   int maxIterations = 40;
-  // Stop when the surface area has shrunk below this fraction of the original area (the degenerate,
-  // almost zero-volume mesh of Au et al.), or when an iteration shrinks it by less than stallFraction.
+  // Stop when the surface area (or the enclosed volume) has shrunk below this fraction of the original
+  // (the degenerate, almost zero-volume mesh of Au et al.), or, once W_L is capped, when an iteration
+  // shrinks the area by less than stallFraction of the original area (the test CGAL's skeletonization
+  // uses, there with 1e-4; relative to the current area, elephant ran 30 iterations instead of 15 for the
+  // same skeleton).
   double areaRatioStop = 1e-4;
+  double volumeRatioStop = 1e-6;  // Au et al.'s zero-volume test (closed meshes)
   double stallFraction = 0.01;
   // When an iteration makes the area grow by this factor, the Laplacian of the degenerate triangles has
   // become unreliable (spikes): the previous iterate is kept and the contraction stops.

@@ -1,0 +1,237 @@
+// Benchmark: Medial's skeleton by contraction (stages 1-4 of the contraction paper: contraction, surgery,
+// refinement, selection) against CGAL's Mean_curvature_flow_skeletonization (contraction + conversion to a
+// skeleton) on the same meshes in one run. Prints per mesh the medians of both, the ratio CGAL / Medial,
+// the iteration counts, the peak memory of each, and the share of Medial's time spent factorizing; then
+// the solver x ordering study of the paper's Table I (contraction only) on one mesh.
+//   medial_bench_contraction [--repeat N] [--table MESH|none] [--no-subdivided] [MESH...]
+// With no mesh: the CGAL samples under data/external (scripts/fetch-samples) and armadillo after one Loop
+// subdivision (~104k vertices). Each run is a child process (fork), so that its peak resident memory
+// (wait4's ru_maxrss) is its own.
+#include "contraction/MeshContraction.h"
+#include "contraction/SkeletonByContraction.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mean_curvature_flow_skeletonization.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Skeletonization = CGAL::Mean_curvature_flow_skeletonization<SurfaceMesh>;
+
+struct RunResult {
+  double seconds = NAN;
+  int iterations = 0;
+  double factorizationSeconds = 0;
+  int nodes = 0;
+  bool ok = false;
+};
+
+struct Measured {
+  RunResult run;     // the median run
+  double peakMiB = 0;  // the largest peak over the runs
+};
+
+// Runs `work` in a child process and returns what it reported with the child's peak memory.
+bool runInChild(const std::function<RunResult()>& work, RunResult& result, double& peakMiB) {
+  int channel[2];
+  if (pipe(channel) != 0) return false;
+  const pid_t child = fork();
+  if (child == 0) {
+    close(channel[0]);
+    RunResult r = work();
+    if (write(channel[1], &r, sizeof r) != ssize_t(sizeof r)) _exit(2);
+    _exit(0);
+  }
+  close(channel[1]);
+  const bool got = read(channel[0], &result, sizeof result) == ssize_t(sizeof result);
+  close(channel[0]);
+  int status = 0;
+  struct rusage usage {};
+  wait4(child, &status, 0, &usage);
+  peakMiB = double(usage.ru_maxrss) / 1024.0;
+  return got && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+Measured measure(int repeat, const std::function<RunResult()>& work) {
+  std::vector<RunResult> runs;
+  Measured m;
+  for (int i = 0; i < repeat; ++i) {
+    RunResult r;
+    double peak = 0;
+    if (!runInChild(work, r, peak)) r.ok = false;
+    m.peakMiB = std::max(m.peakMiB, peak);
+    runs.push_back(r);
+  }
+  std::sort(runs.begin(), runs.end(), [](const RunResult& a, const RunResult& b) { return a.seconds < b.seconds; });
+  m.run = runs[runs.size() / 2];
+  return m;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+medial::TriangleMesh toTriangleMesh(const SurfaceMesh& sm) {
+  medial::TriangleMesh mesh;
+  mesh.vertices.resize(Eigen::Index(sm.number_of_vertices()), 3);
+  for (auto v : sm.vertices()) {
+    const auto& p = sm.point(v);
+    mesh.vertices.row(Eigen::Index(v.idx())) << p.x(), p.y(), p.z();
+  }
+  mesh.faces.resize(Eigen::Index(sm.number_of_faces()), 3);
+  Eigen::Index f = 0;
+  for (auto face : sm.faces()) {
+    int c = 0;
+    for (auto v : CGAL::vertices_around_face(sm.halfedge(face), sm)) mesh.faces(f, c++) = int(v.idx());
+    ++f;
+  }
+  return mesh;
+}
+
+RunResult runMedial(const medial::TriangleMesh& mesh) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = medial::skeletonByContraction(mesh);
+  RunResult out;
+  out.seconds = secondsSince(start);
+  out.iterations = r.contractionIterations;
+  out.factorizationSeconds = r.factorizationSeconds;
+  out.nodes = r.skeleton.nodeCount();
+  out.ok = r.ok();
+  return out;
+}
+
+// CGAL's contract_until_convergence, spelled out to count the iterations (same loop, same stop test).
+RunResult runCgal(const SurfaceMesh& input) {
+  const auto start = std::chrono::steady_clock::now();
+  Skeletonization mcs(input);
+  const double originalArea = CGAL::Polygon_mesh_processing::area(input);
+  double lastArea = 0;
+  RunResult out;
+  while (true) {
+    mcs.contract();
+    ++out.iterations;
+    const double area = CGAL::Polygon_mesh_processing::area(mcs.meso_skeleton());
+    if (std::abs(lastArea - area) / originalArea < mcs.area_variation_factor()) break;
+    lastArea = area;
+    if (std::size_t(out.iterations) >= mcs.max_iterations()) break;
+  }
+  Skeletonization::Skeleton skeleton;
+  mcs.convert_to_skeleton(skeleton);
+  out.seconds = secondsSince(start);
+  out.nodes = int(boost::num_vertices(skeleton));
+  out.ok = true;
+  return out;
+}
+
+RunResult runContractionOnly(const medial::TriangleMesh& mesh, medial::SparseSolverKind kind) {
+  medial::ContractionParameters p;
+  p.solver = kind;
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = medial::contractMesh(mesh, p);
+  RunResult out;
+  out.seconds = secondsSince(start);
+  out.iterations = r.iterations;
+  out.factorizationSeconds = r.analyzeSeconds + r.factorizeSeconds;
+  out.ok = r.ok();
+  return out;
+}
+
+bool readMesh(const std::string& path, SurfaceMesh& mesh) {
+  if (!CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty() || !CGAL::is_triangle_mesh(mesh)) return false;
+  return true;
+}
+
+std::string sampleMesh(const std::string& name) {
+  if (std::filesystem::exists(name)) return name;
+  return std::string(MEDIAL_SOURCE_DIR) + "/data/external/cgal/meshes/" + name + ".off";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int repeat = 3;
+  bool subdivided = true;
+  std::string tableMesh = "elephant";
+  std::vector<std::string> meshes;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) {
+      repeat = std::max(1, std::atoi(argv[++i]));
+    } else if (!std::strcmp(argv[i], "--table") && i + 1 < argc) {
+      tableMesh = argv[++i];
+    } else if (!std::strcmp(argv[i], "--no-subdivided")) {
+      subdivided = false;
+    } else if (argv[i][0] == '-') {
+      std::fprintf(stderr, "usage: %s [--repeat N] [--table MESH|none] [--no-subdivided] [MESH...]\n", argv[0]);
+      return 2;
+    } else {
+      meshes.push_back(argv[i]);
+    }
+  }
+  if (meshes.empty()) meshes = {"knot1", "elephant", "femur", "hand", "mannequin-devil", "man", "armadillo"};
+
+  std::printf("Skeleton by contraction: Medial (stages 1-4) vs CGAL Mean_curvature_flow_skeletonization, "
+              "median of %d runs each\n", repeat);
+  std::printf("%-22s %8s | %9s %5s %6s %8s | %9s %5s %8s | %7s\n", "mesh", "vertices", "Medial s", "iters",
+              "factor", "peak MiB", "CGAL s", "iters", "peak MiB", "CGAL/Med");
+  auto row = [&](const std::string& name, const SurfaceMesh& sm) {
+    const medial::TriangleMesh mesh = toTriangleMesh(sm);
+    const Measured ours = measure(repeat, [&] { return runMedial(mesh); });
+    const Measured peer = measure(repeat, [&] { return runCgal(sm); });
+    std::printf("%-22s %8zu | %9.3f %5d %5.0f%% %8.0f | %9.3f %5d %8.0f | %7.2f%s\n", name.c_str(),
+                std::size_t(sm.number_of_vertices()), ours.run.seconds, ours.run.iterations,
+                100.0 * ours.run.factorizationSeconds / ours.run.seconds, ours.peakMiB, peer.run.seconds,
+                peer.run.iterations, peer.peakMiB, peer.run.seconds / ours.run.seconds,
+                ours.run.ok && peer.run.ok ? "" : "  (a run failed)");
+    std::fflush(stdout);
+  };
+  for (const std::string& name : meshes) {
+    SurfaceMesh sm;
+    if (!readMesh(sampleMesh(name), sm)) {
+      std::printf("%-22s cannot read %s (run scripts/fetch-samples)\n", name.c_str(), sampleMesh(name).c_str());
+      continue;
+    }
+    row(std::filesystem::path(name).stem().string(), sm);
+    if (subdivided && std::filesystem::path(name).stem() == "armadillo") {
+      CGAL::Subdivision_method_3::Loop_subdivision(sm, CGAL::parameters::number_of_iterations(1));
+      row("armadillo-loop1", sm);
+    }
+  }
+
+  // Table I of the paper: every solver x ordering on one mesh, contraction only.
+  if (tableMesh == "none") return 0;
+  SurfaceMesh sm;
+  if (!readMesh(sampleMesh(tableMesh), sm)) return 0;
+  const medial::TriangleMesh mesh = toTriangleMesh(sm);
+  std::printf("\nSolver x ordering (contraction only), %s, %zu vertices, median of %d runs\n", tableMesh.c_str(),
+              std::size_t(sm.number_of_vertices()), repeat);
+  std::printf("%-14s %9s %5s %9s %8s | %s\n", "solver", "seconds", "iters", "factor s", "peak MiB", "vs cholmod-metis");
+  double reference = NAN;
+  for (medial::SparseSolverKind kind : medial::allSparseSolverKinds()) {
+    const Measured m = measure(repeat, [&] { return runContractionOnly(mesh, kind); });
+    if (std::isnan(reference)) reference = m.run.seconds;
+    std::printf("%-14s %9.3f %5d %9.3f %8.0f | %.2f%s\n", medial::sparseSolverName(kind).c_str(), m.run.seconds,
+                m.run.iterations, m.run.factorizationSeconds, m.peakMiB, m.run.seconds / reference,
+                m.run.ok ? "" : "  (failed)");
+    std::fflush(stdout);
+  }
+  return 0;
+}
