@@ -111,6 +111,24 @@ TEST(SkeletonByContraction, DegenerateFacesAreTolerated) {
   EXPECT_EQ(countGraph(r.skeleton).cycles, 1);
 }
 
+TEST(SkeletonByContraction, NonManifoldFinIsTolerated) {
+  // A fin: a triangle on an edge of the torus that two torus faces already share (3 faces on one edge).
+  medial::TriangleMesh torus = torusMesh(2, 0.5);
+  const int a = torus.faces(0, 0), b = torus.faces(0, 1);
+  torus.vertices.conservativeResize(torus.vertices.rows() + 1, 3);
+  torus.vertices.row(torus.vertices.rows() - 1) =
+      0.5 * (torus.vertices.row(a) + torus.vertices.row(b)) + Eigen::RowVector3d(0, 0, 0.3);
+  torus.faces.conservativeResize(torus.faces.rows() + 1, 3);
+  torus.faces.row(torus.faces.rows() - 1) << a, b, int(torus.vertices.rows() - 1);
+  medial::SkeletonByContractionParameters p;
+  p.computeWeights = true;
+  const auto r = medial::skeletonByContraction(torus, p);
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(countGraph(r.skeleton).components, 1);
+  EXPECT_EQ(countGraph(r.skeleton).cycles, 1);
+  for (Eigen::Index j = 0; j < torus.vertices.rows(); ++j) EXPECT_NEAR(r.weights.row(j).sum(), 1.0, 1e-9);
+}
+
 TEST(SkeletonByContraction, BadInputIsRefusedWithAMessage) {
   medial::TriangleMesh empty;
   EXPECT_EQ(medial::skeletonByContraction(empty).error, "the mesh has no triangles");
