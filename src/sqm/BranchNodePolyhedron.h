@@ -1,0 +1,65 @@
+// BranchNodePolyhedron: steps 1 and 2 of SQM for one branch node, in the bind pose (thesis chapter,
+// sections "BNP generation" and "BNP refinement"; CESCG 2014 section 4).
+//
+// Generation: one intersection vertex where each edge of the node leaves its sphere; their convex hull
+// on the sphere (a closed "pillow" of two fans when they are coplanar, as with three edges); each triangle
+// split in six (a vertex at its centre and at each edge's middle); the new vertices projected onto the
+// sphere along a ray: an edge's middle along the mean normal of its two triangles (radially when those
+// cancel, as on a pillow's rim), a centre along the normal of the triangle of its three projected edge
+// middles - the thesis's fix for obtuse triangles, used for every triangle since it equals the face
+// normal on regular ones.
+//
+// Refinement: a Link Intersection Edge (LIE) of two intersection vertices a, b is the chain of edges whose
+// ends are neighbours of both; splitting one of its edges adds one neighbour to a and to b. The valence of
+// every intersection vertex is raised to what its path needs (see SqmMesher), splitting the LIE's
+// representative (first) edge each time, and the LIE is smoothed after each split.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <string>
+#include <vector>
+
+namespace medial {
+
+struct SqmMeshTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using BnpMesh = OpenMesh::TriMesh_ArrayKernelT<SqmMeshTraits>;
+
+enum class LieSmoothing { Averaging, Quaternion, AreaLaplacian, ValencyLaplacian };
+const char* lieSmoothingName(LieSmoothing smoothing);
+bool parseLieSmoothing(const std::string& name, LieSmoothing& smoothing);
+
+struct BranchNodePolyhedron {
+  int node = -1;
+  Eigen::Vector3d centre;
+  double radius = 0;
+  BnpMesh mesh;
+  std::vector<int> neighbourNodes;                    // skeleton node each intersection vertex points to
+  std::vector<BnpMesh::VertexHandle> intersection;    // one per neighbour node, same order
+  std::vector<int> lieSplits;                         // per hull edge (index into hullEdges): splits so far
+  std::vector<std::pair<int, int>> hullEdges;         // pairs of intersection-vertex indices joined by a LIE
+
+  int valence(int i) const { return int(mesh.valence(intersection[size_t(i)])); }
+  // The neighbours of intersection vertex i in counter-clockwise order seen from outside (about the
+  // outward direction from the centre through it).
+  std::vector<BnpMesh::VertexHandle> orderedRing(int i) const;
+};
+
+// Builds the subdivided BNP of a node at `centre` with `radius` whose edges point to `neighbourPositions`
+// (bind pose). Returns false with `error` when two edges leave in the same direction.
+bool generateBnp(int node, const Eigen::Vector3d& centre, double radius,
+                 const std::vector<int>& neighbourNodes, const std::vector<Eigen::Vector3d>& neighbourPositions,
+                 BranchNodePolyhedron& bnp, std::string& error);
+
+// Raises the valence of the intersection vertices: exact[i] = true requires valence == target[i] (the
+// parent's vertex, fixed by the parent's BNP), false requires valence >= target[i]. Vertices are served
+// in order: exact ones first. Returns false with `error` when a requirement cannot be met.
+bool refineBnp(BranchNodePolyhedron& bnp, const std::vector<int>& target, const std::vector<bool>& exact,
+               LieSmoothing smoothing, std::string& error);
+
+}  // namespace medial

@@ -1,0 +1,408 @@
+#include "sqm/SqmMesher.h"
+
+#include "sqm/SkeletonStraightening.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace medial {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+Eigen::Vector3d toEigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
+
+// A unit vector perpendicular to d.
+Eigen::Vector3d perpendicular(const Eigen::Vector3d& d) {
+  const Eigen::Vector3d axis = std::abs(d.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  return d.cross(axis).normalized();
+}
+
+// The skeleton SQM meshes: input checks, documented repairs (self-loops dropped, repeated edges merged),
+// capsule nodes added. `origin` maps every node back to the input node it stands for.
+struct PreparedSkeleton {
+  Skeleton skeleton;
+  std::vector<int> origin;
+};
+
+std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkeleton& out) {
+  if (input.nodes.empty()) return "the skeleton has no nodes";
+  if (input.radii.size() != input.nodes.size()) return "the skeleton has no Radius per node (SQM needs one)";
+  for (const auto& problem : validateSkeleton(input, 1))
+    if (problem.kind != SkeletonProblem::Kind::SelfLoopEdge) return problem.message;
+  Skeleton& s = out.skeleton;
+  s = input;
+  s.edges.clear();
+  std::set<std::pair<int, int>> seen;
+  for (const auto& e : input.edges)
+    if (e[0] != e[1] && seen.insert(std::minmax(e[0], e[1])).second) s.edges.push_back(e);
+  out.origin.resize(s.nodes.size());
+  std::iota(out.origin.begin(), out.origin.end(), 0);
+
+  // Coincident nodes joined by an edge leave no direction to build a tube along.
+  for (const auto& e : s.edges)
+    if ((s.nodes[size_t(e[0])] - s.nodes[size_t(e[1])]).norm() <=
+        1e-9 * std::max(s.radii[size_t(e[0])], s.radii[size_t(e[1])]))
+      return "nodes " + std::to_string(e[0]) + " and " + std::to_string(e[1]) +
+             " are joined by an edge but lie at the same place";
+  // Cycles (extension 5) are not handled yet: find one and say where.
+  std::vector<int> parent(s.nodes.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&parent](int x) {
+    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+    return x;
+  };
+  for (const auto& e : s.edges) {
+    if (find(e[0]) == find(e[1]))
+      return "the skeleton has a cycle (closed by the edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]) +
+             "): cyclic skeletons are not supported yet";
+    parent[size_t(find(e[0]))] = find(e[1]);
+  }
+
+  if (p.capsules) {
+    std::vector<int> degree(s.nodes.size(), 0);
+    std::vector<int> neighbour(s.nodes.size(), -1);
+    for (const auto& e : s.edges) {
+      ++degree[size_t(e[0])];
+      ++degree[size_t(e[1])];
+      neighbour[size_t(e[0])] = e[1];
+      neighbour[size_t(e[1])] = e[0];
+    }
+    const int inputCount = int(s.nodes.size());
+    for (int leaf = 0; leaf < inputCount; ++leaf) {
+      if (degree[size_t(leaf)] != 1) continue;
+      const Eigen::Vector3d d = (s.nodes[size_t(leaf)] - s.nodes[size_t(neighbour[size_t(leaf)])]).normalized();
+      const double r = s.radii[size_t(leaf)];
+      int previous = leaf;
+      const int steps = std::max(1, p.capsuleSteps);
+      for (int k = 1; k <= steps; ++k) {
+        // Extension 4: newRadius = sqrt(r^2 (1 - step^2)); the last node is the capsule's tip.
+        const double step = double(k) / double(steps + 1) * (k == steps ? double(steps + 1) / double(steps) : 1.0);
+        s.nodes.push_back(s.nodes[size_t(leaf)] + step * r * d);
+        s.radii.push_back(std::max(r * std::sqrt(std::max(0.0, 1 - step * step)), 1e-3 * r));
+        if (!s.ellipsoidAxes.empty()) s.ellipsoidAxes.push_back(s.ellipsoidAxes[size_t(leaf)]);
+        out.origin.push_back(leaf);
+        s.edges.push_back({previous, int(s.nodes.size()) - 1});
+        previous = int(s.nodes.size()) - 1;
+      }
+    }
+  }
+  return {};
+}
+
+// The mesh under construction, in the bind pose.
+struct Builder {
+  SqmMesh mesh;
+  std::vector<int> owner;  // node (of the prepared skeleton) per vertex
+  int add(const Eigen::Vector3d& p, int node) {
+    mesh.vertices.push_back(p);
+    owner.push_back(node);
+    return int(mesh.vertices.size()) - 1;
+  }
+};
+
+// The ring of the next node along a straight path: translated onto the plane through `centre` across
+// `direction`, then projected onto the node's sphere.
+std::vector<int> nextRing(Builder& b, const std::vector<int>& ring, const Eigen::Vector3d& centre,
+                          const Eigen::Vector3d& direction, double radius, int node) {
+  std::vector<int> next;
+  for (int v : ring) {
+    const Eigen::Vector3d x = b.mesh.vertices[size_t(v)];
+    const Eigen::Vector3d onPlane = x + (centre - x).dot(direction) * direction;
+    Eigen::Vector3d radial = onPlane - centre;
+    if (radial.squaredNorm() < 1e-24) radial = perpendicular(direction);
+    next.push_back(b.add(centre + radius * radial.normalized(), node));
+  }
+  return next;
+}
+
+void bridge(Builder& b, const std::vector<int>& from, const std::vector<int>& to) {
+  const size_t m = from.size();
+  for (size_t i = 0; i < m; ++i)
+    b.mesh.faces.push_back({from[i], from[(i + 1) % m], to[(i + 1) % m], to[i]});
+}
+
+// Pairs the last ring of a tube with the one-ring of the BNP vertex it reaches (both counter-clockwise
+// about their own outward direction, so they run opposite ways) and adds the closing quads.
+void closeOnRing(Builder& b, const std::vector<int>& ring, const std::vector<int>& target,
+                 const Eigen::Vector3d& pathDirection, RingPairing pairing) {
+  const int m = int(ring.size());
+  auto paired = [&](int i, int offset) { return target[size_t(((offset - i) % m + m) % m)]; };
+  auto position = [&](int v) { return b.mesh.vertices[size_t(v)]; };
+  int best = 0;
+  double bestCost = INFINITY;
+  for (int offset = 0; offset < m; ++offset) {
+    double cost = 0;
+    switch (pairing) {
+      case RingPairing::MinimalTotalDistance:
+        for (int i = 0; i < m; ++i) cost += (position(ring[size_t(i)]) - position(paired(i, offset))).norm();
+        break;
+      case RingPairing::MinimalDistance:
+        cost = (position(ring[0]) - position(paired(0, offset))).norm();
+        break;
+      case RingPairing::MinimalAngle: {
+        const Eigen::Vector3d d = position(paired(0, offset)) - position(ring[0]);
+        cost = std::acos(std::clamp(d.normalized().dot(pathDirection), -1.0, 1.0));
+        break;
+      }
+    }
+    if (cost < bestCost) {
+      bestCost = cost;
+      best = offset;
+    }
+  }
+  for (int i = 0; i < m; ++i)
+    b.mesh.faces.push_back({ring[size_t(i)], ring[size_t((i + 1) % m)], paired(i + 1, best), paired(i, best)});
+}
+
+void fan(Builder& b, const std::vector<int>& ring, int apex, bool reversed) {
+  const size_t m = ring.size();
+  for (size_t i = 0; i < m; ++i) {
+    if (reversed) b.mesh.faces.push_back({ring[(i + 1) % m], ring[i], apex});
+    else b.mesh.faces.push_back({ring[i], ring[(i + 1) % m], apex});
+  }
+}
+
+// A lone node: a cube projected on its sphere (six quads).
+void meshLoneNode(Builder& b, const Eigen::Vector3d& c, double r, int node) {
+  int v[8];
+  for (int i = 0; i < 8; ++i)
+    v[i] = b.add(c + r / std::sqrt(3.0) * Eigen::Vector3d(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1), node);
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) b.mesh.faces.push_back({v[q[0]], v[q[1]], v[q[2]], v[q[3]]});
+}
+
+// Follows the tree from `start` towards `next` through connection nodes; returns them and the end node.
+std::vector<int> pathFrom(const SqmTree& tree, int start, int next, int& end) {
+  std::vector<int> connections;
+  int previous = start, current = next;
+  while (tree.neighbourCount(current) == 2) {
+    connections.push_back(current);
+    const auto around = tree.neighbours(current);
+    const int following = around[0] == previous ? around[1] : around[0];
+    previous = current;
+    current = following;
+  }
+  end = current;
+  return connections;
+}
+
+// Carries `ring` (the former one-ring at `start`'s side) through the connection nodes of a path and
+// returns the last ring.
+std::vector<int> carryAlong(Builder& b, std::vector<int> ring, const std::vector<int>& connections, int start,
+                            const Skeleton& s, const BindPose& pose) {
+  Eigen::Vector3d from = pose.position[size_t(start)];
+  for (int c : connections) {
+    const Eigen::Vector3d direction = (pose.position[size_t(c)] - from).normalized();
+    std::vector<int> next = nextRing(b, ring, pose.position[size_t(c)], direction, s.radii[size_t(c)], c);
+    bridge(b, ring, next);
+    ring = std::move(next);
+    from = pose.position[size_t(c)];
+  }
+  return ring;
+}
+
+std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pose, const SqmParameters& p,
+                     Builder& b, SqmResult& result) {
+  // Linear skeleton (extension 2): an N-vertex ring at the first connection node.
+  if (!tree.hasBranchNode) {
+    const int root = tree.root;
+    if (tree.children[size_t(root)].empty()) {
+      meshLoneNode(b, pose.position[size_t(root)], s.radii[size_t(root)], root);
+      return {};
+    }
+    int end = -1;
+    const std::vector<int> connections = pathFrom(tree, root, tree.children[size_t(root)][0], end);
+    const Eigen::Vector3d d = (pose.position[size_t(end)] - pose.position[size_t(root)]).normalized();
+    // Two nodes only: the ring goes half way, owned by the root.
+    const bool midway = connections.empty();
+    const int ringNode = midway ? root : connections[0];
+    const Eigen::Vector3d centre = midway ? Eigen::Vector3d(0.5 * (pose.position[size_t(root)] + pose.position[size_t(end)]))
+                                          : pose.position[size_t(ringNode)];
+    const double radius = midway ? 0.5 * (s.radii[size_t(root)] + s.radii[size_t(end)]) : s.radii[size_t(ringNode)];
+    const Eigen::Vector3d u = perpendicular(d), v = d.cross(u);
+    std::vector<int> ring;
+    const int n = std::max(3, p.linearRingVertices);
+    for (int j = 0; j < n; ++j) {
+      const double angle = 2 * M_PI * j / n;
+      ring.push_back(b.add(centre + radius * (std::cos(angle) * u + std::sin(angle) * v), ringNode));
+    }
+    fan(b, ring, b.add(pose.position[size_t(root)], root), true);
+    ring = carryAlong(b, ring, std::vector<int>(connections.begin() + (midway ? 0 : 1), connections.end()),
+                      ringNode, s, pose);
+    fan(b, ring, b.add(pose.position[size_t(end)], end), false);
+    return {};
+  }
+
+  // Steps 1-2: BNPs, generated for every branch node, refined parent before child.
+  auto start = Clock::now();
+  std::map<int, BranchNodePolyhedron> bnps;
+  std::string error;
+  for (int k : tree.nodes) {
+    if (!tree.isBranch(k)) continue;
+    std::vector<Eigen::Vector3d> directions;
+    const std::vector<int> around = tree.neighbours(k);
+    for (int m : around) directions.push_back(pose.position[size_t(m)]);
+    if (!generateBnp(k, pose.position[size_t(k)], s.radii[size_t(k)], around, directions, bnps[k], error)) return error;
+  }
+  result.generationSeconds += secondsSince(start);
+  start = Clock::now();
+  // For each branch node and each of its intersection vertices: the path's end node, and which of the end
+  // BNP's intersection vertices faces back (its parent side: index 0) when the end is a branch node.
+  for (int k : tree.nodes) {
+    if (!tree.isBranch(k)) continue;
+    BranchNodePolyhedron& bnp = bnps[k];
+    const int count = int(bnp.intersection.size());
+    std::vector<int> target(static_cast<size_t>(count));
+    std::vector<bool> exact(static_cast<size_t>(count), false);
+    for (int i = 0; i < count; ++i) {
+      target[size_t(i)] = bnp.valence(i);
+      int end = -1;
+      const std::vector<int> connections = pathFrom(tree, k, bnp.neighbourNodes[size_t(i)], end);
+      if (!tree.isBranch(end)) continue;  // a leaf's fan closes any ring
+      const bool towardsParent = tree.parent[size_t(k)] >= 0 && i == 0;
+      if (towardsParent) {
+        // The parent's BNP was refined first: match its vertex on this path exactly.
+        const BranchNodePolyhedron& parentBnp = bnps[end];
+        const int lastBefore = connections.empty() ? k : connections.back();
+        const auto at = std::find(parentBnp.neighbourNodes.begin(), parentBnp.neighbourNodes.end(), lastBefore);
+        exact[size_t(i)] = true;
+        target[size_t(i)] = parentBnp.valence(int(at - parentBnp.neighbourNodes.begin()));
+      } else {
+        target[size_t(i)] = std::max(target[size_t(i)], bnps[end].valence(0));  // at least the child's
+      }
+    }
+    if (!refineBnp(bnp, target, exact, p.smoothing, error)) return error;
+  }
+  result.refinementSeconds += secondsSince(start);
+
+  // Steps 3: joining. BNP vertices other than the intersection vertices go to the mesh; every BNP face
+  // touches an intersection vertex, so none is kept: tubes take their place.
+  start = Clock::now();
+  std::map<int, std::vector<int>> outputId;  // per branch node: output id per BNP vertex (-1 intersection)
+  for (auto& [k, bnp] : bnps) {
+    std::vector<int>& ids = outputId[k];
+    ids.assign(bnp.mesh.n_vertices(), -1);
+    std::set<int> intersections;
+    for (auto v : bnp.intersection) intersections.insert(v.idx());
+    for (auto v : bnp.mesh.vertices())
+      if (!intersections.count(v.idx())) ids[size_t(v.idx())] = b.add(toEigen(bnp.mesh.point(v)), k);
+  }
+  auto ringOf = [&](int k, int i) {
+    std::vector<int> ring;
+    for (auto v : bnps[k].orderedRing(i)) ring.push_back(outputId[k][size_t(v.idx())]);
+    return ring;
+  };
+  for (int k : tree.nodes) {
+    if (!tree.isBranch(k)) continue;
+    const BranchNodePolyhedron& bnp = bnps[k];
+    const size_t first = tree.parent[size_t(k)] >= 0 ? 1 : 0;  // the parent's side is joined by the parent
+    for (size_t i = first; i < bnp.intersection.size(); ++i) {
+      int end = -1;
+      const std::vector<int> connections = pathFrom(tree, k, bnp.neighbourNodes[i], end);
+      std::vector<int> ring = carryAlong(b, ringOf(k, int(i)), connections, k, s, pose);
+      if (tree.isBranch(end)) {
+        const Eigen::Vector3d direction = (pose.position[size_t(end)] - pose.position[size_t(k)]).normalized();
+        closeOnRing(b, ring, ringOf(end, 0), direction, p.pairing);
+      } else {
+        fan(b, ring, b.add(pose.position[size_t(end)], end), false);
+      }
+    }
+  }
+  result.joiningSeconds += secondsSince(start);
+  return {};
+}
+
+// Step 4: back to the input pose by linear blend skinning with the straightening rotations.
+void placeVertices(const Skeleton& s, const SqmTree& tree, const BindPose& pose, Builder& b, size_t firstVertex) {
+  for (size_t v = firstVertex; v < b.mesh.vertices.size(); ++v) {
+    const int k = b.owner[v];
+    const Eigen::Vector3d offset = b.mesh.vertices[v] - pose.position[size_t(k)];
+    Eigen::Vector3d reference = pose.rotation[size_t(k)].conjugate() * offset;
+    if (tree.neighbourCount(k) == 2 && tree.parent[size_t(k)] >= 0) {
+      // A connection node: half its incoming, half its outgoing rotation; back onto its sphere.
+      const Eigen::Vector3d outgoing = pose.rotation[size_t(tree.children[size_t(k)][0])].conjugate() * offset;
+      const Eigen::Vector3d blended = 0.5 * (reference + outgoing);
+      if (blended.squaredNorm() > 1e-24) reference = offset.norm() * blended.normalized();
+    }
+    b.mesh.vertices[v] = s.nodes[size_t(k)] + reference;
+  }
+}
+
+}  // namespace
+
+const char* ringPairingName(RingPairing pairing) {
+  switch (pairing) {
+    case RingPairing::MinimalTotalDistance: return "total-distance";
+    case RingPairing::MinimalDistance: return "distance";
+    case RingPairing::MinimalAngle: return "angle";
+  }
+  return "";
+}
+
+bool parseRingPairing(const std::string& name, RingPairing& pairing) {
+  for (RingPairing r : {RingPairing::MinimalTotalDistance, RingPairing::MinimalDistance, RingPairing::MinimalAngle})
+    if (name == ringPairingName(r)) {
+      pairing = r;
+      return true;
+    }
+  return false;
+}
+
+int SqmMesh::quadCount() const {
+  return int(std::count_if(faces.begin(), faces.end(), [](const std::vector<int>& f) { return f.size() == 4; }));
+}
+
+SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::function<bool(double)>& progress) {
+  SqmResult result;
+  PreparedSkeleton prepared;
+  result.error = prepare(input, p, prepared);
+  if (!result.error.empty()) return result;
+  const Skeleton& s = prepared.skeleton;
+
+  Builder builder;
+  std::vector<bool> done(s.nodes.size(), false);
+  for (int start = 0; start < s.nodeCount(); ++start) {
+    if (done[size_t(start)]) continue;
+    auto clock = Clock::now();
+    const SqmTree tree = buildSqmTree(s, start, s.root);
+    const BindPose pose = straightenSkeleton(s, tree);
+    result.straighteningSeconds += secondsSince(clock);
+    for (int k : tree.nodes) {
+      done[size_t(k)] = true;
+      if (prepared.origin[size_t(k)] != k) continue;  // capsule nodes are not counted
+      (tree.isBranch(k) ? result.branchNodes : tree.isLeaf(k) ? result.leafNodes : result.connectionNodes)++;
+    }
+    const size_t firstVertex = builder.mesh.vertices.size();
+    result.error = meshTree(s, tree, pose, p, builder, result);
+    if (!result.error.empty()) return result;
+    clock = Clock::now();
+    placeVertices(s, tree, pose, builder, firstVertex);
+    result.placementSeconds += secondsSince(clock);
+    if (progress && !progress(double(start + 1) / double(s.nodeCount()))) {
+      result.error = "aborted";
+      return result;
+    }
+  }
+  // Extension 3: an ellipsoid node maps the unit sphere to its ellipsoid.
+  if (!s.ellipsoidAxes.empty())
+    for (size_t v = 0; v < builder.mesh.vertices.size(); ++v) {
+      const int k = builder.owner[v];
+      const Eigen::Vector3d unit = (builder.mesh.vertices[v] - s.nodes[size_t(k)]) / s.radii[size_t(k)];
+      builder.mesh.vertices[v] = s.nodes[size_t(k)] + s.ellipsoidAxes[size_t(k)] * unit;
+    }
+  result.mesh = std::move(builder.mesh);
+  result.mesh.vertexNode.resize(builder.owner.size());
+  for (size_t v = 0; v < builder.owner.size(); ++v) result.mesh.vertexNode[v] = prepared.origin[size_t(builder.owner[v])];
+  return result;
+}
+
+}  // namespace medial

@@ -1,0 +1,67 @@
+// SqmMesher: Skeleton to Quad-dominant Mesh (Bærentzen et al. 2012) with the extensions of the CESCG 2014
+// paper and the thesis chapter: a skeleton with a radius per node becomes a closed manifold mesh of quads,
+// with triangles only in the fans that close leaves.
+//
+// Steps per connected component (section numbers of the CESCG paper): the tree and its root (ext. 1),
+// straightening into the bind pose (4), branch node polyhedra (BNPs) generated and refined in
+// depth-first order from the root (4, see BranchNodePolyhedron), joining: each intersection vertex of a
+// BNP is removed and its former one-ring is carried along the path to the next branch node or leaf, one
+// ring per connection node (translated onto the plane through the node across the path, then projected
+// onto its sphere), closed by a triangle fan at a leaf, or paired with the one-ring of the next BNP's
+// intersection vertex. Finally every vertex goes back from the bind pose to the input pose by linear blend
+// skinning with the straightening rotations (a connection node's ring blends its incoming and outgoing
+// rotations half and half, so that it bisects the bend, and is put back on its sphere).
+// A skeleton without branch nodes gets an N-vertex ring at its first connection node (ext. 2); a lone node
+// becomes a sphere of six quads (a cube projected on it); leaves end in capsules on request (ext. 4,
+// radius sqrt(r^2 (1 - step^2)) at distance step * r beyond the leaf); ellipsoid nodes map their vertices
+// by their `EllipsoidAxes` (ext. 3).
+// Not yet: cyclic skeletons (ext. 5) and the Catmull-Clark refinement with cone projection (an error says
+// so for cycles).
+#pragma once
+
+#include "skeleton/Skeleton.h"
+#include "sqm/BranchNodePolyhedron.h"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace medial {
+
+// How the last ring of a tube is paired with the one-ring of the BNP it reaches (thesis, "Branch node
+// termination"): the rotation minimizing the total Euclidean distance (default), the first vertex's
+// nearest vertex, or the vertex whose direction is closest to the path's direction.
+enum class RingPairing { MinimalTotalDistance, MinimalDistance, MinimalAngle };
+const char* ringPairingName(RingPairing pairing);
+bool parseRingPairing(const std::string& name, RingPairing& pairing);
+
+struct SqmParameters {
+  LieSmoothing smoothing = LieSmoothing::Quaternion;
+  RingPairing pairing = RingPairing::MinimalTotalDistance;
+  int linearRingVertices = 8;  // N of extension 2
+  bool capsules = false;       // extension 4
+  int capsuleSteps = 4;        // nodes added beyond each leaf for its capsule
+};
+
+struct SqmMesh {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::vector<int>> faces;  // quads and triangles, outward oriented
+  std::vector<int> vertexNode;          // the skeleton node each vertex belongs to (-1: a capsule node)
+  int quadCount() const;
+};
+
+struct SqmResult {
+  SqmMesh mesh;
+  int branchNodes = 0, connectionNodes = 0, leafNodes = 0;
+  double straighteningSeconds = 0, generationSeconds = 0, refinementSeconds = 0, joiningSeconds = 0,
+         placementSeconds = 0;
+  std::string error;
+  bool ok() const { return error.empty(); }
+};
+
+SqmResult sqmMesh(const Skeleton& skeleton, const SqmParameters& parameters = {},
+                  const std::function<bool(double)>& progress = {});
+
+}  // namespace medial
