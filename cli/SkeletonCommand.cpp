@@ -4,11 +4,11 @@
 #include "CommandLine.h"
 #include "Progress.h"
 #include "ReadInput.h"
+#include "WriteOutput.h"
 #include "Timings.h"
 
 #include "MedialErrorCollector.h"
 #include "vtkMedialContractionSkeleton.h"
-#include "vtkMedialPolyDataWriter.h"
 #include "vtkMedialRigWriter.h"
 
 #include <vtkPolyData.h>
@@ -17,24 +17,6 @@
 #include <cstdio>
 
 namespace medial::cli {
-
-namespace {
-
-void writePolyData(vtkPolyData* data, const std::string& path) {
-  auto writer = vtkSmartPointer<vtkMedialPolyDataWriter>::New();
-  auto errors = medial::ErrorCollector::Watch(writer);
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(data);
-  if (!writer->Write() || errors->HasErrors()) throw Failure(errors->Joined());
-}
-
-void requireWritableExtension(const std::string& path, const char* option) {
-  if (!vtkMedialPolyDataWriter::CanWriteFile(path.c_str()))
-    throw UsageError(std::string(option) + " must end in one of " + vtkMedialPolyDataWriter::GetExtensions() + ": " +
-                     path);
-}
-
-}  // namespace
 
 int runSkeleton(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(

@@ -25,7 +25,6 @@ int notYetAvailable(const char* name) {
 }
 
 int runCenterline(const std::vector<std::string>&) { return notYetAvailable("centerline"); }
-int runSqm(const std::vector<std::string>&) { return notYetAvailable("sqm"); }
 int runSketch(const std::vector<std::string>&) { return notYetAvailable("sketch"); }
 
 }  // namespace
@@ -56,9 +55,21 @@ const std::vector<Command>& commands() {
        "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] "
        "[--profile PROFILE.csv]\n",
        runCenterline},
-      {"sqm", "quad-dominant tube mesh of a skeleton with radii (not yet available)",
-       "usage: medial sqm SKELETON.vtp|SKELETON.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--capsule] "
-       "[--subdivide K]\n",
+      {"sqm", "quad-dominant tube mesh of a skeleton with radii (SQM)",
+       "usage: medial sqm SKELETON.vtp|SKELETON.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME]\n"
+       "                  [--capsule] [--ring-vertices N] [--subdivide K] [--quiet] [--timings]\n\n"
+       "Turns a skeleton with a Radius per node into a closed manifold mesh of quads (triangles only where\n"
+       "leaves close), by SQM with the extensions of the CESCG 2014 paper (re-rooting, linear skeletons,\n"
+       "ellipsoid nodes from EllipsoidAxes, capsules). Every component is meshed; cycles are not supported yet.\n"
+       "  -o, --output MESH         the mesh (.vtp .vtk .obj .ply .stl), with point data SkeletonNode\n"
+       "  --smoothing NAME          LIE smoothing: quaternion (default), averaging, area-laplacian,\n"
+       "                            valency-laplacian\n"
+       "  --pairing NAME            ring pairing at branch nodes: total-distance (default), distance, angle\n"
+       "  --capsule                 close leaves with capsules instead of triangle fans\n"
+       "  --ring-vertices N         vertices around a skeleton without branch nodes (default 8)\n"
+       "  --subdivide K             Catmull-Clark levels: not available yet (K > 0 fails)\n"
+       "  --quiet                   no progress line\n"
+       "  --timings                 print stage times as JSON on stdout\n",
        runSqm},
       {"sketch", "skeleton and inflated mesh of a closed 2-D stroke (not yet available)",
        "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp]\n", runSketch},

@@ -128,11 +128,20 @@ void smoothLie(BranchNodePolyhedron& bnp, const std::vector<BnpMesh::VertexHandl
   const size_t last = chain.size() - 1;
   switch (smoothing) {
     case LieSmoothing::Quaternion: {
-      // Equal angles along the arc from the first to the last vertex of the LIE.
+      // Equal angles along the arc from the first to the last vertex of the LIE. The axis is the chain's
+      // mean turning axis, not the shortest rotation from first to last: on a pillow the two ends are
+      // antipodal and only the chain says which half circle the LIE runs along.
       const Eigen::Vector3d first = toEigen(mesh.point(chain.front())) - c, end = toEigen(mesh.point(chain.back())) - c;
-      const Eigen::AngleAxisd full(Eigen::Quaterniond::FromTwoVectors(first, end));
+      Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+      for (size_t i = 0; i < last; ++i)
+        axis += (toEigen(mesh.point(chain[i])) - c).cross(toEigen(mesh.point(chain[i + 1])) - c);
+      if (axis.squaredNorm() < 1e-30) break;
+      axis.normalize();
+      const Eigen::Vector3d f = first - first.dot(axis) * axis, e = end - end.dot(axis) * axis;
+      double angle = std::atan2(f.cross(e).dot(axis), f.dot(e));
+      if (angle < 0) angle += 2 * M_PI;
       for (size_t i = 1; i < last; ++i) {
-        const Eigen::AngleAxisd step(full.angle() * double(i) / double(last), full.axis());
+        const Eigen::AngleAxisd step(angle * double(i) / double(last), axis);
         mesh.set_point(chain[i], toMesh(onSphere(c + step * first)));
       }
       break;
@@ -230,7 +239,9 @@ bool generateBnp(int node, const Eigen::Vector3d& centre, double radius, const s
     faceNormal.push_back((q[size_t(f[1])] - q[size_t(f[0])]).cross(q[size_t(f[2])] - q[size_t(f[0])]).normalized());
     for (int c = 0; c < 3; ++c) {
       const auto key = std::minmax(f[size_t(c)], f[size_t((c + 1) % 3)]);
-      edgeNormal[{key.first, key.second}] += faceNormal.back();
+      // Eigen vectors start uninitialized: the first face sets the sum, the second adds to it.
+      const auto [at, fresh] = edgeNormal.try_emplace({key.first, key.second}, faceNormal.back());
+      if (!fresh) at->second += faceNormal.back();
     }
   }
   for (size_t i = 0; i < q.size(); ++i) bnp.intersection.push_back(bnp.mesh.add_vertex(toMesh(q[i])));

@@ -1,0 +1,71 @@
+// `medial sqm SKELETON.vtp|.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME] [--capsule]
+//              [--ring-vertices N] [--subdivide K]`
+#include "Commands.h"
+#include "CommandLine.h"
+#include "Progress.h"
+#include "ReadInput.h"
+#include "Timings.h"
+#include "WriteOutput.h"
+
+#include "MedialErrorCollector.h"
+#include "vtkMedialSQM.h"
+
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <cstdio>
+
+namespace medial::cli {
+
+int runSqm(const std::vector<std::string>& args) {
+  const ParsedArgs parsed = parseArgs(
+      args, {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide"},
+             {"--capsule", "--quiet", "--timings"}});
+  if (parsed.positional.size() != 1) throw UsageError("sqm needs exactly one SKELETON file");
+  const std::string input = parsed.positional[0];
+  const std::string output = parsed.value("-o", parsed.value("--output"));
+  if (output.empty()) throw UsageError("sqm needs -o MESH.vtp|.obj|.ply");
+  requireWritableExtension(output, "-o");
+
+  auto filter = vtkSmartPointer<vtkMedialSQM>::New();
+  {
+    auto errors = medial::ErrorCollector::Watch(filter);
+    if (parsed.has("--smoothing")) filter->SetSmoothing(parsed.value("--smoothing"));
+    if (parsed.has("--pairing")) filter->SetPairing(parsed.value("--pairing"));
+    if (errors->HasErrors()) throw UsageError(errors->Joined());
+  }
+  if (parsed.has("--ring-vertices")) {
+    const double n = parseNumbers(parsed.value("--ring-vertices"), 1, "--ring-vertices")[0];
+    if (!(n >= 3) || n != int(n)) throw UsageError("--ring-vertices must be a whole number >= 3");
+    filter->SetLinearRingVertices(int(n));
+  }
+  if (parsed.has("--subdivide")) {
+    const double k = parseNumbers(parsed.value("--subdivide"), 1, "--subdivide")[0];
+    if (!(k >= 0) || k != int(k)) throw UsageError("--subdivide must be a whole number >= 0");
+    if (k > 0) throw Failure("--subdivide: the Catmull-Clark refinement is not available yet");
+  }
+  filter->SetCapsules(parsed.has("--capsule"));
+
+  Timings timings;
+  ProgressLine progress(parsed.has("--quiet"));
+  timings.start("read");
+  const vtkSmartPointer<vtkDataObject> data = readInput(input, progress);
+  vtkPolyData* skeleton = vtkPolyData::SafeDownCast(data);
+  if (!skeleton || skeleton->GetNumberOfPoints() == 0) throw Failure(input + ": not a skeleton (no nodes)");
+
+  timings.start("sqm");
+  auto errors = medial::ErrorCollector::Watch(filter);
+  filter->SetInputData(skeleton);
+  progress.watch(filter, "tube mesh of " + input);
+  filter->Update();
+  progress.finish();
+  if (errors->HasErrors()) throw Failure(input + ": " + errors->Joined());
+
+  timings.start("write");
+  writePolyData(filter->GetOutput(), output);
+  timings.stop();
+  if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
+  return kSuccess;
+}
+
+}  // namespace medial::cli

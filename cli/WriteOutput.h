@@ -1,0 +1,16 @@
+// Writing a command's polydata output, shared by the commands.
+#pragma once
+
+#include <string>
+
+class vtkPolyData;
+
+namespace medial::cli {
+
+// Writes by extension through vtkMedialPolyDataWriter (atomic); throws Failure with the writer's errors.
+void writePolyData(vtkPolyData* data, const std::string& path);
+
+// Throws UsageError naming `option` when vtkMedialPolyDataWriter cannot write `path`'s extension.
+void requireWritableExtension(const std::string& path, const char* option);
+
+}  // namespace medial::cli

@@ -1,0 +1,54 @@
+/**
+ * @class vtkMedialSQM
+ * @brief Skeleton to quad-dominant mesh (SQM, with the extensions of the CESCG 2014 paper): a skeleton
+ * with `Radius` per node becomes a closed manifold mesh of quads, triangles only in the leaf fans.
+ *
+ * Input: a skeleton (GUIDE §2: nodes, 2-point lines, `Radius`, optional `EllipsoidAxes` and `Root`).
+ * Output: a polygonal mesh of quads and triangles (not triangulated), outward oriented, with point data
+ * `SkeletonNode` (int: the input node each vertex belongs to). Several components are meshed each.
+ * Repairs: self-loop edges are dropped and repeated edges merged. Errors (empty output): no nodes, no
+ * Radius, a radius <= 0 or NaN coordinates, coincident joined nodes, two edges leaving a node in the same
+ * direction, a cycle (cyclic skeletons are not supported yet).
+ * Implements medial::sqmMesh (src/sqm/SqmMesher.h).
+ */
+#pragma once
+
+#include "MedialFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string>
+
+class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
+ public:
+  static vtkMedialSQM* New();
+  vtkTypeMacro(vtkMedialSQM, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// LIE smoothing after each split: quaternion (default), averaging, area-laplacian, valency-laplacian.
+  void SetSmoothing(const std::string& name);
+  std::string GetSmoothing() const { return this->Smoothing; }
+  /// Pairing of a tube's last ring with a polyhedron: total-distance (default), distance, angle.
+  void SetPairing(const std::string& name);
+  std::string GetPairing() const { return this->Pairing; }
+  /// N: vertices of the ring of a skeleton without branch nodes (default 8).
+  vtkSetClampMacro(LinearRingVertices, int, 3, 1024);
+  vtkGetMacro(LinearRingVertices, int);
+  /// Close leaves with capsules (hemispheres) instead of triangle fans (default off).
+  vtkSetMacro(Capsules, bool);
+  vtkGetMacro(Capsules, bool);
+  vtkBooleanMacro(Capsules, bool);
+
+ protected:
+  vtkMedialSQM() = default;
+  ~vtkMedialSQM() override = default;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+ private:
+  vtkMedialSQM(const vtkMedialSQM&) = delete;
+  void operator=(const vtkMedialSQM&) = delete;
+
+  std::string Smoothing = "quaternion";
+  std::string Pairing = "total-distance";
+  int LinearRingVertices = 8;
+  bool Capsules = false;
+};
