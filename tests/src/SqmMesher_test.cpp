@@ -1,0 +1,212 @@
+// SqmMesher: closed quad-dominant manifolds from skeletons, the extensions, and bad input.
+#include "mesh/MeshTopology.h"
+#include "sqm/SqmMesher.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+medial::Skeleton ySkeleton() {  // a planar Y: three arms of two edges around a root branch node
+  medial::Skeleton s;
+  s.nodes = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {-0.5, 1, 0}, {-1, 2, 0}, {-0.5, -1, 0}, {-1, -2, 0}};
+  s.radii = {0.4, 0.3, 0.3, 0.3, 0.3, 0.3, 0.3};
+  s.edges = {{0, 1}, {1, 2}, {0, 3}, {3, 4}, {0, 5}, {5, 6}};
+  s.root = 0;
+  return s;
+}
+
+medial::Skeleton starSkeleton() {  // six arms along the axes, a second branch node at the end of one
+  medial::Skeleton s;
+  s.nodes = {{0, 0, 0}};
+  s.radii = {0.5};
+  const Eigen::Vector3d directions[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const auto& d : directions)
+    for (int k = 1; k <= 3; ++k) {
+      s.nodes.push_back(d * k * 0.7);
+      s.radii.push_back(0.25);
+      s.edges.push_back({k == 1 ? 0 : s.nodeCount() - 2, s.nodeCount() - 1});
+    }
+  for (const Eigen::Vector3d& side : {Eigen::Vector3d(0, 0.8, 0), Eigen::Vector3d(0, 0, 0.8)}) {
+    s.nodes.push_back(s.nodes[3] + side + Eigen::Vector3d(0.3, 0, 0));
+    s.radii.push_back(0.2);
+    s.edges.push_back({3, s.nodeCount() - 1});
+  }
+  s.root = 0;
+  return s;
+}
+
+medial::Skeleton wormSkeleton() {
+  medial::Skeleton s;
+  for (int i = 0; i < 23; ++i) {
+    s.nodes.push_back({i * 0.5, std::sin(i * 0.4), 0});
+    s.radii.push_back(0.3);
+    if (i > 0) s.edges.push_back({i - 1, i});
+  }
+  return s;
+}
+
+medial::MeshTopology topologyOf(const medial::SqmMesh& mesh) {
+  std::vector<std::vector<int64_t>> faces;
+  for (const auto& f : mesh.faces) faces.emplace_back(f.begin(), f.end());
+  return medial::computeMeshTopology(int64_t(mesh.vertices.size()), faces);
+}
+
+// The invariants of the issue that hold for every skeleton: a closed 2-manifold per component with
+// Euler characteristic 2 (trees), finite coordinates, triangles only in leaf fans, vertices on their
+// node's sphere except the fan apexes at the leaves' centres.
+void expectClosedQuadDominant(const medial::Skeleton& s, const medial::SqmResult& r, int components = 1) {
+  ASSERT_TRUE(r.ok()) << r.error;
+  const medial::MeshTopology t = topologyOf(r.mesh);
+  EXPECT_EQ(t.borderEdges, 0);
+  EXPECT_EQ(t.nonManifoldEdges, 0);
+  EXPECT_EQ(t.degenerateFaces, 0);
+  EXPECT_EQ(t.unusedVertices, 0);
+  EXPECT_EQ(t.components, components);
+  EXPECT_EQ(t.eulerCharacteristic, 2 * components);
+  std::vector<int> degree(s.nodes.size(), 0);
+  for (const auto& e : s.edges) {
+    ++degree[size_t(e[0])];
+    ++degree[size_t(e[1])];
+  }
+  for (size_t v = 0; v < r.mesh.vertices.size(); ++v) {
+    ASSERT_TRUE(r.mesh.vertices[v].allFinite()) << v;
+    const int node = r.mesh.vertexNode[v];
+    const double distance = (r.mesh.vertices[v] - s.nodes[size_t(node)]).norm();
+    if (distance > 1e-9) {
+      EXPECT_NEAR(distance, s.radii[size_t(node)], 1e-9) << "vertex " << v << " node " << node;
+    }
+  }
+  for (const auto& f : r.mesh.faces) {
+    if (f.size() == 4) continue;
+    ASSERT_EQ(f.size(), 3u);
+    bool hasLeafApex = false;
+    for (int v : f)
+      hasLeafApex |= degree[size_t(r.mesh.vertexNode[size_t(v)])] <= 1 &&
+                     (r.mesh.vertices[size_t(v)] - s.nodes[size_t(r.mesh.vertexNode[size_t(v)])]).norm() < 1e-9;
+    EXPECT_TRUE(hasLeafApex) << "a triangle away from the leaves";
+  }
+}
+
+}  // namespace
+
+TEST(SqmMesher, PlanarYIsClosedAndQuadDominant) {
+  const auto s = ySkeleton();
+  const auto r = medial::sqmMesh(s);
+  expectClosedQuadDominant(s, r);
+  EXPECT_EQ(r.branchNodes, 1);
+  EXPECT_EQ(r.leafNodes, 3);
+}
+
+TEST(SqmMesher, EverySmoothingAndPairingGivesAClosedManifold) {
+  const auto s = starSkeleton();
+  for (auto smoothing : {medial::LieSmoothing::Quaternion, medial::LieSmoothing::Averaging,
+                         medial::LieSmoothing::AreaLaplacian, medial::LieSmoothing::ValencyLaplacian})
+    for (auto pairing : {medial::RingPairing::MinimalTotalDistance, medial::RingPairing::MinimalDistance,
+                         medial::RingPairing::MinimalAngle}) {
+      medial::SqmParameters p;
+      p.smoothing = smoothing;
+      p.pairing = pairing;
+      SCOPED_TRACE(std::string(medial::lieSmoothingName(smoothing)) + " / " + medial::ringPairingName(pairing));
+      expectClosedQuadDominant(s, medial::sqmMesh(s, p));
+    }
+}
+
+TEST(SqmMesher, LinearSkeletonGetsNVertexRings) {
+  const auto s = wormSkeleton();
+  medial::SqmParameters p;
+  p.linearRingVertices = 6;
+  const auto r = medial::sqmMesh(s, p);
+  expectClosedQuadDominant(s, r);
+  // 21 connection nodes, 6 vertices each, two fan apexes; 20 rings of quads and two fans.
+  EXPECT_EQ(r.mesh.vertices.size(), 21u * 6 + 2);
+  EXPECT_EQ(r.mesh.quadCount(), 20 * 6);
+  EXPECT_EQ(r.mesh.faces.size(), 20u * 6 + 12);
+}
+
+TEST(SqmMesher, RootThatIsALeafIsMovedToABranchNode) {
+  auto s = ySkeleton();
+  s.root = 2;  // a leaf
+  const auto r = medial::sqmMesh(s);
+  expectClosedQuadDominant(s, r);
+}
+
+TEST(SqmMesher, LoneNodesTwoNodeSegmentsAndComponents) {
+  medial::Skeleton s = ySkeleton();
+  s.nodes.push_back({10, 0, 0});  // a lone node
+  s.radii.push_back(1);
+  s.nodes.push_back({0, 10, 0});  // a two-node segment
+  s.nodes.push_back({0, 12, 0});
+  s.radii.push_back(0.5);
+  s.radii.push_back(0.5);
+  s.edges.push_back({8, 9});
+  const auto r = medial::sqmMesh(s);
+  ASSERT_TRUE(r.ok()) << r.error;
+  const medial::MeshTopology t = topologyOf(r.mesh);
+  EXPECT_EQ(t.components, 3);
+  EXPECT_EQ(t.eulerCharacteristic, 6);
+  EXPECT_EQ(t.borderEdges, 0);
+  EXPECT_EQ(t.nonManifoldEdges, 0);
+}
+
+TEST(SqmMesher, CapsulesRoundTheLeaves) {
+  const auto s = ySkeleton();
+  medial::SqmParameters p;
+  p.capsules = true;
+  const auto r = medial::sqmMesh(s, p);
+  ASSERT_TRUE(r.ok()) << r.error;
+  const medial::MeshTopology t = topologyOf(r.mesh);
+  EXPECT_EQ(t.borderEdges + t.nonManifoldEdges, 0);
+  EXPECT_EQ(t.eulerCharacteristic, 2);
+  // Each tip lies one radius beyond its leaf, along the arm: (2 + 0.3, 0, 0) for the first arm.
+  double farthest = 0;
+  for (const auto& v : r.mesh.vertices) farthest = std::max(farthest, v.x());
+  EXPECT_NEAR(farthest, 2.3, 1e-9);
+}
+
+TEST(SqmMesher, EllipsoidNodesScaleTheirVertices) {
+  auto s = wormSkeleton();
+  for (size_t k = 0; k < s.nodes.size(); ++k) s.ellipsoidAxes.push_back(Eigen::Vector3d(0.3, 0.3, 0.9).asDiagonal());
+  const auto r = medial::sqmMesh(s);
+  ASSERT_TRUE(r.ok()) << r.error;
+  double zExtent = 0, yExtentAtMiddle = 0;
+  for (size_t v = 0; v < r.mesh.vertices.size(); ++v) {
+    zExtent = std::max(zExtent, std::abs(r.mesh.vertices[v].z()));
+    if (r.mesh.vertexNode[v] == 11) yExtentAtMiddle = std::max(yExtentAtMiddle, std::abs(r.mesh.vertices[v].y() - s.nodes[11].y()));
+  }
+  EXPECT_GT(zExtent, 0.8);             // three times the radius across z
+  EXPECT_LT(yExtentAtMiddle, 0.3 + 1e-9);
+}
+
+TEST(SqmMesher, BadInputIsRefusedOrRepaired) {
+  EXPECT_EQ(medial::sqmMesh(medial::Skeleton()).error, "the skeleton has no nodes");
+  auto noRadius = ySkeleton();
+  noRadius.radii.clear();
+  EXPECT_EQ(medial::sqmMesh(noRadius).error, "the skeleton has no Radius per node (SQM needs one)");
+  auto zeroRadius = ySkeleton();
+  zeroRadius.radii[3] = 0;
+  EXPECT_NE(medial::sqmMesh(zeroRadius).error.find("node 3"), std::string::npos);
+  auto nan = ySkeleton();
+  nan.nodes[2].x() = NAN;
+  EXPECT_NE(medial::sqmMesh(nan).error.find("node 2"), std::string::npos);
+  auto coincident = ySkeleton();
+  coincident.nodes[2] = coincident.nodes[1];
+  EXPECT_EQ(medial::sqmMesh(coincident).error, "nodes 1 and 2 are joined by an edge but lie at the same place");
+  auto cycle = ySkeleton();
+  cycle.edges.push_back({2, 4});
+  EXPECT_NE(medial::sqmMesh(cycle).error.find("cyclic skeletons are not supported yet"), std::string::npos);
+  auto sameDirection = ySkeleton();
+  sameDirection.nodes.push_back({2, 0, 0});  // a second edge from node 0 along +x
+  sameDirection.radii.push_back(0.3);
+  sameDirection.edges.push_back({0, 7});
+  sameDirection.nodes[1] = {1, 0, 0};
+  sameDirection.edges[1] = {1, 2};
+  EXPECT_NE(medial::sqmMesh(sameDirection).error.find("same direction"), std::string::npos);
+
+  // Repairs: a self-loop is dropped, a repeated edge merged.
+  auto repaired = ySkeleton();
+  repaired.edges.push_back({3, 3});
+  repaired.edges.push_back({1, 0});
+  expectClosedQuadDominant(ySkeleton(), medial::sqmMesh(repaired));
+}
