@@ -90,7 +90,7 @@ INSTANTIATE_TEST_SUITE_P(Data, SqmSamples,
                                            SampleSkeleton{"sqm/quadruped.vtp", 0.9, 294},
                                            SampleSkeleton{"sqm/humanoid.vtp", 0.7, 378},
                                            SampleSkeleton{"sqm/fish.vtp", 0.6}, SampleSkeleton{"sqm/leafroot.vtp", 0.5},
-                                           SampleSkeleton{"figure.vtp", 0.7, 4}, SampleSkeleton{"hand.swc", 0.65, 43})),
+                                           SampleSkeleton{"figure.vtp", 0.7, 4}, SampleSkeleton{"hand.swc", 0.65, 43}),
                          [](const ::testing::TestParamInfo<SampleSkeleton>& info) {
                            std::string name = info.param.path;
                            for (char& c : name)
