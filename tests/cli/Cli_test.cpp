@@ -41,7 +41,9 @@ TEST(Cli, UsageErrorsExitTwo) {
                            "render in.off -o out.png --bogus", "render in.off -o out.jpg",
                            "render in.off -o out.png --camera 1", "render in.off -o", "skeleton in.off",
                            "skeleton in.off -o out.png", "skeleton in.off -o s.vtp --nodes -3",
-                           "skeleton in.off -o s.vtp --solver magic", "skeleton a.off b.off -o s.vtp"}) {
+                           "skeleton in.off -o s.vtp --solver magic", "skeleton a.off b.off -o s.vtp",
+                           "sqm s.vtp", "sqm s.vtp -o m.png", "sqm s.vtp -o m.vtp --smoothing median",
+                           "sqm s.vtp -o m.vtp --ring-vertices 2", "sqm s.vtp -o m.vtp --pairing best"}) {
     auto r = runCommand(medialCommand(args));
     EXPECT_EQ(r.exitCode, 2) << "medial " << args << "\n" << r.err;
     EXPECT_FALSE(r.err.empty()) << "medial " << args;
@@ -49,7 +51,7 @@ TEST(Cli, UsageErrorsExitTwo) {
 }
 
 TEST(Cli, CommandsNotYetAvailableExitOne) {
-  for (const char* command : {"centerline", "sqm", "sketch"}) {
+  for (const char* command : {"centerline", "sketch"}) {
     auto r = runCommand(medialCommand(std::string(command) + " x -o y"));
     EXPECT_EQ(r.exitCode, 1) << command;
     EXPECT_NE(r.err.find("not yet available"), std::string::npos) << r.err;
@@ -107,6 +109,29 @@ TEST(Cli, SkeletonWritesRigsAsGlbAndFbx) {
     file.read(head.data(), std::streamsize(head.size()));
     EXPECT_EQ(head, magic) << name;
   }
+}
+
+TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
+  const std::string dir = scratchDir("cli-sqm");
+  auto r = runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + dir +
+                                    "/hand.obj --capsule --smoothing averaging --timings --quiet"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("\"sqm\""), std::string::npos) << r.out;
+  std::ifstream obj(dir + "/hand.obj");
+  std::string line;
+  int quads = 0;
+  while (std::getline(obj, line))
+    if (line.rfind("f ", 0) == 0 && std::count(line.begin(), line.end(), ' ') == 4) ++quads;
+  EXPECT_GT(quads, 100);
+  // A mesh is no skeleton; a cyclic skeleton is not supported yet; subdivision is not available yet.
+  auto mesh = runCommand(medialCommand("sqm " + dataPath("meshes/torus.off") + " -o " + dir + "/t.vtp --quiet"));
+  EXPECT_EQ(mesh.exitCode, 1);
+  EXPECT_EQ(lineCount(mesh.err), 1) << mesh.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/t.vtp"));
+  auto subdivide = runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + dir +
+                                            "/h.vtp --subdivide 2 --quiet"));
+  EXPECT_EQ(subdivide.exitCode, 1);
+  EXPECT_NE(subdivide.err.find("not available yet"), std::string::npos) << subdivide.err;
 }
 
 TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {

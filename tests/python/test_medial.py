@@ -66,6 +66,21 @@ class MedialPython(unittest.TestCase):
         with open(rig_path, "rb") as rig:
             self.assertEqual(rig.read(4), b"glTF")
 
+    def test_sqm_meshes_a_skeleton_file(self):
+        reader = medial.vtkMedialReader()
+        data = os.path.join(os.environ.get("MEDIAL_SOURCE_DIR", "."), "data")
+        reader.SetFileName(os.path.join(data, "skeletons", "figure.vtp"))
+        sqm = medial.vtkMedialSQM()
+        sqm.SetInputConnection(reader.GetOutputPort())
+        sqm.SetSmoothing("averaging")
+        sqm.CapsulesOn()
+        sqm.Update()
+        mesh = sqm.GetOutput()
+        self.assertGreater(mesh.GetNumberOfPolys(), 100)
+        quads = sum(1 for c in range(mesh.GetNumberOfCells()) if mesh.GetCell(c).GetNumberOfPoints() == 4)
+        self.assertGreater(quads, mesh.GetNumberOfCells() // 2)
+        self.assertIsNotNone(mesh.GetPointData().GetArray("SkeletonNode"))
+
     def test_bad_file_gives_error_and_empty_output(self):
         reader = medial.vtkMedialReader()
         reader.SetFileName(os.path.join(tempfile.gettempdir(), "does-not-exist.off"))
