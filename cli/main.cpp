@@ -60,7 +60,7 @@ const std::vector<Command>& commands() {
        "                  [--capsule] [--ring-vertices N] [--subdivide K] [--quiet] [--timings]\n\n"
        "Turns a skeleton with a Radius per node into a closed manifold mesh of quads (triangles only where\n"
        "leaves close), by SQM with the extensions of the CESCG 2014 paper (re-rooting, linear skeletons,\n"
-       "ellipsoid nodes from EllipsoidAxes, capsules). Every component is meshed; cycles are not supported yet.\n"
+       "ellipsoid nodes from EllipsoidAxes, capsules, cycles). Every component is meshed.\n"
        "  -o, --output MESH         the mesh (.vtp .vtk .obj .ply .stl), with point data SkeletonNode\n"
        "  --smoothing NAME          LIE smoothing: quaternion (default), averaging, area-laplacian,\n"
        "                            valency-laplacian\n"

@@ -7,6 +7,8 @@
     quadruped.vtp   150 nodes: spine, neck, head, ears, tail, four legs with toes
     fish.vtp        ellipsoid nodes (EllipsoidAxes), root at the head, a leaf (extensions 1 and 3)
     leafroot.vtp    a branching skeleton whose Root is a leaf (extension 1)
+    cycle.vtp       14 nodes: a loop of 10 with a tail of 4 (extension 5)
+    pretzel.vtp     34 nodes, three independent cycles: a loop crossed by two chords at different heights
 """
 import math
 import os
@@ -174,6 +176,30 @@ def leafroot():
     return b.polydata(tip)
 
 
+def cycle():
+    b = Builder()
+    ring = [b.node((1.2 * math.cos(2 * math.pi * k / 10), 1.2 * math.sin(2 * math.pi * k / 10), 0), 0.25) for k in range(10)]
+    for k in range(10):
+        b.edges.append((ring[k], ring[(k + 1) % 10]))
+    b.chain(ring[0], [(1.2 + 0.5 * (k + 1), 0, 0) for k in range(4)], [0.22, 0.2, 0.18, 0.15])
+    return b.polydata(ring[0])
+
+
+def pretzel():
+    b = Builder()
+    ring = [b.node((2 * math.cos(2 * math.pi * k / 24), 2 * math.sin(2 * math.pi * k / 24), 0), 0.2) for k in range(24)]
+    for k in range(24):
+        b.edges.append((ring[k], ring[(k + 1) % 24]))
+    for start, end, height in ((0, 12, 0.45), (6, 18, -0.45)):
+        a, z = ring[start], ring[end]
+        pa, pz = b.nodes[a][:3], b.nodes[z][:3]
+        points = [tuple(pa[i] + (pz[i] - pa[i]) * (k + 1) / 6.0 for i in range(2)) + (height * math.sin(math.pi * (k + 1) / 6.0),)
+                  for k in range(5)]
+        last = b.chain(a, points, [0.16] * 5)
+        b.edges.append((last, z))
+    return b.polydata(ring[0])
+
+
 def write_vtp(polydata, path):
     writer = vtk.vtkXMLPolyDataWriter()
     writer.SetFileName(path)
@@ -186,7 +212,7 @@ if __name__ == "__main__":
     folder = os.path.join(HERE, "skeletons", "sqm")
     os.makedirs(folder, exist_ok=True)
     for name, make in (("worm", worm), ("humanoid", humanoid), ("octopus", octopus), ("quadruped", quadruped),
-                       ("fish", fish), ("leafroot", leafroot)):
+                       ("fish", fish), ("leafroot", leafroot), ("cycle", cycle), ("pretzel", pretzel)):
         skeleton = make()
         write_vtp(skeleton, os.path.join(folder, name + ".vtp"))
         print("%-10s %4d nodes" % (name, skeleton.GetNumberOfPoints()))

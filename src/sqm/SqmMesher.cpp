@@ -1,5 +1,6 @@
 #include "sqm/SqmMesher.h"
 
+#include "sqm/CycleClosing.h"
 #include "sqm/SkeletonStraightening.h"
 
 #include <Eigen/Geometry>
@@ -31,6 +32,8 @@ Eigen::Vector3d perpendicular(const Eigen::Vector3d& d) {
 struct PreparedSkeleton {
   Skeleton skeleton;
   std::vector<int> origin;
+  std::vector<bool> pseudo;                   // the pseudo children of cut cycle edges (no geometry)
+  std::vector<std::pair<int, int>> cycleCuts;  // pseudo child at one end, at the other (extension 5)
 };
 
 std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkeleton& out) {
@@ -53,19 +56,37 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
         1e-9 * std::max(s.radii[size_t(e[0])], s.radii[size_t(e[1])]))
       return "nodes " + std::to_string(e[0]) + " and " + std::to_string(e[1]) +
              " are joined by an edge but lie at the same place";
-  // Cycles (extension 5) are not handled yet: find one and say where.
+  // Extension 5: every edge closing a cycle is cut; each end gets a pseudo child where the other end is.
   std::vector<int> parent(s.nodes.size());
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&parent](int x) {
     while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
     return x;
   };
+  std::vector<std::array<int, 2>> treeEdges;
   for (const auto& e : s.edges) {
-    if (find(e[0]) == find(e[1]))
-      return "the skeleton has a cycle (closed by the edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]) +
-             "): cyclic skeletons are not supported yet";
-    parent[size_t(find(e[0]))] = find(e[1]);
+    if (find(e[0]) != find(e[1])) {
+      parent[size_t(find(e[0]))] = find(e[1]);
+      treeEdges.push_back(e);
+      continue;
+    }
+    const int cut = int(out.cycleCuts.size());
+    (void)cut;
+    int pseudoIds[2];
+    for (int end = 0; end < 2; ++end) {
+      const int self = e[size_t(end)], other = e[size_t(1 - end)];
+      s.nodes.push_back(s.nodes[size_t(other)]);
+      s.radii.push_back(s.radii[size_t(other)]);
+      if (!s.ellipsoidAxes.empty()) s.ellipsoidAxes.push_back(s.ellipsoidAxes[size_t(other)]);
+      out.origin.push_back(self);
+      pseudoIds[end] = int(s.nodes.size()) - 1;
+      treeEdges.push_back({self, pseudoIds[end]});
+    }
+    out.cycleCuts.push_back({pseudoIds[0], pseudoIds[1]});
   }
+  s.edges = treeEdges;
+  out.pseudo.assign(s.nodes.size(), false);
+  for (const auto& [a, b] : out.cycleCuts) out.pseudo[size_t(a)] = out.pseudo[size_t(b)] = true;
 
   if (p.capsules) {
     std::vector<int> degree(s.nodes.size(), 0);
@@ -78,7 +99,7 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
     }
     const int inputCount = int(s.nodes.size());
     for (int leaf = 0; leaf < inputCount; ++leaf) {
-      if (degree[size_t(leaf)] != 1) continue;
+      if (degree[size_t(leaf)] != 1 || out.pseudo[size_t(leaf)]) continue;
       const Eigen::Vector3d d = (s.nodes[size_t(leaf)] - s.nodes[size_t(neighbour[size_t(leaf)])]).normalized();
       const double r = s.radii[size_t(leaf)];
       int previous = leaf;
@@ -90,6 +111,7 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
         s.radii.push_back(std::max(r * std::sqrt(std::max(0.0, 1 - step * step)), 1e-3 * r));
         if (!s.ellipsoidAxes.empty()) s.ellipsoidAxes.push_back(s.ellipsoidAxes[size_t(leaf)]);
         out.origin.push_back(leaf);
+        out.pseudo.push_back(false);
         s.edges.push_back({previous, int(s.nodes.size()) - 1});
         previous = int(s.nodes.size()) - 1;
       }
@@ -102,6 +124,10 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
 struct Builder {
   SqmMesh mesh;
   std::vector<int> owner;  // node (of the prepared skeleton) per vertex
+  const std::vector<bool>* pseudo = nullptr;
+  std::map<int, std::vector<int>> openRings;  // per pseudo leaf: the ring left open for the cycle closing
+  // Ends a tube at a leaf: a fan, or for a pseudo leaf the ring stays open.
+  void endAtLeaf(const std::vector<int>& ring, int leaf, const Eigen::Vector3d& apex, bool reversed);
   int add(const Eigen::Vector3d& p, int node) {
     mesh.vertices.push_back(p);
     owner.push_back(node);
@@ -171,6 +197,14 @@ void fan(Builder& b, const std::vector<int>& ring, int apex, bool reversed) {
   }
 }
 
+void Builder::endAtLeaf(const std::vector<int>& ring, int leaf, const Eigen::Vector3d& apex, bool reversed) {
+  if ((*pseudo)[size_t(leaf)]) {
+    openRings[leaf] = ring;
+    return;
+  }
+  fan(*this, ring, add(apex, leaf), reversed);
+}
+
 // A lone node: a cube projected on its sphere (six quads).
 void meshLoneNode(Builder& b, const Eigen::Vector3d& c, double r, int node) {
   int v[8];
@@ -235,10 +269,10 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
       const double angle = 2 * M_PI * j / n;
       ring.push_back(b.add(centre + radius * (std::cos(angle) * u + std::sin(angle) * v), ringNode));
     }
-    fan(b, ring, b.add(pose.position[size_t(root)], root), true);
+    b.endAtLeaf(ring, root, pose.position[size_t(root)], true);
     ring = carryAlong(b, ring, std::vector<int>(connections.begin() + (midway ? 0 : 1), connections.end()),
                       ringNode, s, pose);
-    fan(b, ring, b.add(pose.position[size_t(end)], end), false);
+    b.endAtLeaf(ring, end, pose.position[size_t(end)], false);
     return {};
   }
 
@@ -313,7 +347,7 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
         const Eigen::Vector3d direction = (pose.position[size_t(end)] - pose.position[size_t(k)]).normalized();
         closeOnRing(b, ring, ringOf(end, 0), direction, p.pairing);
       } else {
-        fan(b, ring, b.add(pose.position[size_t(end)], end), false);
+        b.endAtLeaf(ring, end, pose.position[size_t(end)], false);
       }
     }
   }
@@ -369,6 +403,7 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
   const Skeleton& s = prepared.skeleton;
 
   Builder builder;
+  builder.pseudo = &prepared.pseudo;
   std::vector<bool> done(s.nodes.size(), false);
   for (int start = 0; start < s.nodeCount(); ++start) {
     if (done[size_t(start)]) continue;
@@ -391,6 +426,13 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
       result.error = "aborted";
       return result;
     }
+  }
+  // Extension 5: join the two open rings of every cut cycle edge, in the input pose.
+  for (const auto& [a, b] : prepared.cycleCuts) {
+    const int atA = prepared.origin[size_t(a)], atB = prepared.origin[size_t(b)];
+    for (const auto& t : closeCycleGap(builder.mesh.vertices, builder.openRings[a], s.nodes[size_t(atA)],
+                                       builder.openRings[b], s.nodes[size_t(atB)]))
+      builder.mesh.faces.push_back({t[0], t[1], t[2]});
   }
   // Extension 3: an ellipsoid node maps the unit sphere to its ellipsoid.
   if (!s.ellipsoidAxes.empty())

@@ -14,9 +14,9 @@
 // A skeleton without branch nodes gets an N-vertex ring at its first connection node (ext. 2); a lone node
 // becomes a sphere of six quads (a cube projected on it); leaves end in capsules on request (ext. 4,
 // radius sqrt(r^2 (1 - step^2)) at distance step * r beyond the leaf); ellipsoid nodes map their vertices
-// by their `EllipsoidAxes` (ext. 3).
-// Not yet: cyclic skeletons (ext. 5) and the Catmull-Clark refinement with cone projection (an error says
-// so for cycles).
+// by their `EllipsoidAxes` (ext. 3); cycles are cut and closed again after placement (ext. 5, see
+// CycleClosing).
+// Not yet: the Catmull-Clark refinement with cone projection.
 #pragma once
 
 #include "skeleton/Skeleton.h"

@@ -1,0 +1,52 @@
+#include "sqm/CycleClosing.h"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace medial {
+
+std::vector<std::array<int, 3>> closeCycleGap(const std::vector<Eigen::Vector3d>& positions,
+                                              const std::vector<int>& ringA, const Eigen::Vector3d& centreA,
+                                              const std::vector<int>& ringB, const Eigen::Vector3d& centreB) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::pair<int, int>, Kernel>;  // (ring, vertex)
+  using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<VertexBase>>;
+
+  // The plane across the cut: (e1, e2, d) right-handed, so ring A (counter-clockwise about d) turns
+  // counter-clockwise in the plane and ring B (counter-clockwise about -d) clockwise.
+  Eigen::Vector3d d = centreB - centreA;
+  if (d.squaredNorm() == 0) d = Eigen::Vector3d::UnitZ();
+  d.normalize();
+  const Eigen::Vector3d e1 = (std::abs(d.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).cross(d).normalized();
+  const Eigen::Vector3d e2 = d.cross(e1);
+  std::vector<std::pair<Kernel::Point_2, std::pair<int, int>>> points;
+  auto addRing = [&](const std::vector<int>& ring, const Eigen::Vector3d& centre, int which, double radius) {
+    for (size_t k = 0; k < ring.size(); ++k) {
+      const Eigen::Vector3d offset = positions[size_t(ring[k])] - centre;
+      const double angle = std::atan2(offset.dot(e2), offset.dot(e1));
+      points.push_back({Kernel::Point_2(radius * std::cos(angle), radius * std::sin(angle)), {which, int(k)}});
+    }
+  };
+  addRing(ringA, centreA, 0, 1.0);
+  addRing(ringB, centreB, 1, 2.0);
+  const Delaunay triangulation(points.begin(), points.end());
+
+  std::vector<std::array<int, 3>> triangles;
+  for (auto face = triangulation.finite_faces_begin(); face != triangulation.finite_faces_end(); ++face) {
+    std::array<std::pair<int, int>, 3> corner;
+    for (int c = 0; c < 3; ++c) corner[size_t(c)] = face->vertex(c)->info();
+    const int fromA = (corner[0].first == 0) + (corner[1].first == 0) + (corner[2].first == 0);
+    if (fromA == 0 || fromA == 3) continue;  // inside one ring: the paper drops these
+    auto id = [&](const std::pair<int, int>& c) { return c.first == 0 ? ringA[size_t(c.second)] : ringB[size_t(c.second)]; };
+    // Delaunay faces are counter-clockwise in the plane; the band needs them the other way round.
+    triangles.push_back({id(corner[0]), id(corner[2]), id(corner[1])});
+  }
+  return triangles;
+}
+
+}  // namespace medial
