@@ -6,9 +6,45 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 
 namespace medial {
+
+namespace {
+
+// Joins ring A (angles increasing along it) and ring B (angles decreasing along it) by walking both in
+// angular order from their smallest angles: one triangle per step, |A| + |B| triangles.
+std::vector<std::array<int, 3>> zipByAngle(const std::vector<int>& ringA, const std::vector<double>& angleA,
+                                           const std::vector<int>& ringB, const std::vector<double>& angleB) {
+  const int m = int(ringA.size()), n = int(ringB.size());
+  std::vector<int> b(ringB.rbegin(), ringB.rend());  // increasing angles
+  std::vector<double> bAngle(angleB.rbegin(), angleB.rend());
+  const int a0 = int(std::min_element(angleA.begin(), angleA.end()) - angleA.begin());
+  const int b0 = int(std::min_element(bAngle.begin(), bAngle.end()) - bAngle.begin());
+  auto unwrapped = [](const std::vector<double>& angles, int start, int k) {
+    const int size = int(angles.size());
+    double value = angles[size_t((start + k) % size)];
+    while (value < angles[size_t(start)]) value += 2 * M_PI;
+    return value + (k >= size ? 2 * M_PI * (k / size) : 0.0);
+  };
+  std::vector<std::array<int, 3>> triangles;
+  int i = 0, j = 0;
+  while (i < m || j < n) {
+    const int ai = ringA[size_t((a0 + i) % m)], bj = b[size_t((b0 + j) % n)];
+    const bool advanceA = j == n || (i < m && unwrapped(angleA, a0, i + 1) <= unwrapped(bAngle, b0, j + 1));
+    if (advanceA) {
+      triangles.push_back({ai, ringA[size_t((a0 + i + 1) % m)], bj});  // A's edge in its own direction
+      ++i;
+    } else {
+      triangles.push_back({ai, b[size_t((b0 + j + 1) % n)], bj});  // B's edge against the reversed order
+      ++j;
+    }
+  }
+  return triangles;
+}
+
+}  // namespace
 
 std::vector<std::array<int, 3>> closeCycleGap(const std::vector<Eigen::Vector3d>& positions,
                                               const std::vector<int>& ringA, const Eigen::Vector3d& centreA,
@@ -37,6 +73,8 @@ std::vector<std::array<int, 3>> closeCycleGap(const std::vector<Eigen::Vector3d>
   const Delaunay triangulation(points.begin(), points.end());
 
   std::vector<std::array<int, 3>> triangles;
+  std::vector<double> angleA, angleB;
+  for (const auto& [point, info] : points) (info.first == 0 ? angleA : angleB).push_back(std::atan2(point.y(), point.x()));
   for (auto face = triangulation.finite_faces_begin(); face != triangulation.finite_faces_end(); ++face) {
     std::array<std::pair<int, int>, 3> corner;
     for (int c = 0; c < 3; ++c) corner[size_t(c)] = face->vertex(c)->info();
@@ -46,6 +84,10 @@ std::vector<std::array<int, 3>> closeCycleGap(const std::vector<Eigen::Vector3d>
     // Delaunay faces are counter-clockwise in the plane; the band needs them the other way round.
     triangles.push_back({id(corner[0]), id(corner[2]), id(corner[1])});
   }
+  // A closed band has one triangle per ring edge. When a ring is lopsided (all its vertices on one side of
+  // its centre, as a pillow's one-ring can be) the Delaunay triangulation does not wrap around the
+  // annulus; the rings are then zipped by angle instead.
+  if (triangles.size() != ringA.size() + ringB.size()) triangles = zipByAngle(ringA, angleA, ringB, angleB);
   return triangles;
 }
 

@@ -430,9 +430,9 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
   // Extension 5: join the two open rings of every cut cycle edge, in the input pose.
   for (const auto& [a, b] : prepared.cycleCuts) {
     const int atA = prepared.origin[size_t(a)], atB = prepared.origin[size_t(b)];
-    for (const auto& t : closeCycleGap(builder.mesh.vertices, builder.openRings[a], s.nodes[size_t(atA)],
-                                       builder.openRings[b], s.nodes[size_t(atB)]))
-      builder.mesh.faces.push_back({t[0], t[1], t[2]});
+    const auto band = closeCycleGap(builder.mesh.vertices, builder.openRings[a], s.nodes[size_t(atA)],
+                                    builder.openRings[b], s.nodes[size_t(atB)]);
+    for (const auto& t : band) builder.mesh.faces.push_back({t[0], t[1], t[2]});
   }
   // Extension 3: an ellipsoid node maps the unit sphere to its ellipsoid.
   if (!s.ellipsoidAxes.empty())

@@ -93,7 +93,7 @@ INSTANTIATE_TEST_SUITE_P(Data, SqmSamples,
                                            SampleSkeleton{"sqm/fish.vtp", 0.6}, SampleSkeleton{"sqm/leafroot.vtp", 0.5},
                                            SampleSkeleton{"figure.vtp", 0.7, 4}, SampleSkeleton{"hand.swc", 0.65, 43},
                                            SampleSkeleton{"sqm/cycle.vtp", 0.7, 0, 1},
-                                           SampleSkeleton{"sqm/pretzel.vtp", 0.7, 105, 3}),
+                                           SampleSkeleton{"sqm/pretzel.vtp", 0.7, 114, 3}),
                          [](const ::testing::TestParamInfo<SampleSkeleton>& info) {
                            std::string name = info.param.path;
                            for (char& c : name)

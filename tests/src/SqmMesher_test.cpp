@@ -1,5 +1,6 @@
 // SqmMesher: closed quad-dominant manifolds from skeletons, the extensions, and bad input.
 #include "mesh/MeshTopology.h"
+#include "sqm/CycleClosing.h"
 #include "sqm/SqmMesher.h"
 
 #include <gtest/gtest.h>
@@ -199,6 +200,35 @@ TEST(SqmMesher, CyclesAreCutAndClosed) {
   triangle.edges = {{0, 1}, {1, 2}, {2, 0}};
   const auto r = medial::sqmMesh(triangle);
   expectClosedQuadDominant(triangle, r, 1, 1);
+}
+
+TEST(CycleClosing, LopsidedRingsStillCloseTheBand) {
+  // Ring A around (0,0,0) facing +z, ring B around (0,0,1) facing -z; B's four vertices crowd one side.
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<int> a, b;
+  for (int k = 0; k < 6; ++k) {
+    positions.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0});
+    a.push_back(int(positions.size()) - 1);
+  }
+  for (double angle : {0.3, 0.1, -0.1, -0.3}) {  // clockwise seen from +z: counter-clockwise about -z
+    positions.push_back({std::cos(angle), std::sin(angle), 1});
+    b.push_back(int(positions.size()) - 1);
+  }
+  const auto band = medial::closeCycleGap(positions, a, Eigen::Vector3d(0, 0, 0), b, Eigen::Vector3d(0, 0, 1));
+  ASSERT_EQ(band.size(), a.size() + b.size());
+  // Every ring edge is used once, in the direction that continues the tubes: A forwards, B forwards.
+  std::vector<std::vector<int64_t>> faces;
+  for (const auto& t : band) faces.push_back({t[0], t[1], t[2]});
+  const medial::MeshTopology t = medial::computeMeshTopology(int64_t(positions.size()), faces);
+  EXPECT_EQ(t.borderEdges, int64_t(a.size() + b.size()));  // the band's two rims
+  EXPECT_EQ(t.nonManifoldEdges, 0);
+  EXPECT_EQ(t.boundaryLoops, 2);
+  for (const auto& tri : band)
+    for (int c = 0; c < 3; ++c) {
+      const int from = tri[size_t(c)], to = tri[size_t((c + 1) % 3)];
+      if (from < 6 && to < 6) EXPECT_EQ(to, (from + 1) % 6);
+      if (from >= 6 && to >= 6) EXPECT_EQ(to - 6, (from - 6 + 1) % 4);
+    }
 }
 
 TEST(SqmMesher, BadInputIsRefusedOrRepaired) {
