@@ -41,8 +41,8 @@ int runSqm(const std::vector<std::string>& args) {
   }
   if (parsed.has("--subdivide")) {
     const double k = parseNumbers(parsed.value("--subdivide"), 1, "--subdivide")[0];
-    if (!(k >= 0) || k != int(k)) throw UsageError("--subdivide must be a whole number >= 0");
-    if (k > 0) throw Failure("--subdivide: the Catmull-Clark refinement is not available yet");
+    if (!(k >= 0 && k <= 6) || k != int(k)) throw UsageError("--subdivide must be a whole number from 0 to 6");
+    filter->SetSubdivisionLevels(int(k));
   }
   filter->SetCapsules(parsed.has("--capsule"));
 

@@ -67,7 +67,7 @@ const std::vector<Command>& commands() {
        "  --pairing NAME            ring pairing at branch nodes: total-distance (default), distance, angle\n"
        "  --capsule                 close leaves with capsules instead of triangle fans\n"
        "  --ring-vertices N         vertices around a skeleton without branch nodes (default 8)\n"
-       "  --subdivide K             Catmull-Clark levels: not available yet (K > 0 fails)\n"
+       "  --subdivide K             K levels of Catmull-Clark, projected on the skeleton's cones (0-6)\n"
        "  --quiet                   no progress line\n"
        "  --timings                 print stage times as JSON on stdout\n",
        runSqm},

@@ -21,6 +21,7 @@ void vtkMedialSQM::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Pairing: " << this->Pairing << "\n";
   os << indent << "LinearRingVertices: " << this->LinearRingVertices << "\n";
   os << indent << "Capsules: " << this->Capsules << "\n";
+  os << indent << "SubdivisionLevels: " << this->SubdivisionLevels << "\n";
 }
 
 void vtkMedialSQM::SetSmoothing(const std::string& name) {
@@ -61,6 +62,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   medial::parseRingPairing(this->Pairing, p.pairing);
   p.linearRingVertices = this->LinearRingVertices;
   p.capsules = this->Capsules;
+  p.subdivisionLevels = this->SubdivisionLevels;
   const medial::SqmResult result = medial::sqmMesh(skeleton, p, [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();

@@ -37,6 +37,9 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkSetMacro(Capsules, bool);
   vtkGetMacro(Capsules, bool);
   vtkBooleanMacro(Capsules, bool);
+  /// Catmull-Clark levels, each followed by projection onto the skeleton edges' cones (default 0).
+  vtkSetClampMacro(SubdivisionLevels, int, 0, 6);
+  vtkGetMacro(SubdivisionLevels, int);
 
  protected:
   vtkMedialSQM() = default;
@@ -51,4 +54,5 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   std::string Pairing = "total-distance";
   int LinearRingVertices = 8;
   bool Capsules = false;
+  int SubdivisionLevels = 0;
 };

@@ -2,6 +2,7 @@
 
 #include "sqm/CycleClosing.h"
 #include "sqm/SkeletonStraightening.h"
+#include "sqm/SqmRefinement.h"
 
 #include <Eigen/Geometry>
 
@@ -444,6 +445,18 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
   result.mesh = std::move(builder.mesh);
   result.mesh.vertexNode.resize(builder.owner.size());
   for (size_t v = 0; v < builder.owner.size(); ++v) result.mesh.vertexNode[v] = prepared.origin[size_t(builder.owner[v])];
+  if (p.subdivisionLevels > 0) {
+    // The cones of the skeleton the mesh was built on (capsule nodes included, pseudo nodes left out).
+    Skeleton cones = s;
+    cones.edges.clear();
+    for (const auto& e : s.edges)
+      if (!prepared.pseudo[size_t(e[0])] && !prepared.pseudo[size_t(e[1])]) cones.edges.push_back(e);
+    for (const auto& [a, b] : prepared.cycleCuts) cones.edges.push_back({prepared.origin[size_t(a)], prepared.origin[size_t(b)]});
+    const auto clock = Clock::now();
+    refineSqmMesh(result.mesh, cones, p.subdivisionLevels);
+    for (int& node : result.mesh.vertexNode) node = prepared.origin[size_t(node)];
+    result.subdivisionSeconds += secondsSince(clock);
+  }
   return result;
 }
 

@@ -16,7 +16,7 @@
 // radius sqrt(r^2 (1 - step^2)) at distance step * r beyond the leaf); ellipsoid nodes map their vertices
 // by their `EllipsoidAxes` (ext. 3); cycles are cut and closed again after placement (ext. 5, see
 // CycleClosing).
-// Not yet: the Catmull-Clark refinement with cone projection.
+// Then, on request, K levels of Catmull-Clark refinement with projection onto the edges' cones.
 #pragma once
 
 #include "skeleton/Skeleton.h"
@@ -43,6 +43,7 @@ struct SqmParameters {
   int linearRingVertices = 8;  // N of extension 2
   bool capsules = false;       // extension 4
   int capsuleSteps = 4;        // nodes added beyond each leaf for its capsule
+  int subdivisionLevels = 0;   // stage 8: Catmull-Clark levels with cone projection (SqmRefinement)
 };
 
 struct SqmMesh {
@@ -56,7 +57,7 @@ struct SqmResult {
   SqmMesh mesh;
   int branchNodes = 0, connectionNodes = 0, leafNodes = 0;
   double straighteningSeconds = 0, generationSeconds = 0, refinementSeconds = 0, joiningSeconds = 0,
-         placementSeconds = 0;
+         placementSeconds = 0, subdivisionSeconds = 0;
   std::string error;
   bool ok() const { return error.empty(); }
 };

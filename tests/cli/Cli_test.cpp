@@ -43,7 +43,7 @@ TEST(Cli, UsageErrorsExitTwo) {
                            "skeleton in.off -o out.png", "skeleton in.off -o s.vtp --nodes -3",
                            "skeleton in.off -o s.vtp --solver magic", "skeleton a.off b.off -o s.vtp",
                            "sqm s.vtp", "sqm s.vtp -o m.png", "sqm s.vtp -o m.vtp --smoothing median",
-                           "sqm s.vtp -o m.vtp --ring-vertices 2", "sqm s.vtp -o m.vtp --pairing best"}) {
+                           "sqm s.vtp -o m.vtp --ring-vertices 2", "sqm s.vtp -o m.vtp --subdivide 9", "sqm s.vtp -o m.vtp --pairing best"}) {
     auto r = runCommand(medialCommand(args));
     EXPECT_EQ(r.exitCode, 2) << "medial " << args << "\n" << r.err;
     EXPECT_FALSE(r.err.empty()) << "medial " << args;
@@ -123,15 +123,24 @@ TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
   while (std::getline(obj, line))
     if (line.rfind("f ", 0) == 0 && std::count(line.begin(), line.end(), ' ') == 4) ++quads;
   EXPECT_GT(quads, 100);
-  // A mesh is no skeleton; a cyclic skeleton is not supported yet; subdivision is not available yet.
+  // A mesh is no skeleton; subdivision gives more faces, all quads.
   auto mesh = runCommand(medialCommand("sqm " + dataPath("meshes/torus.off") + " -o " + dir + "/t.vtp --quiet"));
   EXPECT_EQ(mesh.exitCode, 1);
   EXPECT_EQ(lineCount(mesh.err), 1) << mesh.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/t.vtp"));
   auto subdivide = runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + dir +
-                                            "/h.vtp --subdivide 2 --quiet"));
-  EXPECT_EQ(subdivide.exitCode, 1);
-  EXPECT_NE(subdivide.err.find("not available yet"), std::string::npos) << subdivide.err;
+                                            "/h.obj --subdivide 2 --quiet"));
+  EXPECT_EQ(subdivide.exitCode, 0) << subdivide.err;
+  std::ifstream fine(dir + "/h.obj");
+  int fineQuads = 0, fineTriangles = 0;
+  while (std::getline(fine, line)) {
+    if (line.rfind("f ", 0) != 0) continue;
+    const auto spaces = std::count(line.begin(), line.end(), ' ');
+    fineQuads += spaces == 4;
+    fineTriangles += spaces == 3;
+  }
+  EXPECT_EQ(fineTriangles, 0);
+  EXPECT_GT(fineQuads, 16 * 100);
 }
 
 TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {

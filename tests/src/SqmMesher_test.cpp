@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -200,6 +201,34 @@ TEST(SqmMesher, CyclesAreCutAndClosed) {
   triangle.edges = {{0, 1}, {1, 2}, {2, 0}};
   const auto r = medial::sqmMesh(triangle);
   expectClosedQuadDominant(triangle, r, 1, 1);
+}
+
+TEST(SqmMesher, CatmullClarkRefinementStaysClosedOnTheCones) {
+  for (const auto& s : {starSkeleton(), ySkeleton()}) {
+    medial::SqmParameters p;
+    p.subdivisionLevels = 2;
+    const auto coarse = medial::sqmMesh(s), fine = medial::sqmMesh(s, p);
+    ASSERT_TRUE(fine.ok()) << fine.error;
+    const medial::MeshTopology t = topologyOf(fine.mesh);
+    EXPECT_EQ(t.borderEdges + t.nonManifoldEdges, 0);
+    EXPECT_EQ(t.eulerCharacteristic, 2);
+    EXPECT_EQ(fine.mesh.quadCount(), int(fine.mesh.faces.size()));  // Catmull-Clark makes quads only
+    // Two levels: each n-gon becomes n quads, each quad four.
+    size_t expected = 0;
+    for (const auto& f : coarse.mesh.faces) expected += f.size() * 4;
+    EXPECT_EQ(fine.mesh.faces.size(), expected);
+    // Every vertex lies on the truncated cone of some edge: radius interpolated along the edge.
+    for (const auto& v : fine.mesh.vertices) {
+      double gap = INFINITY;
+      for (const auto& e : s.edges) {
+        const Eigen::Vector3d a = s.nodes[size_t(e[0])], ab = s.nodes[size_t(e[1])] - a;
+        const double t = std::clamp((v - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+        const double r = (1 - t) * s.radii[size_t(e[0])] + t * s.radii[size_t(e[1])];
+        gap = std::min(gap, std::abs((v - (a + t * ab)).norm() - r));
+      }
+      EXPECT_LT(gap, 1e-9);
+    }
+  }
 }
 
 TEST(CycleClosing, LopsidedRingsStillCloseTheBand) {
