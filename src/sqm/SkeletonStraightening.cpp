@@ -1,6 +1,5 @@
 #include "sqm/SkeletonStraightening.h"
 
-#include <functional>
 
 namespace medial {
 
@@ -37,18 +36,26 @@ SqmTree buildSqmTree(const Skeleton& skeleton, int start, int preferredRoot) {
   SqmTree tree;
   tree.parent.assign(size_t(n), -1);
   tree.children.assign(size_t(n), {});
-  // Extension 1: re-root at the first branch node met depth-first from the requested root.
-  std::vector<bool> seen(static_cast<size_t>(n), false);
-  std::function<int(int)> findBranch = [&](int k) {
-    seen[size_t(k)] = true;
-    if (adjacent[size_t(k)].size() >= 3) return k;
-    for (int m : adjacent[size_t(k)])
-      if (!seen[size_t(m)])
-        if (int b = findBranch(m); b >= 0) return b;
+  // Extension 1: re-root at the first branch node met depth-first from the requested root. (Iterative
+  // walks: a centerline skeleton can have tens of thousands of nodes in a row.)
+  auto firstBranchFrom = [&](int from) {
+    std::vector<bool> seen(static_cast<size_t>(n), false);
+    std::vector<int> todo{from};
+    seen[size_t(from)] = true;
+    while (!todo.empty()) {
+      const int k = todo.back();
+      todo.pop_back();
+      if (adjacent[size_t(k)].size() >= 3) return k;
+      for (auto m = adjacent[size_t(k)].rbegin(); m != adjacent[size_t(k)].rend(); ++m)
+        if (!seen[size_t(*m)]) {
+          seen[size_t(*m)] = true;
+          todo.push_back(*m);
+        }
+    }
     return -1;
   };
   if (adjacent[size_t(root)].size() < 3) {
-    const int branch = findBranch(root);
+    const int branch = firstBranchFrom(root);
     if (branch >= 0) {
       root = branch;
     } else {
@@ -58,17 +65,23 @@ SqmTree buildSqmTree(const Skeleton& skeleton, int start, int preferredRoot) {
     }
   }
   tree.root = root;
-  std::function<void(int)> visit = [&](int k) {
+  // Depth-first preorder: every parent before its children.
+  std::vector<int> todo{root};
+  std::vector<bool> placed(static_cast<size_t>(n), false);
+  placed[size_t(root)] = true;
+  while (!todo.empty()) {
+    const int k = todo.back();
+    todo.pop_back();
     tree.nodes.push_back(k);
     if (adjacent[size_t(k)].size() >= 3) tree.hasBranchNode = true;
     for (int m : adjacent[size_t(k)])
-      if (m != tree.parent[size_t(k)] && m != root && tree.parent[size_t(m)] < 0) {
+      if (!placed[size_t(m)]) {
+        placed[size_t(m)] = true;
         tree.parent[size_t(m)] = k;
         tree.children[size_t(k)].push_back(m);
-        visit(m);
       }
-  };
-  visit(root);
+    for (auto c = tree.children[size_t(k)].rbegin(); c != tree.children[size_t(k)].rend(); ++c) todo.push_back(*c);
+  }
   return tree;
 }
 

@@ -128,6 +128,25 @@ TEST(SqmMesher, LinearSkeletonGetsNVertexRings) {
   EXPECT_EQ(r.mesh.faces.size(), 20u * 6 + 12);
 }
 
+TEST(SqmMesher, LongChainsAreWalkedWithoutRecursion) {
+  // A 50,000-node centerline with one side branch half way: deep recursion would overflow the stack.
+  medial::Skeleton s;
+  for (int i = 0; i < 50000; ++i) {
+    s.nodes.push_back({0.1 * i, 0.2 * std::sin(0.01 * i), 0});
+    s.radii.push_back(0.04);
+    if (i > 0) s.edges.push_back({i - 1, i});
+  }
+  s.nodes.push_back({2500, 1, 0});
+  s.radii.push_back(0.04);
+  s.edges.push_back({25000, 50000});
+  s.root = 0;
+  const auto r = medial::sqmMesh(s);
+  ASSERT_TRUE(r.ok()) << r.error;
+  const medial::MeshTopology t = topologyOf(r.mesh);
+  EXPECT_EQ(t.borderEdges + t.nonManifoldEdges, 0);
+  EXPECT_EQ(t.eulerCharacteristic, 2);
+}
+
 TEST(SqmMesher, RootThatIsALeafIsMovedToABranchNode) {
   auto s = ySkeleton();
   s.root = 2;  // a leaf
