@@ -71,8 +71,6 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
       treeEdges.push_back(e);
       continue;
     }
-    const int cut = int(out.cycleCuts.size());
-    (void)cut;
     int pseudoIds[2];
     for (int end = 0; end < 2; ++end) {
       const int self = e[size_t(end)], other = e[size_t(1 - end)];
