@@ -1,0 +1,52 @@
+// BinaryVolume: a segmented 3-D image on plain arrays - which voxels belong to the structure - with its
+// physical frame (origin, spacing, direction: physical = origin + direction * (spacing .* index), the ITK
+// and VTK 9 convention), and the clean-up the TSK centerline needs before it starts.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace medial {
+
+struct BinaryVolume {
+  std::array<int, 3> size{0, 0, 0};
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Vector3d spacing = Eigen::Vector3d::Ones();
+  Eigen::Matrix3d direction = Eigen::Matrix3d::Identity();
+  std::vector<uint8_t> inside;  // 1 for voxels of the structure, x fastest
+
+  int64_t voxelCount() const { return int64_t(size[0]) * size[1] * size[2]; }
+  int64_t index(int i, int j, int k) const { return i + int64_t(size[0]) * (j + int64_t(size[1]) * k); }
+  std::array<int, 3> coordinates(int64_t index) const {
+    return {int(index % size[0]), int((index / size[0]) % size[1]), int(index / (int64_t(size[0]) * size[1]))};
+  }
+  bool contains(int i, int j, int k) const {
+    return i >= 0 && j >= 0 && k >= 0 && i < size[0] && j < size[1] && k < size[2];
+  }
+  Eigen::Vector3d physical(const Eigen::Vector3d& continuousIndex) const {
+    return origin + direction * spacing.cwiseProduct(continuousIndex);
+  }
+  Eigen::Vector3d physical(int64_t index) const {
+    const auto c = coordinates(index);
+    return physical(Eigen::Vector3d(c[0], c[1], c[2]));
+  }
+  Eigen::Vector3d continuousIndex(const Eigen::Vector3d& point) const {
+    return (direction.inverse() * (point - origin)).cwiseQuotient(spacing);
+  }
+};
+
+// Keeps the largest 26-connected component of the structure; returns how many components there were.
+int keepLargestComponent(BinaryVolume& volume);
+
+// Removes the parts of the structure that touch the volume's border (air outside the body when the
+// structure is a threshold of air on a CT); returns the number of voxels removed.
+int64_t dropBorderTouchingParts(BinaryVolume& volume);
+
+// Fills the cavities of the structure: background voxels not 6-connected to the volume's border.
+int64_t fillHoles(BinaryVolume& volume);
+
+}  // namespace medial

@@ -1,0 +1,175 @@
+#include "centerline/TskAxis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace medial {
+
+namespace {
+
+// One-dimensional squared distance transform of f (Felzenszwalb and Huttenlocher 2012), sample step h.
+void distanceTransform1d(std::vector<double>& f, double h, std::vector<double>& out, std::vector<int>& v,
+                         std::vector<double>& z) {
+  const int n = int(f.size());
+  v.assign(size_t(n), 0);
+  z.assign(size_t(n) + 1, 0);
+  out.assign(size_t(n), 0);
+  int k = 0;
+  v[0] = 0;
+  z[0] = -std::numeric_limits<double>::infinity();
+  z[1] = std::numeric_limits<double>::infinity();
+  auto intersection = [&](int q, int p) {
+    return ((f[size_t(q)] + (q * h) * (q * h)) - (f[size_t(p)] + (p * h) * (p * h))) / (2 * h * (q - p));
+  };
+  for (int q = 1; q < n; ++q) {
+    if (!std::isfinite(f[size_t(q)])) continue;
+    if (!std::isfinite(f[size_t(v[size_t(k)])])) {  // no finite parabola yet
+      v[size_t(k)] = q;
+      continue;
+    }
+    double s = intersection(q, v[size_t(k)]);
+    while (k > 0 && s <= z[size_t(k)]) {
+      --k;
+      s = intersection(q, v[size_t(k)]);
+    }
+    ++k;
+    v[size_t(k)] = q;
+    z[size_t(k)] = s;
+    z[size_t(k) + 1] = std::numeric_limits<double>::infinity();
+  }
+  k = 0;
+  for (int q = 0; q < n; ++q) {
+    while (z[size_t(k) + 1] < q * h) ++k;
+    const double d = (q - v[size_t(k)]) * h;
+    out[size_t(q)] = std::isfinite(f[size_t(v[size_t(k)])]) ? d * d + f[size_t(v[size_t(k)])]
+                                                              : std::numeric_limits<double>::infinity();
+  }
+}
+
+double trilinear(const BinaryVolume& v, const std::vector<float>& field, const Eigen::Vector3d& index) {
+  const int i0 = int(std::floor(index.x())), j0 = int(std::floor(index.y())), k0 = int(std::floor(index.z()));
+  const double fx = index.x() - i0, fy = index.y() - j0, fz = index.z() - k0;
+  double sum = 0, weights = 0;
+  for (int dz = 0; dz <= 1; ++dz)
+    for (int dy = 0; dy <= 1; ++dy)
+      for (int dx = 0; dx <= 1; ++dx) {
+        const int i = i0 + dx, j = j0 + dy, k = k0 + dz;
+        if (!v.contains(i, j, k)) continue;
+        const double w = (dx ? fx : 1 - fx) * (dy ? fy : 1 - fy) * (dz ? fz : 1 - fz);
+        sum += w * field[size_t(v.index(i, j, k))];
+        weights += w;
+      }
+  return weights > 0 ? sum / weights : 0;
+}
+
+}  // namespace
+
+std::vector<float> distanceToOutside(const BinaryVolume& volume) {
+  const int64_t count = volume.voxelCount();
+  std::vector<double> squared(static_cast<size_t>(count));
+  for (int64_t i = 0; i < count; ++i)
+    squared[size_t(i)] = volume.inside[size_t(i)] ? std::numeric_limits<double>::infinity() : 0.0;
+  std::vector<double> line, out, z;
+  std::vector<int> v;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    std::array<int, 3> c{};
+    line.resize(size_t(volume.size[size_t(axis)]));
+    for (c[size_t(a2)] = 0; c[size_t(a2)] < volume.size[size_t(a2)]; ++c[size_t(a2)])
+      for (c[size_t(a1)] = 0; c[size_t(a1)] < volume.size[size_t(a1)]; ++c[size_t(a1)]) {
+        for (int p = 0; p < volume.size[size_t(axis)]; ++p) {
+          c[size_t(axis)] = p;
+          line[size_t(p)] = squared[size_t(volume.index(c[0], c[1], c[2]))];
+        }
+        distanceTransform1d(line, volume.spacing[axis], out, v, z);
+        for (int p = 0; p < volume.size[size_t(axis)]; ++p) {
+          c[size_t(axis)] = p;
+          squared[size_t(volume.index(c[0], c[1], c[2]))] = out[size_t(p)];
+        }
+      }
+  }
+  std::vector<float> distance(static_cast<size_t>(count));
+  for (int64_t i = 0; i < count; ++i) distance[size_t(i)] = float(std::sqrt(squared[size_t(i)]));
+  return distance;
+}
+
+Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, const TskParameters& p) {
+  Centerline result;
+  const size_t count = clusters.orderedVoxels.size();
+  if (count < 2) return result;
+  const int n = clusters.orderedCluster.back() + 1;
+
+  // Per cluster: its run in the order, the Gaussian antecedent and the three linear consequents.
+  struct Rule {
+    double centre = 0, sigma = 0;
+    Eigen::Vector3d slope = Eigen::Vector3d::Zero(), intercept = Eigen::Vector3d::Zero();
+    bool used = false;
+  };
+  std::vector<Rule> rules(static_cast<size_t>(n));
+  size_t begin = 0;
+  while (begin < count) {
+    const int j = clusters.orderedCluster[begin];
+    size_t end = begin;
+    double sumT = 0, sumTT = 0;
+    Eigen::Vector3d sumX = Eigen::Vector3d::Zero(), sumTX = Eigen::Vector3d::Zero();
+    while (end < count && clusters.orderedCluster[end] == j) {
+      const double t = double(end) / double(count - 1);
+      const Eigen::Vector3d x = volume.physical(clusters.orderedVoxels[end]);
+      sumT += t;
+      sumTT += t * t;
+      sumX += x;
+      sumTX += t * x;
+      ++end;
+    }
+    const double m = double(end - begin), meanT = sumT / m, varT = sumTT / m - meanT * meanT;
+    Rule& rule = rules[size_t(j)];
+    rule.used = true;
+    rule.centre = meanT;
+    rule.sigma = std::max(p.antecedentWidth * double(end - begin) / double(count - 1), 1e-9);
+    rule.slope = varT > 1e-18 ? Eigen::Vector3d((sumTX / m - meanT * sumX / m) / varT) : Eigen::Vector3d::Zero();
+    rule.intercept = sumX / m - rule.slope * meanT;
+    begin = end;
+  }
+  auto model = [&](double t) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double weights = 0;
+    for (const Rule& rule : rules) {
+      if (!rule.used) continue;
+      const double u = (t - rule.centre) / rule.sigma;
+      if (u * u > 80) continue;  // exp(-40): nothing
+      const double w = std::exp(-0.5 * u * u);
+      sum += w * (rule.slope * t + rule.intercept);
+      weights += w;
+    }
+    return weights > 0 ? Eigen::Vector3d(sum / weights) : Eigen::Vector3d::Zero();
+  };
+
+  // Dense samples of the model, then uniform arc length.
+  const int dense = std::max(200, 16 * n);
+  std::vector<Eigen::Vector3d> curve;
+  std::vector<double> length{0};
+  for (int s = 0; s <= dense; ++s) {
+    curve.push_back(model(double(s) / dense));
+    if (s > 0) length.push_back(length.back() + (curve[size_t(s)] - curve[size_t(s) - 1]).norm());
+  }
+  const double step = p.sampleSpacing > 0 ? p.sampleSpacing : volume.spacing.minCoeff();
+  const double total = length.back();
+  const int samples = std::max(2, int(std::ceil(total / step)) + 1);
+  const std::vector<float> distance = distanceToOutside(volume);
+  size_t segment = 0;
+  for (int s = 0; s < samples; ++s) {
+    const double at = total * double(s) / double(samples - 1);
+    while (segment + 2 < length.size() && length[segment + 1] < at) ++segment;
+    const double span = length[segment + 1] - length[segment];
+    const double f = span > 0 ? std::clamp((at - length[segment]) / span, 0.0, 1.0) : 0.0;
+    const Eigen::Vector3d point = (1 - f) * curve[segment] + f * curve[segment + 1];
+    result.points.push_back(point);
+    result.arcLength.push_back(at);
+    const double halfVoxel = 0.5 * volume.spacing.minCoeff();
+    result.radius.push_back(std::max(trilinear(volume, distance, volume.continuousIndex(point)) - halfVoxel, halfVoxel));
+  }
+  return result;
+}
+
+}  // namespace medial

@@ -1,0 +1,226 @@
+#include "centerline/TubularClusters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+
+namespace medial {
+
+namespace {
+
+// Step 2b: distance (mm) to the nearest outside voxel along the six main directions.
+std::vector<float> sixDirectionBorderDistance(const BinaryVolume& v) {
+  std::vector<float> distance(size_t(v.voxelCount()), std::numeric_limits<float>::infinity());
+  for (int axis = 0; axis < 3; ++axis) {
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    const int length = v.size[size_t(axis)];
+    const double step = v.spacing[axis];
+    std::array<int, 3> c{};
+    for (c[size_t(a2)] = 0; c[size_t(a2)] < v.size[size_t(a2)]; ++c[size_t(a2)])
+      for (c[size_t(a1)] = 0; c[size_t(a1)] < v.size[size_t(a1)]; ++c[size_t(a1)]) {
+        auto at = [&](int position) {
+          c[size_t(axis)] = position;
+          return v.index(c[0], c[1], c[2]);
+        };
+        int lastOutside = -1;  // the volume's edge counts as outside
+        for (int p = 0; p < length; ++p) {
+          const int64_t i = at(p);
+          if (!v.inside[size_t(i)]) {
+            lastOutside = p;
+            distance[size_t(i)] = 0;
+          } else {
+            distance[size_t(i)] = std::min(distance[size_t(i)], float((p - lastOutside) * step));
+          }
+        }
+        int nextOutside = length;
+        for (int p = length - 1; p >= 0; --p) {
+          const int64_t i = at(p);
+          if (!v.inside[size_t(i)]) nextOutside = p;
+          else distance[size_t(i)] = std::min(distance[size_t(i)], float((nextOutside - p) * step));
+        }
+      }
+  }
+  return distance;
+}
+
+// Manhattan layers grown inside the structure from `seed` (6-connected breadth-first); returns the
+// voxels of each layer and fills `layer` (-1 where unreached).
+std::vector<std::vector<int64_t>> growLayers(const BinaryVolume& v, int64_t seed, std::vector<int>& layer) {
+  layer.assign(size_t(v.voxelCount()), -1);
+  std::vector<std::vector<int64_t>> layers;
+  std::deque<int64_t> queue{seed};
+  layer[size_t(seed)] = 0;
+  while (!queue.empty()) {
+    const int64_t at = queue.front();
+    queue.pop_front();
+    const int l = layer[size_t(at)];
+    if (int(layers.size()) <= l) layers.emplace_back();
+    layers[size_t(l)].push_back(at);
+    const auto c = v.coordinates(at);
+    static const int steps[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (const auto& s : steps) {
+      const int i = c[0] + s[0], j = c[1] + s[1], k = c[2] + s[2];
+      if (!v.contains(i, j, k)) continue;
+      const int64_t next = v.index(i, j, k);
+      if (v.inside[size_t(next)] && layer[size_t(next)] < 0) {
+        layer[size_t(next)] = l + 1;
+        queue.push_back(next);
+      }
+    }
+  }
+  return layers;
+}
+
+// The lowest voxel of the last layer: an end of the structure as seen from `from`.
+int64_t farEnd(const BinaryVolume& v, int64_t from, int& distance) {
+  std::vector<int> layer;
+  const auto layers = growLayers(v, from, layer);
+  distance = int(layers.size()) - 1;
+  const auto& last = layers.back();
+  return *std::min_element(last.begin(), last.end(),
+                           [&](int64_t a, int64_t b) { return v.physical(a).z() < v.physical(b).z(); });
+}
+
+int64_t lowestVoxel(const BinaryVolume& v) {
+  int64_t best = -1;
+  double bestZ = INFINITY;
+  for (int64_t i = 0; i < v.voxelCount(); ++i)
+    if (v.inside[size_t(i)]) {
+      const double z = v.physical(i).z();
+      if (z < bestZ - 1e-9) {
+        bestZ = z;
+        best = i;
+      }
+    }
+  return best;
+}
+
+}  // namespace
+
+TubularClusters structureTube(const BinaryVolume& v, int64_t seed, const std::function<bool(double)>& progress) {
+  TubularClusters r;
+  auto aborted = [&](double f) {
+    if (progress && !progress(f)) {
+      r.error = "aborted";
+      return true;
+    }
+    return false;
+  };
+  const bool autoSeed = seed < 0;
+  if (autoSeed) seed = lowestVoxel(v);
+  if (seed < 0) {
+    r.error = "the structure is empty (no voxel selected)";
+    return r;
+  }
+  if (seed >= v.voxelCount() || !v.inside[size_t(seed)]) {
+    r.error = "the seed lies outside the structure";
+    return r;
+  }
+
+  // Step 1, beyond the paper: the lowest voxel starts a colon (the rectum), but not a U standing on its
+  // bend. When it is no end of the structure (an end F found from it is farther from the other end G than
+  // it is), the lower of the two ends is taken instead.
+  if (autoSeed) {
+    int fromSeed = 0, acrossEnds = 0;
+    const int64_t f = farEnd(v, seed, fromSeed);
+    const int64_t g = farEnd(v, f, acrossEnds);
+    if (double(fromSeed) < 0.9 * double(acrossEnds))
+      seed = v.physical(f).z() <= v.physical(g).z() ? f : g;
+  }
+
+  // Step 2a: Manhattan layers grown inside the structure.
+  const std::vector<std::vector<int64_t>> layers = growLayers(v, seed, r.layer);
+  int64_t reached = 0;
+  for (const auto& l : layers) reached += int64_t(l.size());
+  for (int64_t i = 0; i < v.voxelCount(); ++i) r.unreachedVoxels += v.inside[size_t(i)] != 0;
+  r.unreachedVoxels -= reached;
+  if (aborted(0.2)) return r;
+  r.borderDistance = sixDirectionBorderDistance(v);
+  if (aborted(0.4)) return r;
+
+  // Step 3: the primitive centerline, section by section.
+  r.primitive.push_back(seed);
+  r.primitiveLayer.push_back(0);
+  int current = 0;
+  while (current + 1 < int(layers.size())) {
+    int64_t volume = 1;
+    int height = 0, last = current;
+    for (int l = current + 1; l < int(layers.size()); ++l) {
+      volume += int64_t(layers[size_t(l)].size());
+      ++height;
+      last = l;
+      if (double(height) * height * height > 4.0 * double(volume) / M_PI) break;  // eq. (1)
+    }
+    const auto& lastLayer = layers[size_t(last)];
+    const int64_t chosen = *std::max_element(lastLayer.begin(), lastLayer.end(), [&](int64_t a, int64_t b) {
+      return r.borderDistance[size_t(a)] < r.borderDistance[size_t(b)];
+    });
+    r.primitive.push_back(chosen);
+    r.primitiveLayer.push_back(last);
+    current = last;
+  }
+  if (aborted(0.5)) return r;
+
+  // Step 4: clusters by membership mu_ij = Dm_j / D_ij among the vertices around the voxel's section.
+  const int n = int(r.primitive.size());
+  std::vector<Eigen::Vector3d> vertex(static_cast<size_t>(n));
+  std::vector<double> nearest(size_t(n), v.spacing.minCoeff());  // Dm_j
+  for (int j = 0; j < n; ++j) {
+    vertex[size_t(j)] = v.physical(r.primitive[size_t(j)]);
+    const auto c = v.coordinates(r.primitive[size_t(j)]);
+    double best = INFINITY;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          if ((dx | dy | dz) == 0 || !v.contains(c[0] + dx, c[1] + dy, c[2] + dz)) continue;
+          const int64_t other = v.index(c[0] + dx, c[1] + dy, c[2] + dz);
+          if (r.layer[size_t(other)] >= 0) best = std::min(best, (v.physical(other) - vertex[size_t(j)]).norm());
+        }
+    if (std::isfinite(best)) nearest[size_t(j)] = best;
+  }
+  struct Member {
+    int64_t voxel;
+    int cluster;
+    double relative;
+  };
+  std::vector<Member> members;
+  members.reserve(size_t(reached));
+  for (int l = 0; l < int(layers.size()); ++l) {
+    const int after = int(std::lower_bound(r.primitiveLayer.begin(), r.primitiveLayer.end(), l) - r.primitiveLayer.begin());
+    const int first = std::max(0, after - 2), lastCandidate = std::min(n - 1, after + 1);
+    for (int64_t voxel : layers[size_t(l)]) {
+      const Eigen::Vector3d p = v.physical(voxel);
+      auto membership = [&](int j) {
+        if (j < 0 || j >= n) return 0.0;
+        const double d = (p - vertex[size_t(j)]).norm();
+        return d > 0 ? nearest[size_t(j)] / d : std::numeric_limits<double>::infinity();
+      };
+      int cluster = first;
+      double best = -1;
+      for (int j = first; j <= lastCandidate; ++j)
+        if (const double mu = membership(j); mu > best) {
+          best = mu;
+          cluster = j;
+        }
+      const double next = membership(cluster + 1), previous = membership(cluster - 1);
+      members.push_back({voxel, cluster, std::isfinite(best) ? next - previous : 0.0});
+    }
+  }
+  if (aborted(0.8)) return r;
+
+  // Step 5: the total order.
+  std::stable_sort(members.begin(), members.end(), [](const Member& a, const Member& b) {
+    return a.cluster != b.cluster ? a.cluster < b.cluster : a.relative < b.relative;
+  });
+  r.orderedVoxels.reserve(members.size());
+  r.orderedCluster.reserve(members.size());
+  for (const auto& m : members) {
+    r.orderedVoxels.push_back(m.voxel);
+    r.orderedCluster.push_back(m.cluster);
+  }
+  aborted(1.0);
+  return r;
+}
+
+}  // namespace medial

@@ -1,0 +1,106 @@
+// TSK centerline (phase I clusters, phase II axis) on tube phantoms with known axes, and its volume tools.
+#include "TubePhantoms.h"
+#include "centerline/TskAxis.h"
+
+#include <gtest/gtest.h>
+
+using medial::testing::axisError;
+using medial::testing::tubePhantom;
+
+namespace {
+
+medial::Centerline centerlineOf(const medial::BinaryVolume& volume, int64_t seed = -1) {
+  const medial::TubularClusters clusters = medial::structureTube(volume, seed);
+  EXPECT_TRUE(clusters.ok()) << clusters.error;
+  return medial::tskAxis(volume, clusters);
+}
+
+Eigen::Vector3d uCurve(double s) {  // a U standing on its bend: two legs of 30, a half circle of radius 20
+  const double leg = 30, r = 20, a = s * (2 * leg + M_PI * r);
+  if (a < leg) return {10, 30, 55 - a};
+  if (a < leg + M_PI * r) {
+    const double angle = (a - leg) / r;
+    return {30 - r * std::cos(angle), 30, 25 - r * std::sin(angle)};
+  }
+  return {50, 30, 25 + a - leg - M_PI * r};
+}
+
+}  // namespace
+
+TEST(TskCenterline, StraightTubeIsOnItsAxis) {
+  const auto t = tubePhantom([](double s) { return Eigen::Vector3d(20, 20, 5 + 90 * s); }, 6, {40, 40, 100});
+  const auto c = centerlineOf(t.volume);
+  const auto e = axisError(c.points, t);
+  EXPECT_GT(e.points, 70);
+  EXPECT_LT(e.mean, 0.1);
+  EXPECT_LT(e.max, 0.6);  // measured 0.52, near the caps
+  // The axis runs from cap to cap (102); measured 106: the blend of the clusters' lines leaves small steps.
+  EXPECT_NEAR(c.length(), 90 + 2 * 6, 6);
+  for (double r : c.radius) EXPECT_LT(r, 6.6);
+  EXPECT_NEAR(c.radius[c.radius.size() / 2], 6, 0.7);
+}
+
+TEST(TskCenterline, UStandingOnItsBendStartsAtAnEnd) {
+  // The lowest voxel is the bottom of the bend, no end: P0 moves to the lower end of the two.
+  const auto t = tubePhantom(uCurve, 6, {60, 60, 62});
+  const auto c = centerlineOf(t.volume);
+  const auto e = axisError(c.points, t);
+  // Measured 0.34 voxel mean (the goal is 0.25: not met on curved tubes yet), 1.5 max.
+  EXPECT_LT(e.mean, 0.4);
+  EXPECT_LT(e.max, 2.0);
+  EXPECT_GT(c.length(), 0.9 * (60 + M_PI * 20));
+}
+
+TEST(TskCenterline, HelixWithAnisotropicSpacing) {
+  const auto t = tubePhantom(
+      [](double s) { return Eigen::Vector3d(28 + 14 * std::cos(4 * M_PI * s), 28 + 14 * std::sin(4 * M_PI * s), 6 + 54 * s); },
+      4, {80, 80, 66}, Eigen::Vector3d(0.7, 0.7, 1.0));
+  const auto c = centerlineOf(t.volume);
+  const auto e = axisError(c.points, t);
+  EXPECT_GT(e.points, 100);
+  EXPECT_LT(e.mean, 0.4);  // mm; spacing 0.7 x 0.7 x 1.0
+  EXPECT_LT(e.max, 1.2);
+}
+
+TEST(TskCenterline, BadSeedsAndEmptyVolumes) {
+  auto t = tubePhantom([](double s) { return Eigen::Vector3d(10, 10, 3 + 20 * s); }, 3, {20, 20, 26});
+  EXPECT_EQ(medial::structureTube(t.volume, 0).error, "the seed lies outside the structure");
+  medial::BinaryVolume empty = t.volume;
+  std::fill(empty.inside.begin(), empty.inside.end(), 0);
+  EXPECT_EQ(medial::structureTube(empty).error, "the structure is empty (no voxel selected)");
+  const auto aborted = medial::structureTube(t.volume, -1, [](double) { return false; });
+  EXPECT_EQ(aborted.error, "aborted");
+}
+
+TEST(BinaryVolume, ComponentsBorderAndHoles) {
+  medial::BinaryVolume v;
+  v.size = {10, 10, 10};
+  v.inside.assign(1000, 0);
+  auto set = [&](int i, int j, int k) { v.inside[size_t(v.index(i, j, k))] = 1; };
+  for (int i = 2; i <= 6; ++i)
+    for (int j = 2; j <= 6; ++j)
+      for (int k = 2; k <= 6; ++k) set(i, j, k);  // a 5^3 cube...
+  v.inside[size_t(v.index(4, 4, 4))] = 0;          // ...with a cavity
+  set(8, 8, 8);                                     // a lone voxel (second component)
+  for (int k = 0; k < 3; ++k) set(0, 9, k);          // a rod touching the border
+  EXPECT_EQ(medial::fillHoles(v), 1);
+  EXPECT_EQ(v.inside[size_t(v.index(4, 4, 4))], 1);
+  EXPECT_EQ(medial::dropBorderTouchingParts(v), 3);
+  EXPECT_EQ(medial::keepLargestComponent(v), 2);
+  EXPECT_EQ(std::count(v.inside.begin(), v.inside.end(), 1), 125);
+}
+
+TEST(BinaryVolume, DistanceMapIsExactEuclidean) {
+  medial::BinaryVolume v;
+  v.size = {12, 9, 7};
+  v.spacing = {0.5, 1.0, 2.0};
+  v.inside.assign(size_t(v.voxelCount()), 1);
+  v.inside[size_t(v.index(3, 4, 2))] = 0;
+  v.inside[size_t(v.index(9, 1, 5))] = 0;
+  const std::vector<float> d = medial::distanceToOutside(v);
+  for (int64_t i = 0; i < v.voxelCount(); ++i) {
+    const double expected = std::min((v.physical(i) - v.physical(v.index(3, 4, 2))).norm(),
+                                     (v.physical(i) - v.physical(v.index(9, 1, 5))).norm());
+    ASSERT_NEAR(d[size_t(i)], expected, 1e-4) << i;
+  }
+}
