@@ -18,5 +18,6 @@ const std::vector<Command>& commands();
 int runRender(const std::vector<std::string>& args);
 int runSkeleton(const std::vector<std::string>& args);
 int runSqm(const std::vector<std::string>& args);
+int runCenterline(const std::vector<std::string>& args);
 
 }  // namespace medial::cli

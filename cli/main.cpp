@@ -24,7 +24,6 @@ int notYetAvailable(const char* name) {
   return kFailure;
 }
 
-int runCenterline(const std::vector<std::string>&) { return notYetAvailable("centerline"); }
 int runSketch(const std::vector<std::string>&) { return notYetAvailable("sketch"); }
 
 }  // namespace
@@ -51,9 +50,24 @@ const std::vector<Command>& commands() {
        "  --quiet                   no progress line\n"
        "  --timings                 print stage times as JSON on stdout\n",
        runSkeleton},
-      {"centerline", "TSK centerline of a tubular structure in a CT volume (not yet available)",
-       "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] "
-       "[--profile PROFILE.csv]\n",
+      {"centerline", "TSK centerline of a tubular structure in a CT or label volume",
+       "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z]\n"
+       "                         [--fill-holes] [--keep-border-parts] [--antecedent-width W] [--quiet]\n"
+       "                         [--timings]\n\n"
+       "Follows a tube (colon, vessel) in VOLUME (.nii .nii.gz .mha .mhd .nrrd .inr .vti or a DICOM folder) by\n"
+       "the TSK method (WSCG 2008): layers and cylindrical clusters from P0, then three Takagi-Sugeno-Kang\n"
+       "models. The structure: voxels equal to L, or within LO..HI (parts touching the volume's border are\n"
+       "dropped: the air outside the body), else the non-zero voxels; its largest 26-connected component.\n"
+       "  -o, --output CENTERLINE   one polyline in mm with Radius and ArcLength (.vtp .vtk ...)\n"
+       "  --label L                 the structure is the voxels of label L\n"
+       "  --threshold LO:HI         the structure is the voxels in LO..HI (e.g. -1024:-600 for colon air)\n"
+       "  --seed X,Y,Z              P0 in mm (default: the lowest end of the structure)\n"
+       "  --fill-holes              fill cavities of the structure first\n"
+       "  --keep-border-parts       keep thresholded parts that touch the volume's border\n"
+       "  --antecedent-width W      TSK Gaussian width relative to a cluster (default 0.3)\n"
+       "  --profile PROFILE.csv     diameter profile: not available yet\n"
+       "  --quiet                   no progress line\n"
+       "  --timings                 print stage times as JSON on stdout\n",
        runCenterline},
       {"sqm", "quad-dominant tube mesh of a skeleton with radii (SQM)",
        "usage: medial sqm SKELETON.vtp|SKELETON.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME]\n"

@@ -145,12 +145,29 @@ Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, 
     return weights > 0 ? Eigen::Vector3d(sum / weights) : Eigen::Vector3d::Zero();
   };
 
-  // Dense samples of the model, then uniform arc length.
+  // Dense samples of the model between the first and the last cluster's centre (beyond them the end
+  // clusters' lines would be extrapolated into the tube's caps and hook), then uniform arc length.
+  // The end clusters are left out while their chosen point lies near the wall (border distance below half
+  // the median of the chosen points): P0 is on the wall of a cap (the lowest voxel), and the Manhattan
+  // layers reach a far cap first at its rim, so the end clusters are lopsided and would hook the axis.
+  std::vector<float> border;
+  for (int64_t voxel : clusters.primitive) border.push_back(clusters.borderDistance[size_t(voxel)]);
+  std::vector<float> sorted = border;
+  std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+  const float enough = 0.5f * sorted[sorted.size() / 2];
+  int firstRule = 0, lastRule = n - 1;
+  while (firstRule < lastRule && (!rules[size_t(firstRule)].used || border[size_t(firstRule)] < enough)) ++firstRule;
+  while (lastRule > firstRule && (!rules[size_t(lastRule)].used || border[size_t(lastRule)] < enough)) --lastRule;
+  double first = rules[size_t(firstRule)].centre, last = rules[size_t(lastRule)].centre;
+  if (!(last > first)) {
+    first = 0;
+    last = 1;
+  }
   const int dense = std::max(200, 16 * n);
   std::vector<Eigen::Vector3d> curve;
   std::vector<double> length{0};
   for (int s = 0; s <= dense; ++s) {
-    curve.push_back(model(double(s) / dense));
+    curve.push_back(model(first + (last - first) * double(s) / dense));
     if (s > 0) length.push_back(length.back() + (curve[size_t(s)] - curve[size_t(s) - 1]).norm());
   }
   const double step = p.sampleSpacing > 0 ? p.sampleSpacing : volume.spacing.minCoeff();

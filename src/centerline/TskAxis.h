@@ -12,7 +12,9 @@
 //   U mean error  0.33   0.34   0.43   0.59   1.69 voxels
 //   straight      108.7  106.0  104.6  103.8  -    length (narrow Gaussians leave small steps: wiggles)
 // 0.3 is the default.
-// The three models integrated over t give the 3-D axis, resampled at uniform arc length; Radius comes
+// The three models integrated over t, from the centre of the first cluster whose chosen point is not near
+// the wall to the last such one (the end clusters at the caps are lopsided and would hook the axis), give
+// the 3-D axis, resampled at uniform arc length; Radius comes
 // from the Euclidean distance map of the structure (distance to the nearest outside voxel centre minus half
 // a voxel, trilinear at the axis point).
 #pragma once

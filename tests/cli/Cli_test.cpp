@@ -51,7 +51,7 @@ TEST(Cli, UsageErrorsExitTwo) {
 }
 
 TEST(Cli, CommandsNotYetAvailableExitOne) {
-  for (const char* command : {"centerline", "sketch"}) {
+  for (const char* command : {"sketch"}) {
     auto r = runCommand(medialCommand(std::string(command) + " x -o y"));
     EXPECT_EQ(r.exitCode, 1) << command;
     EXPECT_NE(r.err.find("not yet available"), std::string::npos) << r.err;
@@ -141,6 +141,28 @@ TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
   }
   EXPECT_EQ(fineTriangles, 0);
   EXPECT_GT(fineQuads, 16 * 100);
+}
+
+TEST(Cli, CenterlineOfAPhantomAndItsErrors) {
+  const std::string dir = scratchDir("cli-centerline");
+  auto r = runCommand(medialCommand("centerline " + dataPath("volumes/tubes/helix.nii.gz") + " -o " + dir +
+                                    "/helix.vtp --label 1 --timings --quiet"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("\"centerline\""), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/helix.vtp"));
+  auto missing = runCommand(medialCommand("centerline " + dataPath("volumes/tubes/helix.nii.gz") + " -o " + dir +
+                                          "/x.vtp --label 9 --quiet"));
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_EQ(lineCount(missing.err), 1) << missing.err;
+  EXPECT_NE(missing.err.find("no voxel has the label 9"), std::string::npos) << missing.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.vtp"));
+  auto notVolume = runCommand(medialCommand("centerline " + dataPath("meshes/torus.off") + " -o " + dir + "/y.vtp --quiet"));
+  EXPECT_EQ(notVolume.exitCode, 1);
+  for (const char* bad : {"--threshold 5", "--label 1 --threshold 0:1", "--seed 1,2", "--label 1.5"}) {
+    auto usage = runCommand(medialCommand("centerline " + dataPath("volumes/tubes/helix.nii.gz") + " -o " + dir +
+                                          "/z.vtp " + bad));
+    EXPECT_EQ(usage.exitCode, 2) << bad << ": " << usage.err;
+  }
 }
 
 TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {

@@ -81,6 +81,19 @@ class MedialPython(unittest.TestCase):
         self.assertGreater(quads, mesh.GetNumberOfCells() // 2)
         self.assertIsNotNone(mesh.GetPointData().GetArray("SkeletonNode"))
 
+    def test_tsk_centerline_of_a_phantom(self):
+        data = os.path.join(os.environ.get("MEDIAL_SOURCE_DIR", "."), "data")
+        reader = medial.vtkMedialReader()
+        reader.SetFileName(os.path.join(data, "volumes", "tubes", "u.nii.gz"))
+        centerline = medial.vtkMedialTskCenterline()
+        centerline.SetInputConnection(reader.GetOutputPort())
+        centerline.SetLabel(1)
+        centerline.Update()
+        line = centerline.GetOutput()
+        self.assertGreater(line.GetNumberOfPoints(), 50)
+        arc = line.GetPointData().GetArray("ArcLength")
+        self.assertGreater(arc.GetValue(arc.GetNumberOfTuples() - 1), 80.0)  # mm along the U
+
     def test_bad_file_gives_error_and_empty_output(self):
         reader = medial.vtkMedialReader()
         reader.SetFileName(os.path.join(tempfile.gettempdir(), "does-not-exist.off"))

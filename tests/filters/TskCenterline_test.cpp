@@ -1,0 +1,128 @@
+// vtkMedialTskCenterline on the phantoms of data/volumes/tubes (data/make-tube-phantoms.py): error against
+// the analytic axes, physical units through NIfTI, and errors on bad input.
+#include "TestPaths.h"
+
+#include "MedialErrorCollector.h"
+#include "vtkMedialReader.h"
+#include "vtkMedialTskCenterline.h"
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+vtkSmartPointer<vtkDataObject> read(const std::string& path) {
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return reader->GetOutputDataObject(0);
+}
+
+double distanceToLine(const double p[3], vtkPolyData* line) {
+  double best = INFINITY;
+  for (vtkIdType k = 0; k + 1 < line->GetNumberOfPoints(); ++k) {
+    double a[3], b[3];
+    line->GetPoint(k, a);
+    line->GetPoint(k + 1, b);
+    double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ap[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+    const double length2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
+    const double t = std::clamp((ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / std::max(length2, 1e-300), 0.0, 1.0);
+    const double d[3] = {a[0] + t * ab[0] - p[0], a[1] + t * ab[1] - p[1], a[2] + t * ab[2] - p[2]};
+    best = std::min(best, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+  }
+  return best;
+}
+
+struct Phantom {
+  const char* name;
+  double maxMeanError;  // mm, measured + margin (the goal, 0.25 voxel, is not met yet)
+};
+
+std::ostream& operator<<(std::ostream& os, const Phantom& p) { return os << p.name; }
+
+class TubePhantoms : public ::testing::TestWithParam<Phantom> {};
+
+TEST_P(TubePhantoms, CenterlineFollowsTheTrueAxis) {
+  const std::string folder = medial::test::dataPath("volumes/tubes/");
+  const auto imageData = read(folder + GetParam().name + ".nii.gz");  // keeps the data alive
+  const auto axisData = read(folder + GetParam().name + "-axis.vtp");
+  auto image = vtkImageData::SafeDownCast(imageData);
+  auto axis = vtkPolyData::SafeDownCast(axisData);
+  ASSERT_TRUE(image && axis);
+  auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  auto errors = medial::ErrorCollector::Watch(filter);
+  filter->SetInputData(image);
+  filter->SetLabel(1);
+  filter->Update();
+  ASSERT_FALSE(errors->HasErrors()) << errors->Joined();
+  vtkPolyData* centerline = filter->GetOutput();
+  ASSERT_EQ(centerline->GetNumberOfLines(), 1);
+  ASSERT_TRUE(centerline->GetPointData()->GetArray("Radius"));
+  vtkDataArray* arc = centerline->GetPointData()->GetArray("ArcLength");
+  ASSERT_TRUE(arc);
+  double sum = 0, worst = 0;
+  for (vtkIdType i = 0; i < centerline->GetNumberOfPoints(); ++i) {
+    double p[3];
+    centerline->GetPoint(i, p);
+    const double d = distanceToLine(p, axis);
+    sum += d;
+    worst = std::max(worst, d);
+  }
+  const double mean = sum / double(centerline->GetNumberOfPoints());
+  std::printf("%s: %lld points, %.0f mm long, mean %.3f mm, max %.3f mm\n", GetParam().name,
+              static_cast<long long>(centerline->GetNumberOfPoints()), arc->GetTuple1(arc->GetNumberOfTuples() - 1),
+              mean, worst);
+  EXPECT_LT(mean, GetParam().maxMeanError);
+  EXPECT_LT(worst, 2.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Paper, TubePhantoms,
+                         ::testing::Values(Phantom{"u", 0.4}, Phantom{"s-plane", 0.55}, Phantom{"s-3d", 0.55},
+                                           Phantom{"s-radius", 0.65}, Phantom{"helix", 0.35},
+                                           Phantom{"helix-tight", 0.35}),
+                         [](const ::testing::TestParamInfo<Phantom>& info) {
+                           std::string name = info.param.name;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+TEST(TskCenterlineFilter, BadInputGivesErrorsAndEmptyOutput) {
+  const auto data = read(medial::test::dataPath("volumes/tubes/u.nii.gz"));
+  auto image = vtkImageData::SafeDownCast(data);
+  ASSERT_TRUE(image);
+  auto expectError = [&](vtkMedialTskCenterline* filter, const std::string& text) {
+    auto errors = medial::ErrorCollector::Watch(filter);
+    filter->SetInputData(image);
+    filter->Update();
+    EXPECT_NE(errors->Joined().find(text), std::string::npos) << errors->Joined();
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  };
+  auto missingLabel = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  missingLabel->SetLabel(7);
+  expectError(missingLabel, "no voxel has the label 7");
+  auto outsideSeed = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  outsideSeed->SetSeed(0, 0, 0);
+  expectError(outsideSeed, "lies outside the structure");
+  auto nothingLeft = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  nothingLeft->SetThreshold(5, 9);
+  expectError(nothingLeft, "nothing is left to follow");
+
+  auto flat = vtkSmartPointer<vtkImageData>::New();
+  flat->SetDimensions(20, 20, 1);
+  flat->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto flatFilter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  auto errors = medial::ErrorCollector::Watch(flatFilter);
+  flatFilter->SetInputData(flat);
+  flatFilter->Update();
+  EXPECT_NE(errors->Joined().find("a 3-D volume is needed"), std::string::npos) << errors->Joined();
+}
+
+}  // namespace
