@@ -1,0 +1,143 @@
+#!/usr/bin/python3
+"""Benchmark: Medial's TSK centerline against two peers on the paper's tube phantoms, in one run.
+
+Peers: scikit-image's 3-D skeletonize (Lee et al. thinning), and a distance-map minimal path (Dijkstra on
+26-connected voxels, step cost length / distance-to-wall^2) between the same end points as Medial's axis.
+Per phantom: median seconds of each (over --repeat runs), mean and max distance to the true axis (mm,
+voxels and % of the axis length as in the paper's Table 2), leaving out one radius at each end.
+    PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 bench/tsk_bench.py [--repeat N] [NAME...]
+"""
+import argparse
+import math
+import os
+import statistics
+import time
+
+import numpy as np
+import scipy.ndimage
+import scipy.sparse
+import scipy.sparse.csgraph
+import skimage.morphology
+import vtk
+from vtk.util import numpy_support
+
+import medial
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TUBES = os.path.join(HERE, "..", "data", "volumes", "tubes")
+RADIUS = {"u": 5, "s-plane": 5, "s-3d": 5, "s-radius": 5, "helix": 4, "helix-tight": 3.5}
+
+
+def read_volume(name):
+    reader = medial.vtkMedialReader()
+    reader.SetFileName(os.path.join(TUBES, name + ".nii.gz"))
+    reader.Update()
+    image = reader.GetOutputDataObject(0)
+    dims = image.GetDimensions()
+    array = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars()).reshape(dims[::-1]).transpose(2, 1, 0)
+    return image, array > 0, np.array(image.GetSpacing()), np.array(image.GetOrigin())
+
+
+def read_axis(name):
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(os.path.join(TUBES, name + "-axis.vtp"))
+    reader.Update()
+    line = reader.GetOutput()
+    return np.array([line.GetPoint(i) for i in range(line.GetNumberOfPoints())])
+
+
+def distances_to_polyline(points, line):
+    a, b = line[:-1], line[1:]
+    ab = b - a
+    length2 = np.maximum((ab * ab).sum(1), 1e-300)
+    best = np.full(len(points), np.inf)
+    for i, p in enumerate(points):
+        t = np.clip(((p - a) * ab).sum(1) / length2, 0, 1)
+        best[i] = np.linalg.norm(a + t[:, None] * ab - p, axis=1).min()
+    return best
+
+
+def errors(points, axis, radius, spacing):
+    keep = (np.linalg.norm(points - axis[0], axis=1) >= radius) & (np.linalg.norm(points - axis[-1], axis=1) >= radius)
+    d = distances_to_polyline(points[keep], axis)
+    length = np.linalg.norm(np.diff(axis, axis=0), axis=1).sum()
+    voxel = spacing.min()
+    return d.mean(), d.max(), d.mean() / voxel, 100 * d.mean() / length
+
+
+def medial_centerline(image):
+    f = medial.vtkMedialTskCenterline()
+    f.SetInputData(image)
+    f.SetLabel(1)
+    f.Update()
+    line = f.GetOutput()
+    return np.array([line.GetPoint(i) for i in range(line.GetNumberOfPoints())])
+
+
+def skeleton_points(inside, spacing, origin):
+    skeleton = skimage.morphology.skeletonize_3d(inside.astype(np.uint8))
+    return np.argwhere(skeleton > 0) * spacing + origin
+
+
+def minimal_path(inside, spacing, origin, start, end):
+    """Dijkstra on the 26-connected voxels; step cost = step length / (distance to the wall)^2."""
+    distance = scipy.ndimage.distance_transform_edt(inside, sampling=spacing)
+    index = -np.ones(inside.shape, dtype=np.int64)
+    voxels = np.argwhere(inside)
+    index[tuple(voxels.T)] = np.arange(len(voxels))
+    rows, cols, costs = [], [], []
+    for offset in [(dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1) if (dx, dy, dz) > (0, 0, 0)]:
+        neighbour = voxels + offset
+        ok = np.all((neighbour >= 0) & (neighbour < inside.shape), axis=1)
+        ok[ok] &= inside[tuple(neighbour[ok].T)]
+        a, b = index[tuple(voxels[ok].T)], index[tuple(neighbour[ok].T)]
+        step = np.linalg.norm(np.array(offset) * spacing)
+        cost = step * 0.5 * (1 / distance[tuple(voxels[ok].T)] ** 2 + 1 / distance[tuple(neighbour[ok].T)] ** 2)
+        rows += [a, b]
+        cols += [b, a]
+        costs += [cost, cost]
+    graph = scipy.sparse.csr_matrix((np.concatenate(costs), (np.concatenate(rows), np.concatenate(cols))),
+                                    shape=(len(voxels), len(voxels)))
+    to_index = lambda p: index[tuple(np.round((p - origin) / spacing).astype(int))]
+    s, e = to_index(start), to_index(end)
+    if s < 0 or e < 0:
+        return np.zeros((0, 3))
+    _, predecessors = scipy.sparse.csgraph.dijkstra(graph, indices=s, return_predecessors=True)
+    path = [e]
+    while path[-1] != s and path[-1] >= 0:
+        path.append(predecessors[path[-1]])
+    return voxels[path[::-1]] * spacing + origin
+
+
+def timed(repeat, run):
+    times, result = [], None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        result = run()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times), result
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("names", nargs="*", default=list(RADIUS))
+    args = parser.parse_args()
+    print("TSK centerline (Medial) vs skimage skeletonize_3d vs distance-map minimal path; median of %d runs" % args.repeat)
+    print("%-12s | %-34s | %-34s | %-34s" % ("phantom", "Medial: s, mean/max mm, vox, %", "skeletonize", "minimal path"))
+    for name in args.names:
+        image, inside, spacing, origin = read_volume(name)
+        axis, radius = read_axis(name), RADIUS[name]
+        row = []
+        t, ours = timed(args.repeat, lambda: medial_centerline(image))
+        row.append((t, errors(ours, axis, radius, spacing)))
+        t, skel = timed(args.repeat, lambda: skeleton_points(inside, spacing, origin))
+        row.append((t, errors(skel, axis, radius, spacing)))
+        t, path = timed(args.repeat, lambda: minimal_path(inside, spacing, origin, ours[0], ours[-1]))
+        row.append((t, errors(path, axis, radius, spacing) if len(path) else (math.nan,) * 4))
+        cells = ["%.4f s %.3f/%.2f mm %.2f vox %.2f%%" % (t, e[0], e[1], e[2], e[3]) for t, e in row]
+        print("%-12s | %s" % (name, " | ".join(cells)))
+
+
+if __name__ == "__main__":
+    main()
