@@ -4,6 +4,7 @@
 //   medial_bench_mesh_topology [--repeat N] MESH...
 // With no mesh: the CGAL samples under data/external (scripts/fetch-samples), armadillo also after one
 // Loop subdivision (~104k vertices).
+#include "MedianSeconds.h"
 #include "vtkMedialMeshTopology.h"
 #include "vtkMedialReader.h"
 
@@ -23,17 +24,6 @@
 #include <vector>
 
 namespace {
-
-double medianSeconds(int repeat, const std::function<void()>& run) {
-  std::vector<double> times;
-  for (int i = 0; i < repeat; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
-}
 
 struct Counts {
   long border = 0, nonManifold = 0, components = 0;

@@ -3,6 +3,7 @@
 // the open (border) and non-manifold edges of each output - SQM's is one closed surface, the tube filter's
 // is one open tube per line cell. The paper's Table 1: 74 ms for 150 nodes (goal: >= 10x faster).
 //   medial_bench_sqm [--repeat N] [SKELETON...]   (default: data/skeletons/sqm/*.vtp, figure, hand)
+#include "MedianSeconds.h"
 #include "vtkMedialMeshTopology.h"
 #include "vtkMedialReader.h"
 #include "vtkMedialSQM.h"
@@ -23,17 +24,6 @@
 #include <vector>
 
 namespace {
-
-double medianSeconds(int repeat, const std::function<void()>& run) {
-  std::vector<double> times;
-  for (int i = 0; i < repeat; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
-}
 
 struct Summary {
   vtkIdType faces = 0, border = 0, nonManifold = 0;

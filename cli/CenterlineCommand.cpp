@@ -3,10 +3,10 @@
 #include "CommandLine.h"
 #include "Progress.h"
 #include "ReadInput.h"
+#include "RunFilter.h"
 #include "Timings.h"
 #include "WriteOutput.h"
 
-#include "MedialErrorCollector.h"
 #include "vtkMedialTskCenterline.h"
 
 #include <vtkImageData.h>
@@ -64,12 +64,7 @@ int runCenterline(const std::vector<std::string>& args) {
   if (!image) throw Failure(input + ": not a volume");
 
   timings.start("centerline");
-  auto errors = medial::ErrorCollector::Watch(filter);
-  filter->SetInputData(image);
-  progress.watch(filter, "centerline of " + input);
-  filter->Update();
-  progress.finish();
-  if (errors->HasErrors()) throw Failure(input + ": " + errors->Joined());
+  runFilter(filter, image, input, "centerline of " + input, progress);
 
   timings.start("write");
   writePolyData(filter->GetOutput(), output);

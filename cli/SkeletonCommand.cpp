@@ -4,6 +4,7 @@
 #include "CommandLine.h"
 #include "Progress.h"
 #include "ReadInput.h"
+#include "RunFilter.h"
 #include "WriteOutput.h"
 #include "Timings.h"
 
@@ -61,12 +62,7 @@ int runSkeleton(const std::vector<std::string>& args) {
     throw Failure(input + ": not a surface mesh (no polygons)");
 
   timings.start("skeleton");
-  auto errors = medial::ErrorCollector::Watch(filter);
-  filter->SetInputData(mesh);
-  progress.watch(filter, "skeleton of " + input);
-  filter->Update();
-  progress.finish();
-  if (errors->HasErrors()) throw Failure(input + ": " + errors->Joined());
+  runFilter(filter, mesh, input, "skeleton of " + input, progress);
 
   timings.start("write");
   writePolyData(filter->GetOutput(0), output);

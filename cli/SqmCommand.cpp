@@ -4,6 +4,7 @@
 #include "CommandLine.h"
 #include "Progress.h"
 #include "ReadInput.h"
+#include "RunFilter.h"
 #include "Timings.h"
 #include "WriteOutput.h"
 
@@ -54,12 +55,7 @@ int runSqm(const std::vector<std::string>& args) {
   if (!skeleton || skeleton->GetNumberOfPoints() == 0) throw Failure(input + ": not a skeleton (no nodes)");
 
   timings.start("sqm");
-  auto errors = medial::ErrorCollector::Watch(filter);
-  filter->SetInputData(skeleton);
-  progress.watch(filter, "tube mesh of " + input);
-  filter->Update();
-  progress.finish();
-  if (errors->HasErrors()) throw Failure(input + ": " + errors->Joined());
+  runFilter(filter, skeleton, input, "tube mesh of " + input, progress);
 
   timings.start("write");
   writePolyData(filter->GetOutput(), output);
