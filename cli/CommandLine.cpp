@@ -33,6 +33,7 @@ ParsedArgs parseArgs(const std::vector<std::string>& args, const OptionSpec& spe
         value = args[++i];
       }
       parsed.values[name] = value;
+      parsed.allValues[name].push_back(value);
     } else {
       throw UsageError("unknown option " + name);
     }

@@ -28,13 +28,18 @@ struct OptionSpec {
 
 struct ParsedArgs {
   std::vector<std::string> positional;
-  std::map<std::string, std::string> values;
+  std::map<std::string, std::string> values;  // the last value of each option
+  std::map<std::string, std::vector<std::string>> allValues;  // every value of a repeated option
   std::set<std::string> flags;
 
   bool has(const std::string& flag) const { return flags.count(flag) || values.count(flag); }
   std::string value(const std::string& option, const std::string& fallback = "") const {
     auto it = values.find(option);
     return it == values.end() ? fallback : it->second;
+  }
+  std::vector<std::string> all(const std::string& option) const {
+    auto it = allValues.find(option);
+    return it == allValues.end() ? std::vector<std::string>{} : it->second;
   }
 };
 

@@ -1,5 +1,6 @@
 // `medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION] [--skeleton-scale S]
-//                [--mesh-opacity A]`
+//                [--mesh-opacity A] [--ghost INPUT]... [--cutaway] [--ghost-opacity A]
+//                [--ghost-importance I,...] [--ghost-conflict gradual|depth] [--ghost-map-scale S]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "PrivateDisplay.h"
@@ -9,17 +10,71 @@
 
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"
+#include "vtkMedialGhostPass.h"
 #include "vtkMedialScene.h"
 
+#include <vtkProp3D.h>
 #include <vtkSmartPointer.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <map>
 
 namespace medial::cli {
 
+namespace {
+
+double parseFraction(const ParsedArgs& parsed, const std::string& option, double fallback, double low, double high,
+                     const std::string& range) {
+  if (!parsed.has(option)) return fallback;
+  const double value = parseNumbers(parsed.value(option), 1, option)[0];
+  if (!(value >= low && value <= high)) throw UsageError(option + " must be in " + range);
+  return value;
+}
+
+// Two spellings of one file name the same input.
+std::string sameFileKey(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+  return error ? path : canonical.string();
+}
+
+struct GhostOptions {
+  std::vector<std::string> inputs;
+  std::vector<double> importance;
+  bool cutaway = false;
+  double opacity = 0.25;
+  bool depthSorting = false;
+  double mapScale = 0.5;
+};
+
+GhostOptions parseGhostOptions(const ParsedArgs& parsed) {
+  GhostOptions ghost;
+  ghost.inputs = parsed.all("--ghost");
+  ghost.importance.assign(ghost.inputs.size(), 1.0);
+  if (parsed.has("--ghost-importance")) {
+    if (ghost.inputs.empty()) throw UsageError("--ghost-importance needs --ghost INPUT");
+    ghost.importance = parseNumbers(parsed.value("--ghost-importance"), ghost.inputs.size(), "--ghost-importance");
+    for (double value : ghost.importance)
+      if (!(value > 0 && value <= 1)) throw UsageError("--ghost-importance values must be in (0, 1]");
+  }
+  ghost.cutaway = parsed.has("--cutaway");
+  ghost.opacity = parseFraction(parsed, "--ghost-opacity", 0.25, 0, 1, "[0, 1]");
+  ghost.mapScale = parseFraction(parsed, "--ghost-map-scale", 0.5, 0.05, 1, "[0.05, 1]");
+  const std::string conflict = parsed.value("--ghost-conflict", "gradual");
+  if (conflict != "gradual" && conflict != "depth")
+    throw UsageError("--ghost-conflict must be gradual or depth, got '" + conflict + "'");
+  ghost.depthSorting = conflict == "depth";
+  return ghost;
+}
+
+}  // namespace
+
 int runRender(const std::vector<std::string>& args) {
-  const ParsedArgs parsed =
-      parseArgs(args, {{"-o", "--output", "--size", "--camera", "--skeleton-scale", "--mesh-opacity"}, {"--quiet", "--timings"}});
+  const ParsedArgs parsed = parseArgs(
+      args, {{"-o", "--output", "--size", "--camera", "--skeleton-scale", "--mesh-opacity", "--ghost", "--ghost-opacity",
+              "--ghost-importance", "--ghost-conflict", "--ghost-map-scale"},
+             {"--quiet", "--timings", "--cutaway"}});
   if (parsed.positional.empty()) throw UsageError("render needs at least one INPUT file");
   std::string output = parsed.value("-o", parsed.value("--output"));
   if (output.empty()) throw UsageError("render needs -o IMAGE.png");
@@ -32,24 +87,37 @@ int runRender(const std::vector<std::string>& args) {
     skeletonScale = parseNumbers(parsed.value("--skeleton-scale"), 1, "--skeleton-scale")[0];
     if (!(skeletonScale > 0)) throw UsageError("--skeleton-scale must be positive");
   }
-
-  double meshOpacity = 1.0;
-  if (parsed.has("--mesh-opacity")) {
-    meshOpacity = parseNumbers(parsed.value("--mesh-opacity"), 1, "--mesh-opacity")[0];
-    if (!(meshOpacity >= 0 && meshOpacity <= 1)) throw UsageError("--mesh-opacity must be in [0, 1]");
-  }
+  const double meshOpacity = parseFraction(parsed, "--mesh-opacity", 1.0, 0, 1, "[0, 1]");
+  const GhostOptions ghost = parseGhostOptions(parsed);
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
   auto scene = vtkSmartPointer<vtkMedialScene>::New();
   scene->SetSkeletonRadiusScale(skeletonScale);
   scene->SetMeshOpacity(meshOpacity);
-  for (const std::string& input : parsed.positional) {
+  std::map<std::string, vtkProp3D*> propOfFile;
+  auto addFile = [&](const std::string& input) {
     timings.start("read");
     const vtkSmartPointer<vtkDataObject> data = readInput(input, progress);
     timings.start("scene");
     auto sceneErrors = medial::ErrorCollector::Watch(scene);
-    if (!scene->AddData(data)) throw Failure(input + ": " + sceneErrors->Joined());
+    vtkProp3D* prop = scene->AddData(data);
+    if (!prop) throw Failure(input + ": " + sceneErrors->Joined());
+    propOfFile.emplace(sameFileKey(input), prop);
+    return prop;
+  };
+  for (const std::string& input : parsed.positional) addFile(input);
+  for (size_t i = 0; i < ghost.inputs.size(); ++i) {
+    const auto known = propOfFile.find(sameFileKey(ghost.inputs[i]));
+    vtkProp3D* prop = known != propOfFile.end() ? known->second : addFile(ghost.inputs[i]);
+    scene->SetImportance(prop, ghost.importance[i]);
+  }
+  if (!ghost.inputs.empty()) {
+    vtkMedialGhostPass* pass = scene->GetGhostPass();
+    pass->SetMode(ghost.cutaway ? vtkMedialGhostPass::Cutaway : vtkMedialGhostPass::Ghost);
+    pass->SetGhostOpacity(ghost.opacity);
+    pass->SetConflict(ghost.depthSorting ? vtkMedialGhostPass::DepthSorting : vtkMedialGhostPass::GradualImportance);
+    pass->SetMapScale(ghost.mapScale);
   }
 
   timings.start("display");

@@ -89,7 +89,9 @@ const std::vector<Command>& commands() {
        "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp]\n", runSketch},
       {"render", "render meshes, skeletons and volumes offscreen to a PNG",
        "usage: medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION]\n"
-       "                     [--skeleton-scale S] [--mesh-opacity A] [--quiet] [--timings]\n"
+       "                     [--skeleton-scale S] [--mesh-opacity A]\n"
+       "                     [--ghost INPUT]... [--cutaway] [--ghost-opacity A] [--ghost-importance I,...]\n"
+       "                     [--ghost-conflict gradual|depth] [--ghost-map-scale S] [--quiet] [--timings]\n"
        "\n"
        "Renders every INPUT (meshes: .vtp .vtk .vtu .obj .ply .stl .off; skeletons: .vtp .swc, drawn as\n"
        "tubes from their Radius; volumes: .nii .nii.gz .mha .mhd .nrrd .inr .inr.gz .vti .inv3 or a DICOM\n"
@@ -99,6 +101,15 @@ const std::vector<Command>& commands() {
        "  --camera AZ,EL           degrees around the front view (default 30,20)\n"
        "  --skeleton-scale S       scale of skeleton tube radii (default 1)\n"
        "  --mesh-opacity A         opacity of meshes in [0, 1] (default 1); below 1 shows skeletons inside\n"
+       "  --ghost INPUT            an object of interest, kept visible through what hides it (ghost view,\n"
+       "                           Hoffmann et al. 2008); repeat for several; an INPUT already listed is\n"
+       "                           marked, another file is added\n"
+       "  --cutaway                remove the occluders over the objects of interest instead of ghosting\n"
+       "  --ghost-opacity A        opacity of a ghosted occluder, 0..1 (default 0.25)\n"
+       "  --ghost-importance I,... importance of each --ghost object in order, (0, 1] (default all 1)\n"
+       "  --ghost-conflict C       gradual: the more important object shows through the less (default);\n"
+       "                           depth: the nearer object of interest wins\n"
+       "  --ghost-map-scale S      importance-map resolution as a fraction of the image's (default 0.5)\n"
        "  --quiet                  no progress line\n"
        "  --timings                print stage times as JSON on stdout\n"
        "Without an X display, a private Xvfb is started (package xvfb).\n",

@@ -4,6 +4,7 @@
 #include "MedialFileNames.h"
 #include "MedialSkeletonData.h"
 #include "MedialXDisplay.h"
+#include "vtkMedialGhostPass.h"
 
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
@@ -71,6 +72,7 @@ void vtkMedialScene::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SkeletonRadiusScale: " << this->SkeletonRadiusScale << "\n";
   os << indent << "MeshOpacity: " << this->MeshOpacity << "\n";
+  os << indent << "GhostPass: " << (this->GhostPass ? "installed" : "(none)") << "\n";
 }
 
 vtkRenderer* vtkMedialScene::GetRenderer() { return this->Renderer; }
@@ -80,6 +82,19 @@ bool vtkMedialScene::IsSkeleton(vtkPolyData* polyData) { return medial::looksLik
 void vtkMedialScene::GetPaletteColor(int i, double rgb[3]) {
   const double* c = kPalette[((i % kPaletteSize) + kPaletteSize) % kPaletteSize];
   std::copy(c, c + 3, rgb);
+}
+
+vtkMedialGhostPass* vtkMedialScene::GetGhostPass() {
+  if (!this->GhostPass) {
+    this->GhostPass = vtkSmartPointer<vtkMedialGhostPass>::New();
+    this->Renderer->SetPass(this->GhostPass);
+  }
+  return this->GhostPass;
+}
+
+void vtkMedialScene::SetImportance(vtkProp* prop, double importance) {
+  this->GetGhostPass();
+  vtkMedialGhostPass::SetImportance(prop, importance);
 }
 
 vtkProp3D* vtkMedialScene::AddData(vtkDataObject* data) {

@@ -18,6 +18,8 @@
 class vtkDataObject;
 class vtkPolyData;
 class vtkImageData;
+class vtkMedialGhostPass;
+class vtkProp;
 class vtkProp3D;
 class vtkRenderer;
 
@@ -43,6 +45,12 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   /// (a skeleton, a centerline); translucency is sorted by depth peeling.
   vtkSetClampMacro(MeshOpacity, double, 0.0, 1.0);
   vtkGetMacro(MeshOpacity, double);
+
+  /// The ghost-view pass (vtkMedialGhostPass) of this scene's renderer, installed on first use: objects
+  /// of interest stay visible through the meshes that hide them.
+  vtkMedialGhostPass* GetGhostPass();
+  /// Makes a prop an object of interest (importance in (0, 1]) or context (0), and installs the pass.
+  void SetImportance(vtkProp* prop, double importance);
 
   /// The default three-quarter view that fits every visible prop, for the window's aspect ratio (4:3
   /// when the renderer has no window yet).
@@ -78,6 +86,7 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   vtkProp3D* AddVolume(vtkImageData* image);
 
   vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkMedialGhostPass> GhostPass;
   int ColorIndex = 0;
   double SkeletonRadiusScale = 1.0;
   double MeshOpacity = 1.0;

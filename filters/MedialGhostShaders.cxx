@@ -1,0 +1,101 @@
+#include "MedialGhostShaders.h"
+
+#include <vtkOpenGLRenderUtilities.h>
+#include <vtkShaderProgram.h>
+
+namespace medial::ghost {
+
+const char* const kFragmentDeclarations = R"(
+// Medial ghost view (importance map, Hoffmann et al. 2008)
+uniform sampler2D medialGhostMap;    // r: importance, g: window depth, b: coverage (feathered)
+uniform int medialGhostPhase;        // 1: drawing the importance map, 2: drawing the scene
+uniform float medialGhostImportance; // this prop's importance
+uniform float medialGhostOpacity;    // opacity over a more important object (0: cutaway)
+uniform float medialGhostSilhouette; // extra opacity at the silhouette, 0..1
+uniform int medialGhostGradual;      // 1: most important object wins the map, 0: nearest
+uniform int medialGhostWriteDepth;   // 1: ghosted fragments write the map's depth (opaque step)
+uniform vec4 medialGhostViewport;    // lower-left corner and size of the viewport, pixels
+)";
+
+const char* const kImplementationTag = "//MEDIAL::Ghost::Impl";
+
+std::string fragmentImplementation(bool withSilhouette, bool writesDepth) {
+  std::string code = R"(
+  float medialDepth = gl_FragCoord.z;
+  if (medialGhostPhase == 1)
+  {
+    // Importance map (paper §3 step 1). Gradual importance: the depth test keeps the most important
+    // object, the nearest among equals; depth sorting: the nearest.
+    gl_FragData[0] = vec4(medialGhostImportance, gl_FragCoord.z, 1.0, 1.0);
+    if (medialGhostGradual == 1)
+    {
+      medialDepth = (1.0 - medialGhostImportance) * 0.999 + gl_FragCoord.z * 0.001;
+    }
+  }
+  else if (medialGhostPhase == 2)
+  {
+    // Scene (paper §3 step 2): lower the opacity in front of a more important object.
+    vec2 medialUV = (gl_FragCoord.xy - medialGhostViewport.xy) / medialGhostViewport.zw;
+    ivec2 medialSize = textureSize(medialGhostMap, 0);
+    ivec2 medialTexel = clamp(ivec2(medialUV * vec2(medialSize)), ivec2(0), medialSize - ivec2(1));
+    vec4 medialMap = texelFetch(medialGhostMap, medialTexel, 0);
+    float medialCoverage = texture(medialGhostMap, medialUV).b;
+    if (medialCoverage > 0.0 && medialMap.r > medialGhostImportance && gl_FragCoord.z < medialMap.g)
+    {
+      float medialTarget = mix(medialGhostOpacity, 1.0, medialGhostImportance / medialMap.r);
+)";
+  if (withSilhouette)
+    code += R"(
+      // Outline cue on the outer surface only: the far walls seen from inside stay plain ghosts.
+      if (gl_FrontFacing)
+      {
+        float medialFacing = abs(normalize(normalVCVSOutput).z);
+        medialTarget = mix(medialTarget, 1.0, medialGhostSilhouette * (1.0 - medialFacing) * (1.0 - medialFacing));
+      }
+)";
+  code += R"(
+      gl_FragData[0].a *= mix(1.0, medialTarget, clamp(medialCoverage, 0.0, 1.0));
+      if (medialGhostWriteDepth == 1)
+      {
+        medialDepth = medialMap.g;
+      }
+    }
+  }
+)";
+  if (writesDepth) code += "  gl_FragDepth = medialDepth;\n";
+  return code;
+}
+
+std::string mapFilterFragmentShader() {
+  std::string source = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+  vtkShaderProgram::Substitute(source, "//VTK::FSQ::Decl",
+                               "uniform sampler2D source;\n"
+                               "uniform ivec2 direction;\n"
+                               "uniform int radius;\n");
+  vtkShaderProgram::Substitute(source, "//VTK::FSQ::Impl", R"(
+  ivec2 size = textureSize(source, 0);
+  ivec2 p = ivec2(texCoord * vec2(size));  // texCoord (not gl_FragCoord): the quad needs its attribute used
+  float importance = 0.0;
+  float depth = 1.0;
+  float coverage = 0.0;
+  int reach = max(radius, 1);
+  for (int i = -reach; i <= reach; ++i)
+  {
+    vec4 s = texelFetch(source, clamp(p + i * direction, ivec2(0), size - ivec2(1)), 0);
+    if (s.b > 0.0)
+    {
+      depth = min(depth, s.g);
+      if (abs(i) <= radius)
+      {
+        // Linear ramp from 1 at the object to 1 / (radius + 1) at the border's outer edge.
+        coverage = max(coverage, s.b * float(radius + 1 - abs(i)) / float(radius + 1));
+        importance = max(importance, s.r);
+      }
+    }
+  }
+  gl_FragData[0] = vec4(importance, depth, coverage, 1.0);
+)");
+  return source;
+}
+
+}  // namespace medial::ghost

@@ -1,0 +1,25 @@
+// GLSL pieces of vtkMedialGhostPass: the code added to VTK's polydata fragment shader, and the
+// separable filter that dilates and feathers the importance map.
+#pragma once
+
+#include <string>
+
+namespace medial::ghost {
+
+// Declarations inserted before `//VTK::Output::Dec`.
+extern const char* const kFragmentDeclarations;
+
+// Tag placed after `//VTK::TCoord::Impl` (the fragment's final colour) before VTK's own substitutions,
+// replaced by fragmentImplementation() after them.
+extern const char* const kImplementationTag;
+
+// The per-fragment code. `withSilhouette`: the shader has a view-space normal (normalVCVSOutput);
+// `writesDepth`: the shader does not already write gl_FragDepth, so this code may.
+std::string fragmentImplementation(bool withSilhouette, bool writesDepth);
+
+// Full-screen-quad fragment shader of one direction of the map filter (uniforms: source, direction,
+// radius). Importance: max over the window; depth: min (over at least one neighbour, so a coarse map does
+// not put the object of interest behind its true surface); coverage: the feathered mask.
+std::string mapFilterFragmentShader();
+
+}  // namespace medial::ghost

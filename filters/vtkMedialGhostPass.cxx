@@ -1,0 +1,370 @@
+#include "vtkMedialGhostPass.h"
+
+#include "MedialGhostShaders.h"
+
+#include <vtkActor.h>
+#include <vtkCameraPass.h>
+#include <vtkDualDepthPeelingPass.h>
+#include <vtkInformation.h>
+#include <vtkInformationDoubleKey.h>
+#include <vtkMapper.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLQuadHelper.h>
+#include <vtkOpenGLRenderUtilities.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLShaderCache.h>
+#include <vtkOpenGLState.h>
+#include <vtkOrderIndependentTranslucentPass.h>
+#include <vtkProperty.h>
+#include <vtkRenderState.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkTextureObject.h>
+#include <vtkTranslucentPass.h>
+#include <vtk_glew.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkMedialGhostPass);
+vtkInformationKeyMacro(vtkMedialGhostPass, IMPORTANCE, Double);
+
+struct vtkMedialGhostPass::Resources {
+  vtkSmartPointer<vtkTextureObject> Raw;       // importance map as drawn
+  vtkSmartPointer<vtkTextureObject> RawDepth;  // its depth buffer
+  vtkSmartPointer<vtkTextureObject> Half;      // after the horizontal filter
+  vtkSmartPointer<vtkTextureObject> Map;       // after the vertical filter: what the scene looks up
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  std::unique_ptr<vtkOpenGLQuadHelper> Filter;
+  int Width = 0;
+  int Height = 0;
+
+  void Release(vtkWindow* window) {
+    for (vtkTextureObject* texture : {Raw.Get(), RawDepth.Get(), Half.Get(), Map.Get()})
+      if (texture) texture->ReleaseGraphicsResources(window);
+    if (Framebuffer) Framebuffer->ReleaseGraphicsResources(window);
+    if (Filter) Filter->ReleaseGraphicsResources(window);
+    Raw = RawDepth = Half = Map = nullptr;
+    Framebuffer = nullptr;
+    Filter.reset();
+    Width = Height = 0;
+  }
+};
+
+namespace {
+
+vtkSmartPointer<vtkTextureObject> floatTexture(vtkOpenGLRenderWindow* window, int width, int height) {
+  auto texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(window);
+  texture->SetFormat(GL_RGBA);
+  texture->SetInternalFormat(GL_RGBA32F);  // depth needs more than half floats
+  texture->SetDataType(GL_FLOAT);
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->Allocate2D(width, height, 4, VTK_FLOAT);
+  return texture;
+}
+
+// A visible actor with a mapper and an importance above 0.
+bool isInterest(vtkProp* prop) {
+  auto* actor = vtkActor::SafeDownCast(prop);
+  return actor && actor->GetVisibility() && actor->GetMapper() && vtkMedialGhostPass::GetImportance(prop) > 0.0;
+}
+
+}  // namespace
+
+vtkMedialGhostPass::vtkMedialGhostPass() : Gpu(std::make_unique<Resources>()) {}
+
+vtkMedialGhostPass::~vtkMedialGhostPass() = default;
+
+void vtkMedialGhostPass::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  static const char* const modes[] = {"Off", "Ghost", "Cutaway"};
+  static const char* const conflicts[] = {"DepthSorting", "GradualImportance"};
+  static const char* const translucencies[] = {"Blended", "DepthPeeling", "OrderIndependent"};
+  os << indent << "Mode: " << modes[this->Mode] << "\n";
+  os << indent << "GhostOpacity: " << this->GhostOpacity << "\n";
+  os << indent << "SilhouetteStrength: " << this->SilhouetteStrength << "\n";
+  os << indent << "Conflict: " << conflicts[this->Conflict] << "\n";
+  os << indent << "MapScale: " << this->MapScale << "\n";
+  os << indent << "BorderWidth: " << this->BorderWidth << "\n";
+  os << indent << "Translucency: " << translucencies[this->Translucency] << "\n";
+  os << indent << "DelegatePass: " << (this->UserDelegate ? this->UserDelegate->GetClassName() : "(default)") << "\n";
+}
+
+void vtkMedialGhostPass::SetImportance(vtkProp* prop, double importance) {
+  if (!prop) return;
+  importance = std::clamp(std::isfinite(importance) ? importance : 0.0, 0.0, 1.0);
+  vtkInformation* keys = prop->GetPropertyKeys();
+  if (!keys) {
+    if (importance == 0.0) return;
+    auto created = vtkSmartPointer<vtkInformation>::New();
+    prop->SetPropertyKeys(created);
+    keys = created;
+  }
+  if (importance == 0.0)
+    keys->Remove(IMPORTANCE());
+  else
+    keys->Set(IMPORTANCE(), importance);
+  prop->Modified();
+}
+
+double vtkMedialGhostPass::GetImportance(vtkProp* prop) {
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  return keys && keys->Has(IMPORTANCE()) ? keys->Get(IMPORTANCE()) : 0.0;
+}
+
+void vtkMedialGhostPass::SetDelegatePass(vtkRenderPass* pass) {
+  if (this->UserDelegate == pass) return;
+  this->UserDelegate = pass;
+  this->Modified();
+}
+
+vtkRenderPass* vtkMedialGhostPass::GetDelegatePass() { return this->ActiveDelegate(); }
+
+vtkRenderPass* vtkMedialGhostPass::ActiveDelegate() {
+  if (this->UserDelegate) return this->UserDelegate;
+  if (!this->DefaultDelegate || this->DefaultDelegateTranslucency != this->Translucency) {
+    auto steps = vtkSmartPointer<vtkRenderStepsPass>::New();
+    auto translucent = vtkSmartPointer<vtkTranslucentPass>::New();
+    if (this->Translucency == DepthPeeling) {
+      auto peeling = vtkSmartPointer<vtkDualDepthPeelingPass>::New();
+      peeling->SetTranslucentPass(translucent);
+      steps->SetTranslucentPass(peeling);
+    } else if (this->Translucency == OrderIndependent) {
+      auto oit = vtkSmartPointer<vtkOrderIndependentTranslucentPass>::New();
+      oit->SetTranslucentPass(translucent);
+      steps->SetTranslucentPass(oit);
+    }
+    this->DefaultDelegate = steps;
+    this->DefaultDelegateTranslucency = this->Translucency;
+  }
+  return this->DefaultDelegate;
+}
+
+void vtkMedialGhostPass::ReleaseGraphicsResources(vtkWindow* window) {
+  this->Gpu->Release(window);
+  if (this->UserDelegate) this->UserDelegate->ReleaseGraphicsResources(window);
+  if (this->DefaultDelegate) this->DefaultDelegate->ReleaseGraphicsResources(window);
+}
+
+void vtkMedialGhostPass::Render(const vtkRenderState* s) {
+  this->NumberOfRenderedProps = 0;
+  this->LastInterestCount = 0;
+  this->LastMapSize[0] = this->LastMapSize[1] = 0;
+  vtkRenderer* renderer = s->GetRenderer();
+  vtkRenderPass* delegate = this->ActiveDelegate();
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+
+  int width = 0, height = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &this->Viewport[0], &this->Viewport[1]);
+  this->Viewport[2] = width;
+  this->Viewport[3] = height;
+
+  // Interest first, most important first: ghosted fragments of the others blend over them (§3).
+  std::vector<vtkProp*> props(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
+  std::stable_sort(props.begin(), props.end(),
+                   [](vtkProp* a, vtkProp* b) { return GetImportance(a) > GetImportance(b); });
+  const int interestCount = static_cast<int>(std::count_if(props.begin(), props.end(), isInterest));
+
+  const bool plain = this->Mode == Off || interestCount == 0 || width <= 0 || height <= 0 || !window ||
+                     renderer->GetSelector() != nullptr;
+  if (plain) {
+    delegate->Render(s);
+    this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
+    return;
+  }
+
+  vtkRenderState sorted(renderer);
+  sorted.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+  sorted.SetFrameBuffer(s->GetFrameBuffer());
+  this->PreRender(&sorted);  // puts this pass into every prop's keys: the mappers call us back
+
+  const bool mapped = this->RenderImportanceMap(&sorted, window) && this->FilterImportanceMap(window);
+  if (mapped) {
+    this->LastInterestCount = interestCount;
+    this->LastMapSize[0] = this->Gpu->Width;
+    this->LastMapSize[1] = this->Gpu->Height;
+    this->Gpu->Map->Activate();
+    this->Phase = 2;
+  }
+  if (!mapped) this->PostRender(&sorted);  // draw the scene plainly rather than nothing
+  delegate->Render(&sorted);
+  this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
+  if (mapped) {
+    this->Gpu->Map->Deactivate();
+    this->Phase = 0;
+    this->PostRender(&sorted);
+  }
+}
+
+bool vtkMedialGhostPass::RenderImportanceMap(const vtkRenderState* s, vtkOpenGLRenderWindow* window) {
+  Resources& gpu = *this->Gpu;
+  const int width = std::max(1, static_cast<int>(std::lround(this->Viewport[2] * this->MapScale)));
+  const int height = std::max(1, static_cast<int>(std::lround(this->Viewport[3] * this->MapScale)));
+  if (gpu.Width != width || gpu.Height != height || !gpu.Framebuffer) {
+    gpu.Release(window);
+    gpu.Raw = floatTexture(window, width, height);
+    gpu.Half = floatTexture(window, width, height);
+    gpu.Map = floatTexture(window, width, height);
+    gpu.RawDepth = vtkSmartPointer<vtkTextureObject>::New();
+    gpu.RawDepth->SetContext(window);
+    gpu.RawDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    gpu.Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    gpu.Framebuffer->SetContext(window);
+    gpu.Width = width;
+    gpu.Height = height;
+  }
+
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport savedViewport(state);
+  vtkOpenGLState::ScopedglScissor savedScissor(state);
+  vtkOpenGLState::ScopedglClearColor savedClearColor(state);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+
+  gpu.Framebuffer->SaveCurrentBindingsAndBuffers();
+  gpu.Framebuffer->Bind();
+  gpu.Framebuffer->AddColorAttachment(0, gpu.Raw);
+  gpu.Framebuffer->ActivateDrawBuffers(1);
+  gpu.Framebuffer->AddDepthAttachment(gpu.RawDepth);
+  const bool complete = gpu.Framebuffer->StartNonOrtho(width, height);
+  if (complete) {
+    state->vtkglViewport(0, 0, width, height);
+    state->vtkglScissor(0, 0, width, height);
+    state->vtkglClearColor(0, 0, 0, 0);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LESS);
+    state->vtkglDisable(GL_BLEND);
+
+    this->Phase = 1;
+    vtkRenderer* renderer = s->GetRenderer();
+    for (int i = 0; i < s->GetPropArrayCount(); ++i) {
+      vtkProp* prop = s->GetPropArray()[i];
+      if (!isInterest(prop)) continue;
+      // Drawn whatever its own opacity: a translucent object of interest still owns its pixels.
+      auto* actor = vtkActor::SafeDownCast(prop);
+      actor->GetProperty()->Render(actor, renderer);
+      actor->Render(renderer, actor->GetMapper());
+      actor->GetProperty()->PostRender(actor, renderer);
+    }
+    this->Phase = 0;
+  }
+  gpu.Framebuffer->RemoveDepthAttachment();
+  gpu.Framebuffer->UnBind();
+  gpu.Framebuffer->RestorePreviousBindingsAndBuffers();
+  if (!complete) vtkErrorMacro(<< "cannot draw the importance map: incomplete framebuffer");
+  return complete;
+}
+
+bool vtkMedialGhostPass::FilterImportanceMap(vtkOpenGLRenderWindow* window) {
+  Resources& gpu = *this->Gpu;
+  if (!gpu.Filter) {
+    const std::string fragment = medial::ghost::mapFilterFragmentShader();
+    gpu.Filter = std::make_unique<vtkOpenGLQuadHelper>(
+        window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fragment.c_str(), "");
+  } else {
+    window->GetShaderCache()->ReadyShaderProgram(gpu.Filter->Program);
+  }
+  vtkShaderProgram* program = gpu.Filter->Program;
+  if (!program || !program->GetCompiled()) {
+    vtkErrorMacro(<< "cannot build the importance-map filter shader");
+    return false;
+  }
+
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport savedViewport(state);
+  vtkOpenGLState::ScopedglScissor savedScissor(state);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_BLEND);
+
+  // The border is given in viewport pixels; the map is MapScale of it.
+  const int radius = static_cast<int>(std::lround(this->BorderWidth * this->MapScale));
+  const struct {
+    vtkTextureObject* from;
+    vtkTextureObject* to;
+    int direction[2];
+  } steps[] = {{gpu.Raw, gpu.Half, {1, 0}}, {gpu.Half, gpu.Map, {0, 1}}};
+  bool complete = true;
+  for (const auto& step : steps) {
+    gpu.Framebuffer->SaveCurrentBindingsAndBuffers();
+    gpu.Framebuffer->Bind();
+    gpu.Framebuffer->AddColorAttachment(0, step.to);
+    gpu.Framebuffer->ActivateDrawBuffers(1);
+    complete = gpu.Framebuffer->StartNonOrtho(gpu.Width, gpu.Height) && complete;
+    if (complete) {
+      state->vtkglViewport(0, 0, gpu.Width, gpu.Height);
+      state->vtkglScissor(0, 0, gpu.Width, gpu.Height);
+      step.from->Activate();
+      program->SetUniformi("source", step.from->GetTextureUnit());
+      program->SetUniform2i("direction", step.direction);
+      program->SetUniformi("radius", radius);
+      gpu.Filter->Render();
+      step.from->Deactivate();
+    }
+    gpu.Framebuffer->UnBind();
+    gpu.Framebuffer->RestorePreviousBindingsAndBuffers();
+  }
+  if (!complete) vtkErrorMacro(<< "cannot filter the importance map: incomplete framebuffer");
+  return complete;
+}
+
+bool vtkMedialGhostPass::PreReplaceShaderValues(std::string&, std::string&, std::string& fragmentShader,
+                                                vtkAbstractMapper*, vtkProp*) {
+  // Only VTK's polydata fragment template (polydata, glyph, sphere and image-slice mappers) has both tags.
+  if (fragmentShader.find("//VTK::TCoord::Impl") == std::string::npos ||
+      fragmentShader.find("//VTK::Output::Dec") == std::string::npos)
+    return true;
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
+                               std::string("//VTK::Output::Dec\n") + medial::ghost::kFragmentDeclarations);
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
+                               std::string("//VTK::TCoord::Impl\n  ") + medial::ghost::kImplementationTag);
+  return true;
+}
+
+bool vtkMedialGhostPass::PostReplaceShaderValues(std::string&, std::string&, std::string& fragmentShader,
+                                                 vtkAbstractMapper*, vtkProp*) {
+  if (fragmentShader.find(medial::ghost::kImplementationTag) == std::string::npos) return true;
+  const bool withSilhouette = fragmentShader.find("normalVCVSOutput") != std::string::npos;
+  // VTK's template mentions gl_FragDepth in a comment; only an assignment means it is already written.
+  const bool writesDepth = fragmentShader.find("gl_FragDepth =") == std::string::npos &&
+                           fragmentShader.find("gl_FragDepth=") == std::string::npos;
+  vtkShaderProgram::Substitute(fragmentShader, medial::ghost::kImplementationTag,
+                               medial::ghost::fragmentImplementation(withSilhouette, writesDepth));
+  return true;
+}
+
+bool vtkMedialGhostPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop,
+                                             vtkOpenGLVertexArrayObject*) {
+  if (!program->IsUniformUsed("medialGhostPhase")) return true;
+  const double importance = isInterest(prop) ? GetImportance(prop) : 0.0;
+  program->SetUniformi("medialGhostPhase", this->Phase);
+  program->SetUniformf("medialGhostImportance", static_cast<float>(importance));
+  if (program->IsUniformUsed("medialGhostGradual"))
+    program->SetUniformi("medialGhostGradual", this->Conflict == GradualImportance ? 1 : 0);
+  if (this->Phase != 2) return true;
+
+  const bool cutaway = this->Mode == Cutaway;
+  const float viewport[4] = {static_cast<float>(this->Viewport[0]), static_cast<float>(this->Viewport[1]),
+                             static_cast<float>(this->Viewport[2]), static_cast<float>(this->Viewport[3])};
+  program->SetUniformi("medialGhostMap", this->Gpu->Map->GetTextureUnit());
+  program->SetUniform4f("medialGhostViewport", viewport);
+  program->SetUniformf("medialGhostOpacity", cutaway ? 0.0f : static_cast<float>(this->GhostOpacity));
+  if (program->IsUniformUsed("medialGhostSilhouette"))
+    program->SetUniformf("medialGhostSilhouette", cutaway ? 0.0f : static_cast<float>(this->SilhouetteStrength));
+  if (program->IsUniformUsed("medialGhostWriteDepth"))
+    program->SetUniformi("medialGhostWriteDepth", prop && prop->IsRenderingTranslucentPolygonalGeometry() ? 0 : 1);
+  return true;
+}

@@ -1,0 +1,144 @@
+/**
+ * @class vtkMedialGhostPass
+ * @brief Ghost views and cutaway views driven by an importance map (Hoffmann et al., "Ghost-views for 3D
+ * information visualization", WSCG 2008): objects of interest stay visible through whatever hides them.
+ *
+ * Each prop carries an importance in [0, 1] (SetImportance, or the IMPORTANCE() key of its property keys);
+ * 0 is context, above 0 an object of interest. Every frame, view-dependently (paper §3):
+ *  1. the objects of interest are rendered into an importance map, a float texture at MapScale of the
+ *     viewport's resolution (paper §5), holding per pixel the winning object's importance and window depth;
+ *     the map is then dilated and feathered by BorderWidth pixels so the ghosted region has a soft border;
+ *  2. the scene is rendered by the delegate pass (camera, lights, opaque, translucent, overlay); a fragment
+ *     shader added to every polygonal mapper looks the map up and, where a fragment lies in front of a more
+ *     important object, lowers its opacity: to GhostOpacity (Ghost mode, raised towards 1 at the occluder's
+ *     silhouette by SilhouetteStrength so its shape stays readable) or to 0 (Cutaway mode).
+ *
+ * Conflicts between objects of interest (paper §3, Fig. 2): DepthSorting keeps the nearest one at each
+ * pixel; GradualImportance keeps the most important one, and a less important object in front of it is
+ * ghosted with an opacity that grows with its importance (mix(GhostOpacity, 1, own / map importance)).
+ *
+ * Ghosted fragments of opaque props are blended in the opaque step over the objects of interest, which are
+ * drawn first, most important first; they write the map's depth, not their own, so every layer between
+ * the eye and the object of interest shows (no sorting among those layers, as in the paper). Translucent
+ * props keep going through the delegate's translucent step (Translucency: blended, dual depth peeling, or
+ * order-independent), their alpha multiplied by the same ghost factor.
+ *
+ * With Mode Off, no object of interest, a zero-size viewport, or during hardware selection (picking) the
+ * pass renders the scene exactly like its delegate. Objects of interest must be vtkActors (assemblies and
+ * volumes render as context); a CT volume is not ghosted.
+ */
+#pragma once
+
+#include "MedialFiltersModule.h"
+#include "vtkOpenGLRenderPass.h"
+#include "vtkSmartPointer.h"
+
+#include <memory>
+
+class vtkInformationDoubleKey;
+class vtkProp;
+class vtkRenderStepsPass;
+class vtkRenderer;
+class vtkOpenGLRenderWindow;
+
+class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
+ public:
+  static vtkMedialGhostPass* New();
+  vtkTypeMacro(vtkMedialGhostPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Modes { Off = 0, Ghost = 1, Cutaway = 2 };
+  enum Conflicts { DepthSorting = 0, GradualImportance = 1 };
+  enum Translucencies { Blended = 0, DepthPeeling = 1, OrderIndependent = 2 };
+
+  /// Off, Ghost (default) or Cutaway.
+  vtkSetClampMacro(Mode, int, Off, Cutaway);
+  vtkGetMacro(Mode, int);
+  void SetModeToOff() { this->SetMode(Off); }
+  void SetModeToGhost() { this->SetMode(Ghost); }
+  void SetModeToCutaway() { this->SetMode(Cutaway); }
+
+  /// Opacity of an occluder over an object of interest in Ghost mode (default 0.25).
+  vtkSetClampMacro(GhostOpacity, double, 0.0, 1.0);
+  vtkGetMacro(GhostOpacity, double);
+
+  /// How much the occluder's silhouette stays opaque in Ghost mode, 0..1 (default 0.8): the opacity rises
+  /// towards 1 as (1 - |n.z|)^2, n the view-space normal, so the occluder's outline remains a shape cue.
+  vtkSetClampMacro(SilhouetteStrength, double, 0.0, 1.0);
+  vtkGetMacro(SilhouetteStrength, double);
+
+  /// DepthSorting or GradualImportance (default).
+  vtkSetClampMacro(Conflict, int, DepthSorting, GradualImportance);
+  vtkGetMacro(Conflict, int);
+  void SetConflictToDepthSorting() { this->SetConflict(DepthSorting); }
+  void SetConflictToGradualImportance() { this->SetConflict(GradualImportance); }
+
+  /// Resolution of the importance map as a fraction of the viewport's (default 0.5; paper §5: lower is
+  /// faster, with a coarser border).
+  vtkSetClampMacro(MapScale, double, 0.05, 1.0);
+  vtkGetMacro(MapScale, double);
+
+  /// Width in viewport pixels of the soft border around the importance map (default 2; 0 = hard edge).
+  vtkSetClampMacro(BorderWidth, int, 0, 64);
+  vtkGetMacro(BorderWidth, int);
+
+  /// How the delegate composites translucent props: Blended (plain alpha blending, the renderer's
+  /// default), DepthPeeling (dual depth peeling; needs a window without multisampling) or
+  /// OrderIndependent (weighted blended OIT). Default Blended. Ignored when a delegate is set.
+  vtkSetClampMacro(Translucency, int, Blended, OrderIndependent);
+  vtkGetMacro(Translucency, int);
+
+  /// The pass that renders the scene (default: a vtkRenderStepsPass built for Translucency).
+  void SetDelegatePass(vtkRenderPass* pass);
+  vtkRenderPass* GetDelegatePass();
+
+  /// Importance of a prop, 0..1 (stored in its property keys; 0 removes it).
+  static void SetImportance(vtkProp* prop, double importance);
+  static double GetImportance(vtkProp* prop);
+  static vtkInformationDoubleKey* IMPORTANCE();
+
+  /// What the last frame did: objects of interest drawn into the map, and the map's size.
+  vtkGetMacro(LastInterestCount, int);
+  vtkGetVector2Macro(LastMapSize, int);
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+                              std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+                               std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+                           vtkOpenGLVertexArrayObject* vao = nullptr) override;
+
+ protected:
+  vtkMedialGhostPass();
+  ~vtkMedialGhostPass() override;
+
+ private:
+  vtkMedialGhostPass(const vtkMedialGhostPass&) = delete;
+  void operator=(const vtkMedialGhostPass&) = delete;
+
+  vtkRenderPass* ActiveDelegate();
+  bool RenderImportanceMap(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  bool FilterImportanceMap(vtkOpenGLRenderWindow* window);
+
+  int Mode = Ghost;
+  double GhostOpacity = 0.25;
+  double SilhouetteStrength = 0.8;
+  int Conflict = GradualImportance;
+  double MapScale = 0.5;
+  int BorderWidth = 2;
+  int Translucency = Blended;
+  int LastInterestCount = 0;
+  int LastMapSize[2] = {0, 0};
+
+  vtkSmartPointer<vtkRenderPass> UserDelegate;
+  vtkSmartPointer<vtkRenderStepsPass> DefaultDelegate;
+  int DefaultDelegateTranslucency = -1;
+
+  struct Resources;  // GPU objects: map textures, framebuffers, filter shader
+  std::unique_ptr<Resources> Gpu;
+  int Phase = 0;  // 0 idle, 1 drawing the importance map, 2 drawing the scene
+  int Viewport[4] = {0, 0, 0, 0};
+};

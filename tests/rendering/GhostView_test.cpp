@@ -1,0 +1,273 @@
+// vtkMedialGhostPass: objects of interest inside occluders, rendered offscreen (run under xvfb-run -a).
+#include "ImageComparison.h"
+#include "TestPaths.h"
+
+#include "MedialErrorCollector.h"
+#include "vtkMedialContractionSkeleton.h"
+#include "vtkMedialGhostPass.h"
+#include "vtkMedialReader.h"
+#include "vtkMedialScene.h"
+
+#include <vtkActor.h>
+#include <vtkCubeSource.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProp3D.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkSphereSource.h>
+
+#include <array>
+#include <cmath>
+
+namespace {
+
+using namespace medial::test;
+
+vtkSmartPointer<vtkPolyData> box(double side) {
+  auto source = vtkSmartPointer<vtkCubeSource>::New();
+  source->SetXLength(side);
+  source->SetYLength(side);
+  source->SetZLength(side);
+  source->Update();
+  return source->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> sphere(double radius, double x = 0, double y = 0, double z = 0) {
+  auto source = vtkSmartPointer<vtkSphereSource>::New();
+  source->SetRadius(radius);
+  source->SetCenter(x, y, z);
+  source->SetThetaResolution(48);
+  source->SetPhiResolution(32);
+  source->Update();
+  return source->GetOutput();
+}
+
+// Pixel counts by hue: the scene's palette draws the first object ivory, the second red, the third blue.
+struct Hues {
+  double red = 0;   // share of pixels that are clearly red
+  double blue = 0;  // bluish: blue, or blue seen through a red ghost (violet)
+  double ivory = 0; // warm and light: the occluder
+  double meanRedGreen = 0;  // mean green channel over the red pixels (how much occluder tint is on them)
+};
+
+Hues countHues(vtkImageData* image) {
+  Hues hues;
+  int dims[3];
+  image->GetDimensions(dims);
+  const int components = image->GetNumberOfScalarComponents();
+  const auto* pixel = static_cast<const unsigned char*>(image->GetScalarPointer());
+  const double total = static_cast<double>(dims[0]) * dims[1];
+  double redGreenSum = 0;
+  for (int i = 0; i < dims[0] * dims[1]; ++i, pixel += components) {
+    const double r = pixel[0], g = pixel[1], b = pixel[2];
+    if (r > 80 && r > 1.6 * g && r > 1.6 * b) {
+      hues.red += 1;
+      redGreenSum += g;
+    } else if (b > 60 && b > g + 30 && b > 0.8 * r) {
+      hues.blue += 1;
+    } else if (r > 90 && r >= g && g > b && r - b > 15) {
+      hues.ivory += 1;
+    }
+  }
+  hues.meanRedGreen = hues.red > 0 ? redGreenSum / hues.red : 0;
+  hues.red /= total;
+  hues.blue /= total;
+  hues.ivory /= total;
+  return hues;
+}
+
+// Mean RGB of the (2 half + 1)^2 pixels around the image's centre.
+std::array<double, 3> meanColorAtCentre(vtkImageData* image, int half) {
+  int dims[3];
+  image->GetDimensions(dims);
+  std::array<double, 3> sum = {0, 0, 0};
+  int count = 0;
+  for (int y = dims[1] / 2 - half; y <= dims[1] / 2 + half; ++y)
+    for (int x = dims[0] / 2 - half; x <= dims[0] / 2 + half; ++x, ++count)
+      for (int c = 0; c < 3; ++c) sum[c] += image->GetScalarComponentAsDouble(x, y, 0, c);
+  for (double& value : sum) value /= count;
+  return sum;
+}
+
+vtkSmartPointer<vtkImageData> render(vtkMedialScene* scene, const std::string& name, double azimuth = 30) {
+  const int width = 320, height = 240;
+  const std::string path = scratchDir("ghost-" + name) + "/" + name;
+  scene->ResetCamera(static_cast<double>(width) / height, azimuth, 20);
+  EXPECT_TRUE(scene->RenderToImage(path.c_str(), width, height));
+  vtkSmartPointer<vtkImageData> image;
+  image.TakeReference(loadPng(path));
+  return image;
+}
+
+// A 4-unit box (ivory) around a sphere of radius 1 (red), the sphere an object of interest.
+struct BoxAndSphere {
+  vtkSmartPointer<vtkMedialScene> scene = vtkSmartPointer<vtkMedialScene>::New();
+  vtkProp3D* occluder = nullptr;
+  vtkProp3D* interest = nullptr;
+  explicit BoxAndSphere(int mode) {
+    occluder = scene->AddData(box(4.0));
+    interest = scene->AddData(sphere(1.0));
+    scene->SetImportance(interest, 1.0);
+    scene->GetGhostPass()->SetMode(mode);
+  }
+};
+
+}  // namespace
+
+TEST(GhostView, OffLeavesTheInterestObjectHidden) {
+  MEDIAL_REQUIRE_DISPLAY();
+  BoxAndSphere off(vtkMedialGhostPass::Off);
+  auto image = render(off.scene, "off.png");
+  ASSERT_NE(image, nullptr);
+  const Hues hues = countHues(image);
+  EXPECT_LT(hues.red, 0.0005);
+  EXPECT_GT(hues.ivory, 0.2);
+}
+
+TEST(GhostView, GhostShowsTheInterestObjectAndKeepsTheOccluder) {
+  MEDIAL_REQUIRE_DISPLAY();
+  BoxAndSphere off(vtkMedialGhostPass::Off), ghost(vtkMedialGhostPass::Ghost);
+  auto offImage = render(off.scene, "off.png");
+  auto image = render(ghost.scene, "ghost.png");
+  ASSERT_NE(image, nullptr);
+  const Hues before = countHues(offImage), after = countHues(image);
+  EXPECT_GT(after.red, 0.03);  // the sphere covers ~6 % of the image
+  // The occluder still covers the rest: what it lost is about what the sphere took.
+  EXPECT_GT(after.ivory, before.ivory - after.red - 0.02);
+  EXPECT_NEAR(foregroundFraction(image), foregroundFraction(offImage), 0.01);
+  EXPECT_EQ(ghost.scene->GetGhostPass()->GetLastInterestCount(), 1);
+  const auto comparison = compareWithBaseline(image, "ghost-box-sphere.png");
+  EXPECT_TRUE(comparison.passed) << comparison.message;
+}
+
+TEST(GhostView, CutawayRemovesTheOccluderOverTheInterestObject) {
+  MEDIAL_REQUIRE_DISPLAY();
+  BoxAndSphere ghost(vtkMedialGhostPass::Ghost), cutaway(vtkMedialGhostPass::Cutaway);
+  auto ghostImage = render(ghost.scene, "ghost.png");
+  auto image = render(cutaway.scene, "cutaway.png");
+  ASSERT_NE(image, nullptr);
+  const Hues ghostHues = countHues(ghostImage), cutawayHues = countHues(image);
+  EXPECT_GT(cutawayHues.red, 0.03);
+  // Over the sphere no occluder colour is left: the red pixels carry less green than the ghost's.
+  EXPECT_LT(cutawayHues.meanRedGreen, ghostHues.meanRedGreen - 5);
+  const auto comparison = compareWithBaseline(image, "cutaway-box-sphere.png");
+  EXPECT_TRUE(comparison.passed) << comparison.message;
+}
+
+TEST(GhostView, InterestObjectStaysVisibleAfterTheCameraTurns) {
+  MEDIAL_REQUIRE_DISPLAY();
+  BoxAndSphere ghost(vtkMedialGhostPass::Ghost);
+  for (double azimuth : {30.0, 120.0, 210.0}) {
+    auto image = render(ghost.scene, "turn" + std::to_string(static_cast<int>(azimuth)) + ".png", azimuth);
+    ASSERT_NE(image, nullptr);
+    EXPECT_GT(countHues(image).red, 0.03) << "azimuth " << azimuth;
+  }
+}
+
+TEST(GhostView, GradualImportanceShowsBothNestedObjects) {
+  MEDIAL_REQUIRE_DISPLAY();
+  // Box (ivory) around a large sphere (red, importance 0.25) around a small one (blue, importance 1).
+  auto makeScene = [](int conflict) {
+    auto scene = vtkSmartPointer<vtkMedialScene>::New();
+    scene->AddData(box(4.0));
+    scene->SetImportance(scene->AddData(sphere(1.4)), 0.25);
+    scene->SetImportance(scene->AddData(sphere(0.7, 0.1, 0.1, 0.2)), 1.0);
+    scene->GetGhostPass()->SetConflict(conflict);
+    return scene;
+  };
+  auto gradual = render(makeScene(vtkMedialGhostPass::GradualImportance), "gradual.png");
+  auto depth = render(makeScene(vtkMedialGhostPass::DepthSorting), "depth.png");
+  ASSERT_NE(gradual, nullptr);
+  ASSERT_NE(depth, nullptr);
+  // Gradual: the blue sphere shows through the red one at the centre; depth sorting: the nearer red
+  // sphere hides it. Both keep the red sphere visible around it.
+  const auto gradualCentre = meanColorAtCentre(gradual, 8), depthCentre = meanColorAtCentre(depth, 8);
+  EXPECT_GT(gradualCentre[2] - depthCentre[2], 25.0);
+  EXPECT_GT(depthCentre[0], depthCentre[2] + 60.0);
+  EXPECT_GT(countHues(gradual).red, 0.02);
+  EXPECT_GT(countHues(depth).red, 0.05);
+  const auto comparison = compareWithBaseline(gradual, "ghost-gradual.png");
+  EXPECT_TRUE(comparison.passed) << comparison.message;
+}
+
+TEST(GhostView, SkeletonShowsThroughItsMesh) {
+  MEDIAL_REQUIRE_DISPLAY();
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  reader->SetFileName(dataPath("meshes/torus.off").c_str());
+  auto skeleton = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
+  skeleton->SetInputConnection(reader->GetOutputPort());
+  skeleton->Update();
+  ASSERT_GT(skeleton->GetOutput()->GetNumberOfLines(), 0);
+
+  auto scene = vtkSmartPointer<vtkMedialScene>::New();
+  scene->SetSkeletonRadiusScale(0.5);
+  scene->AddData(reader->GetOutput());
+  vtkProp3D* bones = scene->AddData(skeleton->GetOutput());
+  auto plain = render(scene, "torus-plain.png");
+  scene->SetImportance(bones, 1.0);
+  auto ghosted = render(scene, "torus-ghost.png");
+  ASSERT_NE(plain, nullptr);
+  ASSERT_NE(ghosted, nullptr);
+  EXPECT_LT(countHues(plain).red, 0.002);
+  EXPECT_GT(countHues(ghosted).red, 0.02);
+  const auto comparison = compareWithBaseline(ghosted, "ghost-torus-skeleton.png");
+  EXPECT_TRUE(comparison.passed) << comparison.message;
+}
+
+TEST(GhostView, NoInterestObjectRendersPlainlyWithoutError) {
+  MEDIAL_REQUIRE_DISPLAY();
+  BoxAndSphere withPass(vtkMedialGhostPass::Ghost);
+  withPass.scene->SetImportance(withPass.interest, 0.0);  // back to context
+  auto errors = medial::ErrorCollector::Watch(withPass.scene->GetGhostPass());
+  auto image = render(withPass.scene, "no-interest.png");
+  BoxAndSphere off(vtkMedialGhostPass::Off);
+  auto reference = render(off.scene, "off.png");
+  ASSERT_NE(image, nullptr);
+  EXPECT_FALSE(errors->HasErrors()) << errors->Joined();
+  EXPECT_EQ(withPass.scene->GetGhostPass()->GetLastInterestCount(), 0);
+  EXPECT_TRUE(compareImages(image, reference, 8, 0.001).passed);
+}
+
+TEST(GhostView, EmptyInterestActorIsHarmless) {
+  MEDIAL_REQUIRE_DISPLAY();
+  BoxAndSphere scene(vtkMedialGhostPass::Ghost);
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(vtkSmartPointer<vtkPolyData>::New());
+  auto empty = vtkSmartPointer<vtkActor>::New();
+  empty->SetMapper(mapper);
+  scene.scene->GetRenderer()->AddActor(empty);
+  scene.scene->SetImportance(empty, 1.0);
+  auto errors = medial::ErrorCollector::Watch(scene.scene->GetGhostPass());
+  auto image = render(scene.scene, "empty-actor.png");
+  ASSERT_NE(image, nullptr);
+  EXPECT_FALSE(errors->HasErrors()) << errors->Joined();
+  EXPECT_GT(countHues(image).red, 0.03);  // the sphere still shows
+}
+
+TEST(GhostView, ZeroSizeViewportRendersNothingWithoutError) {
+  MEDIAL_REQUIRE_DISPLAY();
+  BoxAndSphere scene(vtkMedialGhostPass::Ghost);
+  scene.scene->GetRenderer()->SetViewport(0.5, 0.5, 0.5, 0.5);
+  auto errors = medial::ErrorCollector::Watch(scene.scene->GetGhostPass());
+  auto image = render(scene.scene, "zero-viewport.png");
+  ASSERT_NE(image, nullptr);
+  EXPECT_FALSE(errors->HasErrors()) << errors->Joined();
+  EXPECT_EQ(scene.scene->GetGhostPass()->GetLastMapSize()[0], 0);
+}
+
+TEST(GhostView, ImportanceIsClampedAndZeroRemovesIt) {
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  EXPECT_EQ(vtkMedialGhostPass::GetImportance(actor), 0.0);
+  vtkMedialGhostPass::SetImportance(actor, 3.0);
+  EXPECT_EQ(vtkMedialGhostPass::GetImportance(actor), 1.0);
+  vtkMedialGhostPass::SetImportance(actor, 0.4);
+  EXPECT_DOUBLE_EQ(vtkMedialGhostPass::GetImportance(actor), 0.4);
+  vtkMedialGhostPass::SetImportance(actor, std::nan(""));
+  EXPECT_EQ(vtkMedialGhostPass::GetImportance(actor), 0.0);
+  EXPECT_FALSE(actor->GetPropertyKeys()->Has(vtkMedialGhostPass::IMPORTANCE()));
+  vtkMedialGhostPass::SetImportance(nullptr, 1.0);  // no crash
+  EXPECT_EQ(vtkMedialGhostPass::GetImportance(nullptr), 0.0);
+}
