@@ -219,3 +219,46 @@ TEST(Cli, TimingsArePrintedAsJson) {
   EXPECT_NE(r.out.find("\"render\": "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"total\": "), std::string::npos) << r.out;
 }
+
+TEST(Cli, RenderGhostShowsTheSkeletonThroughItsMesh) {
+  MEDIAL_REQUIRE_DISPLAY();
+  const std::string dir = scratchDir("cli-ghost");
+  const std::string mesh = dataPath("meshes/torus.off"), skeleton = dir + "/torus-skeleton.vtp";
+  ASSERT_EQ(runCommand(medialCommand("skeleton " + mesh + " -o " + skeleton + " --quiet")).exitCode, 0);
+  auto renderTo = [&](const std::string& name, const std::string& options) {
+    const std::string png = dir + "/" + name;
+    auto r = runCommand(medialCommand("render " + mesh + " " + options + " -o " + png +
+                                      " --size 200x150 --skeleton-scale 0.3 --quiet"));
+    EXPECT_EQ(r.exitCode, 0) << options << ": " << r.err;
+    vtkSmartPointer<vtkImageData> image;
+    image.TakeReference(loadPng(png));
+    return image;
+  };
+  auto plain = renderTo("plain.png", skeleton);
+  auto ghost = renderTo("ghost.png", skeleton + " --ghost " + skeleton);
+  auto added = renderTo("added.png", "--ghost " + skeleton);  // a --ghost file not listed is added
+  auto cutaway = renderTo("cutaway.png", skeleton + " --ghost " + skeleton + " --cutaway");
+  auto faint = renderTo("faint.png", skeleton + " --ghost " + skeleton + " --ghost-opacity 0.8");
+  ASSERT_TRUE(plain && ghost && added && cutaway && faint);
+  EXPECT_FALSE(compareImages(ghost, plain).passed) << "the ghost changed nothing";
+  EXPECT_TRUE(compareImages(added, ghost, 8, 0.002).passed) << "--ghost of an unlisted file differs";
+  EXPECT_FALSE(compareImages(cutaway, ghost, 15, 0.002).passed) << "cutaway looks like ghost";
+  EXPECT_FALSE(compareImages(faint, ghost, 20, 0.002).passed) << "--ghost-opacity changed nothing";
+}
+
+TEST(Cli, RenderGhostOptionErrors) {
+  const std::string mesh = dataPath("meshes/torus.off");
+  for (const char* bad : {"--ghost-importance 1", "--ghost x.vtp --ghost-importance 1,1", "--ghost x.vtp --ghost-importance 0",
+                          "--ghost x.vtp --ghost-opacity 2", "--ghost x.vtp --ghost-conflict closest",
+                          "--ghost x.vtp --ghost-map-scale 0", "--ghost"}) {
+    auto r = runCommand(medialCommand("render " + mesh + " -o out.png " + bad));
+    EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.err;
+  }
+  MEDIAL_REQUIRE_DISPLAY();
+  const std::string png = scratchDir("cli-ghost-missing") + "/out.png";
+  auto missing = runCommand(medialCommand("render " + mesh + " --ghost no-such-skeleton.vtp -o " + png));
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_EQ(lineCount(missing.err), 1) << missing.err;
+  EXPECT_NE(missing.err.find("no-such-skeleton.vtp"), std::string::npos) << missing.err;
+  EXPECT_FALSE(std::filesystem::exists(png));
+}

@@ -1,0 +1,66 @@
+"""vtkMedialGhostPass from Python: a sphere inside a box shows through the box once it is of interest."""
+import os
+import sys
+
+import vtk
+import medial
+
+if not os.environ.get("DISPLAY"):
+    print("no X display: run under xvfb-run -a")
+    sys.exit(77)  # CTest SKIP_RETURN_CODE
+
+
+def actor(source, rgb):
+    source.Update()
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputData(source.GetOutput())
+    result = vtk.vtkActor()
+    result.SetMapper(mapper)
+    result.GetProperty().SetColor(*rgb)
+    return result
+
+
+def red_pixels(window):
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.Update()
+    scalars = grab.GetOutput().GetPointData().GetScalars()
+    count = 0
+    for i in range(scalars.GetNumberOfTuples()):
+        r, g, b = scalars.GetTuple3(i)[:3]
+        count += r > 120 and r > 1.6 * g and r > 1.6 * b
+    return count / scalars.GetNumberOfTuples()
+
+
+box = vtk.vtkCubeSource()
+box.SetXLength(4), box.SetYLength(4), box.SetZLength(4)
+sphere = vtk.vtkSphereSource()
+sphere.SetRadius(1.0)
+renderer = vtk.vtkRenderer()
+renderer.AddActor(actor(box, (0.9, 0.85, 0.7)))
+interest = actor(sphere, (0.9, 0.1, 0.1))
+renderer.AddActor(interest)
+ghost = medial.vtkMedialGhostPass()
+renderer.SetPass(ghost)
+window = vtk.vtkRenderWindow()
+window.SetOffScreenRendering(1)
+window.SetSize(200, 150)
+window.AddRenderer(renderer)
+renderer.ResetCamera()
+
+window.Render()
+hidden = red_pixels(window)
+medial.vtkMedialGhostPass.SetImportance(interest, 1.0)
+window.Render()
+shown = red_pixels(window)
+ghost.SetModeToCutaway()
+window.Render()
+cut = red_pixels(window)
+print(f"red share: plain {hidden:.4f}, ghost {shown:.4f}, cutaway {cut:.4f}")
+assert hidden < 0.001, hidden
+assert shown > 0.02, shown
+assert cut > 0.02, cut
+assert ghost.GetLastInterestCount() == 1
+assert interest.GetPropertyKeys().Get(medial.vtkMedialGhostPass.IMPORTANCE()) == 1.0
+window.Finalize()
+print("ok")
