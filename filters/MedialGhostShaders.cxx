@@ -15,6 +15,7 @@ uniform float medialGhostSilhouette; // extra opacity at the silhouette, 0..1
 uniform int medialGhostGradual;      // 1: most important object wins the map, 0: nearest
 uniform int medialGhostWriteDepth;   // 1: ghosted fragments write the map's depth (opaque step)
 uniform vec4 medialGhostViewport;    // lower-left corner and size of the viewport, pixels
+uniform vec4 medialGhostRect;        // window pixels that can be ghosted: min x, min y, max x, max y
 )";
 
 const char* const kImplementationTag = "//MEDIAL::Ghost::Impl";
@@ -32,14 +33,15 @@ std::string fragmentImplementation(bool withSilhouette, bool writesDepth) {
       medialDepth = (1.0 - medialGhostImportance) * 0.999 + gl_FragCoord.z * 0.001;
     }
   }
-  else if (medialGhostPhase == 2)
+  else if (medialGhostPhase == 2 && all(greaterThanEqual(gl_FragCoord.xy, medialGhostRect.xy)) &&
+           all(lessThanEqual(gl_FragCoord.xy, medialGhostRect.zw)))
   {
-    // Scene (paper §3 step 2): lower the opacity in front of a more important object.
+    // Scene (paper §3 step 2): lower the opacity in front of a more important object. One filtered
+    // lookup: the map filter spreads importance and depth a texel beyond the coverage, so the bilinear
+    // blend near the border stays on valid values while the coverage feathers.
     vec2 medialUV = (gl_FragCoord.xy - medialGhostViewport.xy) / medialGhostViewport.zw;
-    ivec2 medialSize = textureSize(medialGhostMap, 0);
-    ivec2 medialTexel = clamp(ivec2(medialUV * vec2(medialSize)), ivec2(0), medialSize - ivec2(1));
-    vec4 medialMap = texelFetch(medialGhostMap, medialTexel, 0);
-    float medialCoverage = texture(medialGhostMap, medialUV).b;
+    vec4 medialMap = texture(medialGhostMap, medialUV);
+    float medialCoverage = medialMap.b;
     if (medialCoverage > 0.0 && medialMap.r > medialGhostImportance && gl_FragCoord.z < medialMap.g)
     {
       float medialTarget = mix(medialGhostOpacity, 1.0, medialGhostImportance / medialMap.r);
@@ -78,19 +80,16 @@ std::string mapFilterFragmentShader() {
   float importance = 0.0;
   float depth = 1.0;
   float coverage = 0.0;
-  int reach = max(radius, 1);
+  int reach = radius + 1;
   for (int i = -reach; i <= reach; ++i)
   {
     vec4 s = texelFetch(source, clamp(p + i * direction, ivec2(0), size - ivec2(1)), 0);
-    if (s.b > 0.0)
+    if (s.r > 0.0)
     {
       depth = min(depth, s.g);
-      if (abs(i) <= radius)
-      {
-        // Linear ramp from 1 at the object to 1 / (radius + 1) at the border's outer edge.
-        coverage = max(coverage, s.b * float(radius + 1 - abs(i)) / float(radius + 1));
-        importance = max(importance, s.r);
-      }
+      importance = max(importance, s.r);
+      // Linear ramp from 1 at the object to 1 / (radius + 1) at the border's outer edge, 0 beyond.
+      coverage = max(coverage, s.b * float(max(radius + 1 - abs(i), 0)) / float(radius + 1));
     }
   }
   gl_FragData[0] = vec4(importance, depth, coverage, 1.0);

@@ -18,8 +18,9 @@ extern const char* const kImplementationTag;
 std::string fragmentImplementation(bool withSilhouette, bool writesDepth);
 
 // Full-screen-quad fragment shader of one direction of the map filter (uniforms: source, direction,
-// radius). Importance: max over the window; depth: min (over at least one neighbour, so a coarse map does
-// not put the object of interest behind its true surface); coverage: the feathered mask.
+// radius). Importance: max, depth: min over radius + 1 texels (so a coarse map does not put the object of
+// interest behind its true surface, and a bilinear lookup at the border blends valid values); coverage:
+// the mask feathered over radius texels.
 std::string mapFilterFragmentShader();
 
 }  // namespace medial::ghost

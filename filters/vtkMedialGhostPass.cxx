@@ -3,11 +3,13 @@
 #include "MedialGhostShaders.h"
 
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkCameraPass.h>
 #include <vtkDualDepthPeelingPass.h>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleKey.h>
 #include <vtkMapper.h>
+#include <vtkMatrix4x4.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLFramebufferObject.h>
 #include <vtkOpenGLQuadHelper.h>
@@ -74,6 +76,40 @@ vtkSmartPointer<vtkTextureObject> floatTexture(vtkOpenGLRenderWindow* window, in
 bool isInterest(vtkProp* prop) {
   auto* actor = vtkActor::SafeDownCast(prop);
   return actor && actor->GetVisibility() && actor->GetMapper() && vtkMedialGhostPass::GetImportance(prop) > 0.0;
+}
+
+// Window pixels covered by the projected bounding boxes of the objects of interest, grown by `margin`
+// (min x, min y, max x, max y); the whole viewport when a box reaches behind the camera. Fragments outside
+// skip the map lookup.
+void interestRectangle(vtkRenderer* renderer, const std::vector<vtkProp*>& props, const int viewport[4],
+                       double margin, float rect[4]) {
+  const float whole[4] = {static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
+                          static_cast<float>(viewport[0] + viewport[2]), static_cast<float>(viewport[1] + viewport[3])};
+  std::copy(whole, whole + 4, rect);
+  vtkMatrix4x4* projection = renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+      renderer->GetTiledAspectRatio(), -1, 1);
+  double low[2] = {1e300, 1e300}, high[2] = {-1e300, -1e300};
+  for (vtkProp* prop : props) {
+    if (!isInterest(prop)) continue;
+    const double* bounds = prop->GetBounds();
+    if (!bounds || !(bounds[0] <= bounds[1])) continue;
+    for (int corner = 0; corner < 8; ++corner) {
+      const double world[4] = {bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)], 1};
+      double clip[4];
+      projection->MultiplyPoint(world, clip);
+      if (clip[3] <= 1e-12) return;  // behind the eye: the projection folds over, keep the whole viewport
+      for (int axis = 0; axis < 2; ++axis) {
+        const double pixel = viewport[axis] + (clip[axis] / clip[3] + 1.0) * 0.5 * viewport[2 + axis];
+        low[axis] = std::min(low[axis], pixel);
+        high[axis] = std::max(high[axis], pixel);
+      }
+    }
+  }
+  if (!(low[0] <= high[0])) return;
+  for (int axis = 0; axis < 2; ++axis) {
+    rect[axis] = static_cast<float>(std::max<double>(whole[axis], low[axis] - margin));
+    rect[2 + axis] = static_cast<float>(std::min<double>(whole[2 + axis], high[axis] + margin));
+  }
 }
 
 }  // namespace
@@ -185,6 +221,8 @@ void vtkMedialGhostPass::Render(const vtkRenderState* s) {
   sorted.SetFrameBuffer(s->GetFrameBuffer());
   this->PreRender(&sorted);  // puts this pass into every prop's keys: the mappers call us back
 
+  interestRectangle(renderer, props, this->Viewport, this->BorderWidth + 2.0 + 1.0 / this->MapScale,
+                    this->GhostRectangle);
   const bool mapped = this->RenderImportanceMap(&sorted, window) && this->FilterImportanceMap(window);
   if (mapped) {
     this->LastInterestCount = interestCount;
@@ -290,8 +328,20 @@ bool vtkMedialGhostPass::FilterImportanceMap(vtkOpenGLRenderWindow* window) {
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_BLEND);
 
-  // The border is given in viewport pixels; the map is MapScale of it.
+  // The border is given in viewport pixels; the map is MapScale of it. Only the map texels under the
+  // objects of interest's projected boxes are filtered (scissor); the rest is cleared to zero.
   const int radius = static_cast<int>(std::lround(this->BorderWidth * this->MapScale));
+  int scissor[4];
+  for (int axis = 0; axis < 2; ++axis) {
+    const double scale = static_cast<double>(axis == 0 ? gpu.Width : gpu.Height) / this->Viewport[2 + axis];
+    const int low = static_cast<int>(std::floor((this->GhostRectangle[axis] - this->Viewport[axis]) * scale)) - radius - 2;
+    const int high = static_cast<int>(std::ceil((this->GhostRectangle[2 + axis] - this->Viewport[axis]) * scale)) + radius + 2;
+    scissor[axis] = std::max(0, low);
+    scissor[2 + axis] = std::max(0, std::min(axis == 0 ? gpu.Width : gpu.Height, high) - scissor[axis]);
+  }
+  vtkOpenGLState::ScopedglClearColor savedClearColor(state);
+  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
+  state->vtkglClearColor(0, 0, 0, 0);
   const struct {
     vtkTextureObject* from;
     vtkTextureObject* to;
@@ -306,7 +356,10 @@ bool vtkMedialGhostPass::FilterImportanceMap(vtkOpenGLRenderWindow* window) {
     complete = gpu.Framebuffer->StartNonOrtho(gpu.Width, gpu.Height) && complete;
     if (complete) {
       state->vtkglViewport(0, 0, gpu.Width, gpu.Height);
-      state->vtkglScissor(0, 0, gpu.Width, gpu.Height);
+      state->vtkglDisable(GL_SCISSOR_TEST);
+      state->vtkglClear(GL_COLOR_BUFFER_BIT);
+      state->vtkglEnable(GL_SCISSOR_TEST);
+      state->vtkglScissor(scissor[0], scissor[1], scissor[2], scissor[3]);
       step.from->Activate();
       program->SetUniformi("source", step.from->GetTextureUnit());
       program->SetUniform2i("direction", step.direction);
@@ -361,6 +414,7 @@ bool vtkMedialGhostPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstr
                              static_cast<float>(this->Viewport[2]), static_cast<float>(this->Viewport[3])};
   program->SetUniformi("medialGhostMap", this->Gpu->Map->GetTextureUnit());
   program->SetUniform4f("medialGhostViewport", viewport);
+  program->SetUniform4f("medialGhostRect", this->GhostRectangle);
   program->SetUniformf("medialGhostOpacity", cutaway ? 0.0f : static_cast<float>(this->GhostOpacity));
   if (program->IsUniformUsed("medialGhostSilhouette"))
     program->SetUniformf("medialGhostSilhouette", cutaway ? 0.0f : static_cast<float>(this->SilhouetteStrength));

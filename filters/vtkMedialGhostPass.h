@@ -141,4 +141,5 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
   std::unique_ptr<Resources> Gpu;
   int Phase = 0;  // 0 idle, 1 drawing the importance map, 2 drawing the scene
   int Viewport[4] = {0, 0, 0, 0};
+  float GhostRectangle[4] = {0, 0, 0, 0};  // window pixels where the map can matter this frame
 };
