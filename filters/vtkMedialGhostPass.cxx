@@ -161,24 +161,24 @@ void vtkMedialGhostPass::SetDelegatePass(vtkRenderPass* pass) {
   this->Modified();
 }
 
-vtkRenderPass* vtkMedialGhostPass::GetDelegatePass() { return this->ActiveDelegate(); }
+vtkRenderPass* vtkMedialGhostPass::GetDelegatePass() { return this->ActiveDelegate(this->Translucency); }
 
-vtkRenderPass* vtkMedialGhostPass::ActiveDelegate() {
+vtkRenderPass* vtkMedialGhostPass::ActiveDelegate(int translucency) {
   if (this->UserDelegate) return this->UserDelegate;
-  if (!this->DefaultDelegate || this->DefaultDelegateTranslucency != this->Translucency) {
+  if (!this->DefaultDelegate || this->DefaultDelegateTranslucency != translucency) {
     auto steps = vtkSmartPointer<vtkRenderStepsPass>::New();
     auto translucent = vtkSmartPointer<vtkTranslucentPass>::New();
-    if (this->Translucency == DepthPeeling) {
+    if (translucency == DepthPeeling) {
       auto peeling = vtkSmartPointer<vtkDualDepthPeelingPass>::New();
       peeling->SetTranslucentPass(translucent);
       steps->SetTranslucentPass(peeling);
-    } else if (this->Translucency == OrderIndependent) {
+    } else if (translucency == OrderIndependent) {
       auto oit = vtkSmartPointer<vtkOrderIndependentTranslucentPass>::New();
       oit->SetTranslucentPass(translucent);
       steps->SetTranslucentPass(oit);
     }
     this->DefaultDelegate = steps;
-    this->DefaultDelegateTranslucency = this->Translucency;
+    this->DefaultDelegateTranslucency = translucency;
   }
   return this->DefaultDelegate;
 }
@@ -194,8 +194,11 @@ void vtkMedialGhostPass::Render(const vtkRenderState* s) {
   this->LastInterestCount = 0;
   this->LastMapSize[0] = this->LastMapSize[1] = 0;
   vtkRenderer* renderer = s->GetRenderer();
-  vtkRenderPass* delegate = this->ActiveDelegate();
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  // Dual depth peeling draws nothing translucent into a multisampled window: OIT takes over there.
+  const bool multisampled = window && window->GetMultiSamples() > 0;
+  vtkRenderPass* delegate = this->ActiveDelegate(
+      this->Translucency == DepthPeeling && multisampled ? static_cast<int>(OrderIndependent) : this->Translucency);
 
   int width = 0, height = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &this->Viewport[0], &this->Viewport[1]);

@@ -83,8 +83,9 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
   vtkGetMacro(BorderWidth, int);
 
   /// How the delegate composites translucent props: Blended (plain alpha blending, the renderer's
-  /// default), DepthPeeling (dual depth peeling; needs a window without multisampling) or
-  /// OrderIndependent (weighted blended OIT). Default Blended. Ignored when a delegate is set.
+  /// default), DepthPeeling (dual depth peeling; in a multisampled window, where it would draw no
+  /// translucent prop at all, OrderIndependent is used instead) or OrderIndependent (weighted blended
+  /// OIT). Default Blended. Ignored when a delegate is set.
   vtkSetClampMacro(Translucency, int, Blended, OrderIndependent);
   vtkGetMacro(Translucency, int);
 
@@ -119,7 +120,7 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
   vtkMedialGhostPass(const vtkMedialGhostPass&) = delete;
   void operator=(const vtkMedialGhostPass&) = delete;
 
-  vtkRenderPass* ActiveDelegate();
+  vtkRenderPass* ActiveDelegate(int translucency);
   bool RenderImportanceMap(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   bool FilterImportanceMap(vtkOpenGLRenderWindow* window);
 

@@ -271,3 +271,22 @@ TEST(GhostView, ImportanceIsClampedAndZeroRemovesIt) {
   vtkMedialGhostPass::SetImportance(nullptr, 1.0);  // no crash
   EXPECT_EQ(vtkMedialGhostPass::GetImportance(nullptr), 0.0);
 }
+
+TEST(GhostView, TranslucentPropsCompositeInEveryTranslucencyMode) {
+  MEDIAL_REQUIRE_DISPLAY();
+  for (int translucency : {vtkMedialGhostPass::Blended, vtkMedialGhostPass::DepthPeeling,
+                           vtkMedialGhostPass::OrderIndependent}) {
+    // Box and sphere of interest as before, plus a translucent sphere (blue) beside the box.
+    BoxAndSphere scene(vtkMedialGhostPass::Ghost);
+    scene.scene->SetMeshOpacity(0.5);
+    scene.scene->AddData(sphere(1.0, 3.2, 0, 0));
+    scene.scene->GetGhostPass()->SetTranslucency(translucency);
+    auto errors = medial::ErrorCollector::Watch(scene.scene->GetGhostPass());
+    auto image = render(scene.scene, "translucency" + std::to_string(translucency) + ".png");
+    ASSERT_NE(image, nullptr);
+    EXPECT_FALSE(errors->HasErrors()) << errors->Joined();
+    const Hues hues = countHues(image);
+    EXPECT_GT(hues.red, 0.02) << "translucency " << translucency;
+    EXPECT_GT(hues.blue, 0.005) << "translucency " << translucency;
+  }
+}
