@@ -226,22 +226,22 @@ void vtkMedialGhostPass::Render(const vtkRenderState* s) {
 
   interestRectangle(renderer, props, this->Viewport, this->BorderWidth + 2.0 + 1.0 / this->MapScale,
                     this->GhostRectangle);
-  const bool mapped = this->RenderImportanceMap(&sorted, window) && this->FilterImportanceMap(window);
-  if (mapped) {
-    this->LastInterestCount = interestCount;
-    this->LastMapSize[0] = this->Gpu->Width;
-    this->LastMapSize[1] = this->Gpu->Height;
-    this->Gpu->Map->Activate();
-    this->Phase = 2;
+  if (!(this->RenderImportanceMap(&sorted, window) && this->FilterImportanceMap(window))) {
+    this->PostRender(&sorted);  // the error is reported; draw the scene plainly rather than nothing
+    delegate->Render(&sorted);
+    this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
+    return;
   }
-  if (!mapped) this->PostRender(&sorted);  // draw the scene plainly rather than nothing
+  this->LastInterestCount = interestCount;
+  this->LastMapSize[0] = this->Gpu->Width;
+  this->LastMapSize[1] = this->Gpu->Height;
+  this->Gpu->Map->Activate();
+  this->Phase = 2;
   delegate->Render(&sorted);
   this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
-  if (mapped) {
-    this->Gpu->Map->Deactivate();
-    this->Phase = 0;
-    this->PostRender(&sorted);
-  }
+  this->Gpu->Map->Deactivate();
+  this->Phase = 0;
+  this->PostRender(&sorted);
 }
 
 bool vtkMedialGhostPass::RenderImportanceMap(const vtkRenderState* s, vtkOpenGLRenderWindow* window) {
@@ -249,15 +249,18 @@ bool vtkMedialGhostPass::RenderImportanceMap(const vtkRenderState* s, vtkOpenGLR
   const int width = std::max(1, static_cast<int>(std::lround(this->Viewport[2] * this->MapScale)));
   const int height = std::max(1, static_cast<int>(std::lround(this->Viewport[3] * this->MapScale)));
   if (gpu.Width != width || gpu.Height != height || !gpu.Framebuffer) {
-    gpu.Release(window);
+    for (vtkTextureObject* texture : {gpu.Raw.Get(), gpu.RawDepth.Get(), gpu.Half.Get(), gpu.Map.Get()})
+      if (texture) texture->ReleaseGraphicsResources(window);
     gpu.Raw = floatTexture(window, width, height);
     gpu.Half = floatTexture(window, width, height);
     gpu.Map = floatTexture(window, width, height);
     gpu.RawDepth = vtkSmartPointer<vtkTextureObject>::New();
     gpu.RawDepth->SetContext(window);
     gpu.RawDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    gpu.Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    gpu.Framebuffer->SetContext(window);
+    if (!gpu.Framebuffer) {
+      gpu.Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      gpu.Framebuffer->SetContext(window);
+    }
     gpu.Width = width;
     gpu.Height = height;
   }

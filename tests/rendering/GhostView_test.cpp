@@ -105,10 +105,9 @@ vtkSmartPointer<vtkImageData> render(vtkMedialScene* scene, const std::string& n
 // A 4-unit box (ivory) around a sphere of radius 1 (red), the sphere an object of interest.
 struct BoxAndSphere {
   vtkSmartPointer<vtkMedialScene> scene = vtkSmartPointer<vtkMedialScene>::New();
-  vtkProp3D* occluder = nullptr;
   vtkProp3D* interest = nullptr;
   explicit BoxAndSphere(int mode) {
-    occluder = scene->AddData(box(4.0));
+    scene->AddData(box(4.0));
     interest = scene->AddData(sphere(1.0));
     scene->SetImportance(interest, 1.0);
     scene->GetGhostPass()->SetMode(mode);
