@@ -1,0 +1,175 @@
+#include "sketch/BoundedDP.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace medial {
+namespace {
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Centripetal Catmull-Rom point between p1 and p2 (Barry-Goldman pyramid), t in [0, 1].
+Eigen::Vector2d catmullRom(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2,
+                           const Eigen::Vector2d& p3, double t) {
+  auto knot = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return std::max(1e-12, std::sqrt((b - a).norm())); };
+  const double t0 = 0, t1 = t0 + knot(p0, p1), t2 = t1 + knot(p1, p2), t3 = t2 + knot(p2, p3);
+  const double u = t1 + t * (t2 - t1);
+  const Eigen::Vector2d a1 = (t1 - u) / (t1 - t0) * p0 + (u - t0) / (t1 - t0) * p1;
+  const Eigen::Vector2d a2 = (t2 - u) / (t2 - t1) * p1 + (u - t1) / (t2 - t1) * p2;
+  const Eigen::Vector2d a3 = (t3 - u) / (t3 - t2) * p2 + (u - t2) / (t3 - t2) * p3;
+  const Eigen::Vector2d b1 = (t2 - u) / (t2 - t0) * a1 + (u - t0) / (t2 - t0) * a2;
+  const Eigen::Vector2d b2 = (t3 - u) / (t3 - t1) * a2 + (u - t1) / (t3 - t1) * a3;
+  return (t2 - u) / (t2 - t1) * b1 + (u - t1) / (t2 - t1) * b2;
+}
+
+// Distance along direction `d` from p to the polygon boundary (first hit), or 0 when nothing is hit.
+double rayToBoundary(const Polygon2& polygon, const Eigen::Vector2d& p, const Eigen::Vector2d& d) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i = 0, n = polygon.size(); i < n; ++i) {
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d e = polygon[(i + 1) % n] - a;
+    const double denominator = cross(d, e);
+    if (std::abs(denominator) < 1e-300) continue;
+    const double s = cross(a - p, e) / denominator;  // along the ray
+    const double u = cross(a - p, d) / denominator;  // along the edge
+    if (s > 0 && u >= 0 && u <= 1) best = std::min(best, s);
+  }
+  return std::isfinite(best) ? best : 0.0;
+}
+
+struct Slices {
+  std::vector<Eigen::Vector2d> points, left, right;  // p_i and the ends of s_i
+  std::vector<double> arc, widthLeft, widthRight;    // arc length of p_i, d+_i, d-_i
+};
+
+Slices slice(const std::vector<Eigen::Vector2d>& samples, const Polygon2& polygon) {
+  Slices s;
+  s.points = samples;
+  const size_t n = samples.size();
+  double travelled = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (i > 0) travelled += (samples[i] - samples[i - 1]).norm();
+    const Eigen::Vector2d tangent = (samples[std::min(i + 1, n - 1)] - samples[i > 0 ? i - 1 : 0]).normalized();
+    const Eigen::Vector2d normal(-tangent.y(), tangent.x());
+    const double plus = rayToBoundary(polygon, samples[i], normal);
+    const double minus = rayToBoundary(polygon, samples[i], -normal);
+    s.arc.push_back(travelled);
+    s.widthLeft.push_back(plus);
+    s.widthRight.push_back(minus);
+    s.left.push_back(samples[i] + plus * normal);
+    s.right.push_back(samples[i] - minus * normal);
+  }
+  return s;
+}
+
+// Algorithm 1 (with alpha_s of eq. 1 and the threshold test before marking, see the header).
+void selectPoints(const Slices& s, int first, int last, double epsilon, double alpha, std::vector<char>& keep) {
+  if (last <= first + 1) return;
+  const Eigen::Vector2d a = s.points[first], b = s.points[last];
+  const Eigen::Vector2d chord = b - a;
+  const double chordLength = chord.norm();
+  const double span = s.arc[last] - s.arc[first];
+  int best = first;
+  double bestError = 0;
+  for (int i = first + 1; i < last; ++i) {
+    const double axis = chordLength > 0 ? std::abs(cross(chord, s.points[i] - a)) / chordLength : (s.points[i] - a).norm();
+    const double t = span > 0 ? (s.arc[i] - s.arc[first]) / span : 0.0;
+    const double sideLeft = (1 - t) * s.widthLeft[first] + t * s.widthLeft[last];
+    const double sideRight = (1 - t) * s.widthRight[first] + t * s.widthRight[last];
+    const double shape = std::abs(s.widthLeft[i] - sideLeft) + std::abs(s.widthRight[i] - sideRight);
+    const double error = axis + alpha * shape;
+    if (error > bestError) bestError = error, best = i;
+  }
+  if (bestError <= epsilon) return;
+  keep[best] = 1;
+  selectPoints(s, first, best, epsilon, alpha, keep);
+  selectPoints(s, best, last, epsilon, alpha, keep);
+}
+
+// IsInsideShape of Algorithm 2: no edge of the polyline crosses the sides of Omega.
+bool insideRegion(const Slices& s, const std::vector<int>& kept) {
+  for (size_t k = 0; k + 1 < kept.size(); ++k) {
+    const int i = kept[k], j = kept[k + 1];
+    if (j == i + 1) continue;  // consecutive samples follow the axis itself
+    const Eigen::Vector2d& a = s.points[i];
+    const Eigen::Vector2d& b = s.points[j];
+    for (size_t m = 0; m + 1 < s.points.size(); ++m)
+      if (segmentsIntersect(a, b, s.left[m], s.left[m + 1]) || segmentsIntersect(a, b, s.right[m], s.right[m + 1]))
+        return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> sampleSpline(const std::vector<Eigen::Vector2d>& nodes, double step) {
+  const size_t n = nodes.size();
+  if (n < 2) return nodes;
+  // Dense polyline along the spline (16 pieces per span), then uniform resampling by arc length.
+  std::vector<Eigen::Vector2d> dense;
+  for (size_t i = 0; i + 1 < n; ++i) {
+    const Eigen::Vector2d p0 = i > 0 ? nodes[i - 1] : 2 * nodes[0] - nodes[1];
+    const Eigen::Vector2d p3 = i + 2 < n ? nodes[i + 2] : 2 * nodes[n - 1] - nodes[n - 2];
+    for (int k = 0; k < 16; ++k) dense.push_back(catmullRom(p0, nodes[i], nodes[i + 1], p3, k / 16.0));
+  }
+  dense.push_back(nodes.back());
+  double total = 0;
+  for (size_t i = 1; i < dense.size(); ++i) total += (dense[i] - dense[i - 1]).norm();
+  const int pieces = std::max(2, int(std::round(total / step)));
+  const double spacing = total / pieces;
+  std::vector<Eigen::Vector2d> samples{dense.front()};
+  double travelled = 0;
+  size_t segment = 0;
+  for (int k = 1; k < pieces; ++k) {
+    const double target = k * spacing;
+    double length = (dense[segment + 1] - dense[segment]).norm();
+    while (travelled + length < target && segment + 2 < dense.size()) {
+      travelled += length;
+      ++segment;
+      length = (dense[segment + 1] - dense[segment]).norm();
+    }
+    const double t = length > 0 ? std::clamp((target - travelled) / length, 0.0, 1.0) : 0.0;
+    samples.push_back(dense[segment] + t * (dense[segment + 1] - dense[segment]));
+  }
+  samples.push_back(dense.back());
+  return samples;
+}
+
+BoundedDPResult boundedDP(const std::vector<Eigen::Vector2d>& branch, const Polygon2& polygon,
+                          const BoundedDPParameters& parameters) {
+  BoundedDPResult result;
+  if (branch.size() <= 2) {
+    result.points = branch;
+    result.threshold = parameters.threshold;
+    return result;
+  }
+  const Slices s = slice(sampleSpline(branch, parameters.sliceStep), polygon);
+  const int n = int(s.points.size());
+  // The ladder: unit x ratio^k; start at the rung at or below the threshold.
+  const double ratio = parameters.tuningRatio;
+  const double unit = parameters.ladderUnit;
+  int rung = int(std::ceil(std::log(std::max(parameters.threshold, 1e-300) / unit) / std::log(ratio) - 1e-9));
+  for (int iteration = 0; iteration < 200; ++iteration, ++rung) {
+    const double epsilon = unit * std::pow(ratio, rung);
+    std::vector<char> keep(n, 0);
+    keep[0] = keep[n - 1] = 1;
+    selectPoints(s, 0, n - 1, epsilon, parameters.shapeWeight, keep);
+    std::vector<int> kept;
+    for (int i = 0; i < n; ++i)
+      if (keep[i]) kept.push_back(i);
+    const bool everything = int(kept.size()) == n;
+    if (insideRegion(s, kept) || everything) {
+      for (int i : kept) result.points.push_back(s.points[i]);
+      result.threshold = epsilon;
+      result.inside = insideRegion(s, kept);
+      return result;
+    }
+  }
+  result.points = s.points;
+  result.threshold = 0;
+  result.inside = false;
+  return result;
+}
+
+}  // namespace medial

@@ -1,0 +1,188 @@
+#include "sketch/SketchSkeleton.h"
+
+#include "sketch/BoundedDP.h"
+#include "sketch/SketchInflation.h"
+#include "sketch/SkeletonRefinement.h"
+#include "sketch/StraightSkeletonGraph.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace medial {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+Eigen::Vector3d place(const Eigen::Matrix4d& placement, const Eigen::Vector2d& p, double z = 0) {
+  return (placement * Eigen::Vector4d(p.x(), p.y(), z, 1)).head<3>();
+}
+
+// How much the placement scales lengths in the stroke's plane.
+double planeScale(const Eigen::Matrix4d& placement) {
+  return std::sqrt(placement.block<3, 1>(0, 0).cross(placement.block<3, 1>(0, 1)).norm());
+}
+
+// Stage 1-3 for one part: its skeleton nodes and bones, added to `graph` with label `part`.
+bool extractPart(const SketchPart& part, int partIndex, const SketchParameters& p, double unit, SketchGraph& graph,
+                 SketchPartResult& out, std::string& error) {
+  out.stroke = prepareStroke(part.stroke, {p.resampleStep * unit, p.polygonTolerance * unit});
+  if (!out.stroke.ok()) {
+    error = out.stroke.error;
+    return false;
+  }
+  SkeletonGraph2 local;
+  if (!straightSkeletonGraph(out.stroke.polygon, p.collapseRatio, local, error)) return false;
+  out.straightSkeletonNodes = local.nodeCount();
+  const double scale = planeScale(part.placement);
+  const RefinementThresholds& thresholds = part.thresholds ? *part.thresholds : p.thresholds;
+  std::vector<int> nodeOf(local.nodeCount(), -1);
+  auto addNode = [&](const Eigen::Vector2d& q) {
+    return graph.addNode(place(part.placement, q), scale * distanceToBoundary(out.stroke.resampled, q), partIndex);
+  };
+  auto jointNode = [&](int v) {
+    if (nodeOf[v] < 0) nodeOf[v] = addNode(local.nodes[v]);
+    return nodeOf[v];
+  };
+  if (local.edges.empty()) {  // e.g. a triangle: one inscribed ball
+    jointNode(0);
+    return true;
+  }
+  const auto branches = findBranches(local.nodeCount(), local.edges);
+  for (int b = 0; b < int(branches.size()); ++b) {
+    const auto& branch = branches[b];
+    std::vector<Eigen::Vector2d> points;
+    for (int v : branch) points.push_back(local.nodes[v]);
+    if (branch.size() >= 3) {
+      BoundedDPParameters dp;
+      const auto custom = part.branchSimplification.find(b);
+      dp.threshold = (custom != part.branchSimplification.end() ? custom->second : thresholds.simplification) * unit;
+      dp.shapeWeight = p.shapeWeight;
+      dp.sliceStep = p.sliceStep * unit;
+      dp.tuningRatio = p.tuningRatio;
+      dp.ladderUnit = unit;
+      points = boundedDP(points, out.stroke.polygon, dp).points;
+      ++out.branches;
+    }
+    int previous = jointNode(branch.front());
+    for (size_t k = 1; k + 1 < points.size(); ++k) {
+      const int node = addNode(points[k]);
+      graph.addEdge(previous, node, partIndex, b);
+      previous = node;
+    }
+    graph.addEdge(previous, jointNode(branch.back()), partIndex, b);
+  }
+  return true;
+}
+
+std::vector<double> nodeThresholds(const SketchGraph& graph, const std::vector<SketchPart>& parts,
+                                   const SketchParameters& p, double unit, double RefinementThresholds::*which) {
+  std::vector<double> result(graph.skeleton.nodeCount());
+  for (int v = 0; v < graph.skeleton.nodeCount(); ++v) {
+    const auto& part = parts[graph.nodePart[v]];
+    result[v] = unit * (part.thresholds ? *part.thresholds : p.thresholds).*which;
+  }
+  return result;
+}
+
+bool validPlacement(const Eigen::Matrix4d& m) {
+  return m.allFinite() && planeScale(m) > 0 && m.row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1));
+}
+
+}  // namespace
+
+SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchParameters& p,
+                            const std::function<bool(double)>& progress) {
+  SketchResult result;
+  if (parts.empty()) {
+    result.error = "no stroke";
+    return result;
+  }
+  auto aborted = [&](double fraction) {
+    if (progress && !progress(fraction)) {
+      result.error = "aborted";
+      return true;
+    }
+    return false;
+  };
+  // The unit: a thousandth of the drawing's diagonal unless given.
+  Eigen::AlignedBox2d box;
+  for (const auto& part : parts)
+    for (const auto& q : part.stroke)
+      if (q.allFinite()) box.extend(q);
+  result.unitLength = p.unitLength > 0 ? p.unitLength : (box.isEmpty() ? 0.0 : box.diagonal().norm() / 1000);
+  const double unit = result.unitLength;
+  if (!(unit > 0)) {
+    result.error = "the strokes have no extent (all points coincide or are not finite)";
+    return result;
+  }
+  const auto localStart = Clock::now();
+  result.parts.resize(parts.size());
+  for (int k = 0; k < int(parts.size()); ++k) {
+    std::string error;
+    if (!validPlacement(parts[k].placement))
+      error = "the placement matrix must be finite, with last row 0 0 0 1 and a non-degenerate plane";
+    else
+      extractPart(parts[k], k, p, unit, result.graph, result.parts[k], error);
+    if (!error.empty()) {
+      result.error = "stroke " + std::to_string(k + 1) + ": " + error;
+      return result;
+    }
+    if (aborted(0.6 * (k + 1) / parts.size())) return result;
+  }
+  result.localSeconds = secondsSince(localStart);
+
+  const auto connectionStart = Clock::now();
+  const auto attachments = connectParts(result.graph, int(parts.size()));
+  for (size_t k = 0; k < parts.size(); ++k) result.parts[k].attachment = attachments[k];
+  result.connectionSeconds = secondsSince(connectionStart);
+
+  const auto refinementStart = Clock::now();
+  SketchGraph& g = result.graph;
+  mergeJunctions(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::merging));
+  pruneBranches(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::pruning));
+  collapseEdges(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::collapsing));
+  // The root: the widest joint of the first part (the torso of a character drawn torso first).
+  for (int v = 0; v < g.skeleton.nodeCount(); ++v)
+    if (g.nodePart[v] == 0 && (g.skeleton.root < 0 || g.skeleton.radii[v] > g.skeleton.radii[g.skeleton.root]))
+      g.skeleton.root = v;
+  result.refinementSeconds = secondsSince(refinementStart);
+  if (aborted(0.7)) return result;
+
+  if (p.inflate) {
+    const auto inflationStart = Clock::now();
+    std::vector<Eigen::RowVector3d> vertices;
+    std::vector<Eigen::RowVector3i> faces;
+    for (int k = 0; k < int(parts.size()); ++k) {
+      TriangleMesh piece;
+      std::string error;
+      if (!inflatePolygon(result.parts[k].stroke.resampled, {p.thickness, p.meshEdgeLength * unit}, piece, error)) {
+        result.error = "stroke " + std::to_string(k + 1) + ": " + error;
+        return result;
+      }
+      const int offset = int(vertices.size());
+      const bool mirrored = parts[k].placement.block<3, 3>(0, 0).determinant() < 0;
+      for (int v = 0; v < piece.vertices.rows(); ++v) {
+        const Eigen::Vector3d q = piece.vertices.row(v).transpose();
+        vertices.push_back(place(parts[k].placement, q.head<2>(), q.z()).transpose());
+        result.meshVertexPart.push_back(k);
+      }
+      for (int f = 0; f < piece.faces.rows(); ++f) {
+        Eigen::RowVector3i face = piece.faces.row(f).array() + offset;
+        if (mirrored) std::swap(face[1], face[2]);
+        faces.push_back(face);
+      }
+      result.parts[k].firstMeshVertex = offset;
+      result.parts[k].meshVertexCount = int(piece.vertices.rows());
+      if (aborted(0.7 + 0.3 * (k + 1) / parts.size())) return result;
+    }
+    result.mesh.vertices.resize(int(vertices.size()), 3);
+    for (size_t v = 0; v < vertices.size(); ++v) result.mesh.vertices.row(v) = vertices[v];
+    result.mesh.faces.resize(int(faces.size()), 3);
+    for (size_t f = 0; f < faces.size(); ++f) result.mesh.faces.row(f) = faces[f];
+    result.inflationSeconds = secondsSince(inflationStart);
+  }
+  return result;
+}
+
+}  // namespace medial

@@ -1,0 +1,164 @@
+#include "sketch/StraightSkeletonGraph.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/create_straight_skeleton_2.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+namespace medial {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_2;
+
+boost::shared_ptr<CGAL::Straight_skeleton_2<Kernel>> buildSkeleton(const Polygon2& polygon) {
+  std::vector<Point> points;
+  points.reserve(polygon.size());
+  for (const auto& p : polygon) points.emplace_back(p.x(), p.y());
+  try {
+    return CGAL::create_interior_straight_skeleton_2(points.begin(), points.end(), Kernel());
+  } catch (const std::exception&) {
+    return nullptr;  // CGAL precondition failures on degenerate input
+  }
+}
+
+int findRoot(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+}  // namespace
+
+int cgalStraightSkeletonVertexCount(const Polygon2& polygon) {
+  const auto skeleton = buildSkeleton(polygon);
+  return skeleton ? int(skeleton->size_of_vertices()) : -1;
+}
+
+bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, SkeletonGraph2& graph, std::string& error) {
+  graph = {};
+  const auto skeleton = buildSkeleton(polygon);
+  if (!skeleton) {
+    error = "CGAL could not build the straight skeleton of the polygon (degenerate outline)";
+    return false;
+  }
+  // Skeleton vertices (not polygon vertices) become nodes; inner bisectors become edges.
+  std::map<int, int> nodeOfVertex;
+  for (auto v = skeleton->vertices_begin(); v != skeleton->vertices_end(); ++v) {
+    if (!v->is_skeleton()) continue;
+    nodeOfVertex[v->id()] = graph.nodeCount();
+    graph.nodes.emplace_back(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y()));
+  }
+  std::vector<std::array<int, 2>> edges;
+  for (auto h = skeleton->halfedges_begin(); h != skeleton->halfedges_end(); ++h) {
+    if (!h->is_inner_bisector() || h->id() > h->opposite()->id()) continue;
+    edges.push_back({nodeOfVertex.at(h->vertex()->id()), nodeOfVertex.at(h->opposite()->vertex()->id())});
+  }
+  // A sharp convex vertex (interior angle < 60 degrees) is a tip whose arm is nothing but its peripheral
+  // edge, e.g. a star's point. Removing it would cut the arm off, so its inner two thirds stay, ending
+  // where the inscribed ball has a third of the node's radius.
+  std::map<std::pair<double, double>, int> indexOfPoint;
+  for (int i = 0; i < int(polygon.size()); ++i) indexOfPoint[{polygon[i].x(), polygon[i].y()}] = i;
+  auto isSharp = [&](const Eigen::Vector2d& p) {
+    const auto found = indexOfPoint.find({p.x(), p.y()});
+    if (found == indexOfPoint.end()) return false;
+    const int i = found->second, n = int(polygon.size());
+    const Eigen::Vector2d in = (polygon[i] - polygon[(i + n - 1) % n]).normalized();
+    const Eigen::Vector2d out = (polygon[(i + 1) % n] - polygon[i]).normalized();
+    const double turn = in.x() * out.y() - in.y() * out.x();  // > 0: convex in a counter-clockwise polygon
+    return turn > 0 && (-in).dot(out) > 0.5;                  // the angle between the edges < 60 degrees
+  };
+  for (auto h = skeleton->halfedges_begin(); h != skeleton->halfedges_end(); ++h) {
+    if (!h->is_bisector() || h->is_inner_bisector() || !h->vertex()->is_skeleton()) continue;
+    const auto tip = h->opposite()->vertex();
+    if (!tip->is_contour()) continue;
+    const Eigen::Vector2d tipPoint(CGAL::to_double(tip->point().x()), CGAL::to_double(tip->point().y()));
+    if (!isSharp(tipPoint)) continue;
+    const int n = nodeOfVertex.at(h->vertex()->id());
+    edges.push_back({n, graph.nodeCount()});
+    graph.nodes.push_back(tipPoint + (graph.nodes[n] - tipPoint) / 3);
+  }
+  if (graph.nodes.empty()) {
+    error = "the straight skeleton of the polygon has no inner vertex";
+    return false;
+  }
+  // Collapse short edges, shortest first (§3.1: threshold 0.5 x mean skeleton edge length).
+  double meanLength = 0;
+  for (const auto& e : edges) meanLength += (graph.nodes[e[0]] - graph.nodes[e[1]]).norm();
+  meanLength = edges.empty() ? 0 : meanLength / edges.size();
+  const double threshold = collapseRatio * meanLength;
+  const int n = graph.nodeCount();
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<Eigen::Vector2d> sum = graph.nodes;
+  std::vector<int> members(n, 1);
+  std::vector<int> order(edges.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto length = [&](int e) {
+    const int a = findRoot(parent, edges[e][0]), b = findRoot(parent, edges[e][1]);
+    return (sum[a] / members[a] - sum[b] / members[b]).norm();
+  };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return length(a) < length(b); });
+  for (int e : order) {
+    const int a = findRoot(parent, edges[e][0]), b = findRoot(parent, edges[e][1]);
+    if (a == b || length(e) >= threshold) continue;
+    parent[b] = a;
+    sum[a] += sum[b];
+    members[a] += members[b];
+  }
+  std::vector<int> newIndex(n, -1);
+  std::vector<Eigen::Vector2d> nodes;
+  for (int i = 0; i < n; ++i)
+    if (findRoot(parent, i) == i) newIndex[i] = int(nodes.size()), nodes.push_back(sum[i] / members[i]);
+  graph.nodes = std::move(nodes);
+  std::vector<std::array<int, 2>> kept;
+  for (const auto& e : edges) {
+    int a = newIndex[findRoot(parent, e[0])], b = newIndex[findRoot(parent, e[1])];
+    if (a == b) continue;
+    if (a > b) std::swap(a, b);
+    kept.push_back({a, b});
+  }
+  std::sort(kept.begin(), kept.end());
+  kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+  graph.edges = std::move(kept);
+  return true;
+}
+
+std::vector<std::vector<int>> findBranches(int nodeCount, const std::vector<std::array<int, 2>>& edges) {
+  std::vector<std::vector<std::pair<int, int>>> adjacency(nodeCount);  // (neighbour, edge)
+  for (int e = 0; e < int(edges.size()); ++e) {
+    adjacency[edges[e][0]].push_back({edges[e][1], e});
+    adjacency[edges[e][1]].push_back({edges[e][0], e});
+  }
+  std::vector<char> used(edges.size(), 0);
+  std::vector<std::vector<int>> branches;
+  auto walk = [&](int start, int neighbour, int edge) {
+    std::vector<int> branch{start};
+    int previous = start, current = neighbour;
+    used[edge] = 1;
+    while (true) {
+      branch.push_back(current);
+      if (adjacency[current].size() != 2 || current == start) break;
+      const auto& next = adjacency[current][0].first == previous && !used[adjacency[current][1].second] ? adjacency[current][1]
+                         : !used[adjacency[current][0].second]                                          ? adjacency[current][0]
+                                                                                                         : adjacency[current][1];
+      if (used[next.second]) break;
+      used[next.second] = 1;
+      previous = current;
+      current = next.first;
+    }
+    branches.push_back(std::move(branch));
+  };
+  for (int v = 0; v < nodeCount; ++v) {
+    if (adjacency[v].size() == 2) continue;
+    for (const auto& [neighbour, edge] : adjacency[v])
+      if (!used[edge]) walk(v, neighbour, edge);
+  }
+  for (int v = 0; v < nodeCount; ++v)  // pure cycles of sleeve joints
+    for (const auto& [neighbour, edge] : adjacency[v])
+      if (!used[edge]) walk(v, neighbour, edge);
+  return branches;
+}
+
+}  // namespace medial
