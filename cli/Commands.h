@@ -19,5 +19,6 @@ int runRender(const std::vector<std::string>& args);
 int runSkeleton(const std::vector<std::string>& args);
 int runSqm(const std::vector<std::string>& args);
 int runCenterline(const std::vector<std::string>& args);
+int runSketch(const std::vector<std::string>& args);
 
 }  // namespace medial::cli

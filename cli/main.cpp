@@ -17,16 +17,6 @@
 #endif
 
 namespace medial::cli {
-namespace {
-
-int notYetAvailable(const char* name) {
-  std::fprintf(stderr, "medial %s: not yet available in this build\n", name);
-  return kFailure;
-}
-
-int runSketch(const std::vector<std::string>&) { return notYetAvailable("sketch"); }
-
-}  // namespace
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> all = {
@@ -85,8 +75,27 @@ const std::vector<Command>& commands() {
        "  --quiet                   no progress line\n"
        "  --timings                 print stage times as JSON on stdout\n",
        runSqm},
-      {"sketch", "skeleton and inflated mesh of a closed 2-D stroke (not yet available)",
-       "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp]\n", runSketch},
+      {"sketch", "animatable skeleton and inflated mesh of closed 2-D strokes",
+       "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp] [--simplify ES] [--merge EM]\n"
+       "                     [--prune ET] [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U]\n"
+       "                     [--resample STEP] [--thickness C] [--quiet] [--timings]\n\n"
+       "Skeletonizes sketched outlines (Ma et al. 2021): each closed stroke of POLYGON.txt ('x y' lines, parts\n"
+       "separated by a blank line, each optionally followed by four rows of its 4x4 placement matrix) gets a\n"
+       "straight skeleton simplified by BoundedDP; parts are joined in drawing order where they intersect and\n"
+       "the whole is refined. Lengths are sketch pixels: a thousandth of the drawing's diagonal (see --unit).\n"
+       "  -o, --output SKELETON     the skeleton (.vtp: Radius, NodeType, Root, Part, Branch; .vtk .obj .ply)\n"
+       "  --mesh MESH               the inflated strokes, closed triangle meshes with point data Part\n"
+       "  --simplify ES             branch simplification threshold epsilon_s (default 5)\n"
+       "  --merge EM                junction merging threshold epsilon_m (default 30)\n"
+       "  --prune ET                branch pruning threshold epsilon_t (default 30)\n"
+       "  --collapse EC             edge collapsing threshold epsilon_c (default 10)\n"
+       "  --part K:ES,EM,ET,EC      the four thresholds for part K only (from 1); repeatable\n"
+       "  --unit U                  stroke units per sketch pixel (default: diagonal / 1000)\n"
+       "  --resample STEP           stroke resampling step in sketch pixels (default 10)\n"
+       "  --thickness C             inflation thickness (default 2: round tubes)\n"
+       "  --quiet                   no progress line\n"
+       "  --timings                 print stage times as JSON on stdout\n",
+       runSketch},
       {"render", "render meshes, skeletons and volumes offscreen to a PNG",
        "usage: medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION]\n"
        "                     [--skeleton-scale S] [--mesh-opacity A]\n"

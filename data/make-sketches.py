@@ -84,8 +84,8 @@ def bird_body():
 
 def wing_outline():
     # counter-clockwise: along the trailing edge out to the tip, back along the leading edge
-    lower = [(x, 10 - 50 * (1 - (max(x, 0) / 420) ** 1.5)) for x in range(-40, 421, 20)]
-    upper = [(x, 10 + 60 * (1 - (x / 420) ** 2)) for x in range(400, -41, -20)]
+    lower = [(x, 10 - 50 * (1 - (x / 420) ** 1.5)) for x in range(20, 421, 20)]
+    upper = [(x, 10 + 60 * (1 - (x / 420) ** 2)) for x in range(400, 19, -20)]
     return lower + upper
 
 

@@ -39,7 +39,7 @@ double rayToBoundary(const Polygon2& polygon, const Eigen::Vector2d& p, const Ei
 }
 
 struct Slices {
-  std::vector<Eigen::Vector2d> points, left, right;  // p_i and the ends of s_i
+  std::vector<Eigen::Vector2d> points;               // p_i
   std::vector<double> arc, widthLeft, widthRight;    // arc length of p_i, d+_i, d-_i
 };
 
@@ -52,13 +52,14 @@ Slices slice(const std::vector<Eigen::Vector2d>& samples, const Polygon2& polygo
     if (i > 0) travelled += (samples[i] - samples[i - 1]).norm();
     const Eigen::Vector2d tangent = (samples[std::min(i + 1, n - 1)] - samples[i > 0 ? i - 1 : 0]).normalized();
     const Eigen::Vector2d normal(-tangent.y(), tangent.x());
-    const double plus = rayToBoundary(polygon, samples[i], normal);
-    const double minus = rayToBoundary(polygon, samples[i], -normal);
+    // Where the axis bends sharply, a perpendicular can run along the tube instead of across it; no
+    // half-width of a general cylinder exceeds twice its inscribed radius, so longer hits are capped.
+    const double cap = 2 * distanceToBoundary(polygon, samples[i]);
+    const double plus = std::min(cap, rayToBoundary(polygon, samples[i], normal));
+    const double minus = std::min(cap, rayToBoundary(polygon, samples[i], -normal));
     s.arc.push_back(travelled);
-    s.widthLeft.push_back(plus);
-    s.widthRight.push_back(minus);
-    s.left.push_back(samples[i] + plus * normal);
-    s.right.push_back(samples[i] - minus * normal);
+    s.widthLeft.push_back(plus > 0 ? plus : cap / 2);
+    s.widthRight.push_back(minus > 0 ? minus : cap / 2);
   }
   return s;
 }
@@ -87,16 +88,26 @@ void selectPoints(const Slices& s, int first, int last, double epsilon, double a
   selectPoints(s, best, last, epsilon, alpha, keep);
 }
 
-// IsInsideShape of Algorithm 2: no edge of the polyline crosses the sides of Omega.
-bool insideRegion(const Slices& s, const std::vector<int>& kept) {
+// IsInsideShape of Algorithm 2: an edge p_i p_j of the polyline stays in Omega when it crosses every slice
+// s_k between its ends within the slice (its distance to p_k at most the half-width on the side it passes)
+// and never crosses the outline. Slice by slice rather than against the two side lines of Omega, which
+// fold over themselves where the axis bends.
+bool insideRegion(const Slices& s, const std::vector<int>& kept, const Polygon2& polygon) {
   for (size_t k = 0; k + 1 < kept.size(); ++k) {
     const int i = kept[k], j = kept[k + 1];
     if (j == i + 1) continue;  // consecutive samples follow the axis itself
     const Eigen::Vector2d& a = s.points[i];
     const Eigen::Vector2d& b = s.points[j];
-    for (size_t m = 0; m + 1 < s.points.size(); ++m)
-      if (segmentsIntersect(a, b, s.left[m], s.left[m + 1]) || segmentsIntersect(a, b, s.right[m], s.right[m + 1]))
-        return false;
+    const Eigen::Vector2d ab = b - a;
+    for (int m = i + 1; m < j; ++m) {
+      const Eigen::Vector2d& p = s.points[m];
+      const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+      const double distance = (a + t * ab - p).norm();
+      const bool edgeOnTheLeft = cross(ab, p - a) < 0;  // p lies right of the edge
+      if (distance > (edgeOnTheLeft ? s.widthLeft[m] : s.widthRight[m])) return false;
+    }
+    for (size_t e = 0, n = polygon.size(); e < n; ++e)
+      if (segmentsIntersect(a, b, polygon[e], polygon[(e + 1) % n])) return false;
   }
   return true;
 }
@@ -159,10 +170,10 @@ BoundedDPResult boundedDP(const std::vector<Eigen::Vector2d>& branch, const Poly
     for (int i = 0; i < n; ++i)
       if (keep[i]) kept.push_back(i);
     const bool everything = int(kept.size()) == n;
-    if (insideRegion(s, kept) || everything) {
+    if (insideRegion(s, kept, polygon) || everything) {
       for (int i : kept) result.points.push_back(s.points[i]);
       result.threshold = epsilon;
-      result.inside = insideRegion(s, kept);
+      result.inside = insideRegion(s, kept, polygon);
       return result;
     }
   }

@@ -3,8 +3,8 @@
 //
 // A spline (centripetal Catmull-Rom) through the branch's nodes is sampled uniformly, p_i every
 // `sliceStep`; at each p_i the line perpendicular to the axis is cut with the polygon, giving the segment
-// s_i (half-widths d+_i to the left and d-_i to the right). The left and right ends of the segments bound
-// the general-cylinder region Omega. Douglas-Peucker then picks, in each range [st, en], the sample with
+// s_i (half-widths d+_i to the left and d-_i to the right, capped at twice the inscribed radius where a
+// perpendicular runs along a bent tube); the slices make up the general-cylinder region Omega. Douglas-Peucker then picks, in each range [st, en], the sample with
 // the largest error (eq. 1)
 //     E_i = E_p + alpha_s E_s,
 // E_p the distance from p_i to the line p_st p_en and E_s = |d+_i - w+_i| + |d-_i - w-_i|, the distances of
@@ -12,7 +12,8 @@
 // interpolated linearly in arc length). A range is split while E_max > epsilon (the listing of Algorithm 1
 // marks i_max before its test, which would keep a joint in the middle of every straight bone; we keep it
 // only when E_max > epsilon, as Douglas-Peucker does and as a rectangle needs to stay one bone).
-// Algorithm 2: while an edge of the simplified polyline leaves Omega, epsilon is lowered by the ratio 0.8.
+// Algorithm 2: while an edge of the simplified polyline leaves Omega (it misses a slice between its ends, or
+// crosses the outline), epsilon is lowered by the ratio 0.8.
 // The thresholds tried lie on one fixed ladder unit x 0.8^k, starting at the rung at or below the user's
 // epsilon: then a larger epsilon never yields more joints (the ladder below it is the same).
 #pragma once

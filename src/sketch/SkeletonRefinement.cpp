@@ -101,12 +101,13 @@ int pruneBranches(SketchGraph& graph, const std::vector<double>& threshold) {
     double length = 0;
     for (size_t k = 1; k < branch.size(); ++k) length += (graph.skeleton.nodes[branch[k]] - graph.skeleton.nodes[branch[k - 1]]).norm();
     length += graph.skeleton.radii[branch.back()] - graph.skeleton.radii[branch.front()];  // reach beyond the junction's ball
-    if (length < threshold[branch.back()]) candidates.push_back({length, std::move(branch)});
+    const double spur = 0.5 * graph.skeleton.radii[branch.front()];
+    if (length < std::max(threshold[branch.back()], spur)) candidates.push_back({length, std::move(branch)});
   }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.length < b.length; });
   std::vector<char> deleted(n, 0);
   for (const Candidate& c : candidates) {
-    if (degree[c.nodes.front()] <= 2) continue;  // the junction keeps two bones
+    if (degree[c.nodes.front()] <= 1) continue;  // the junction keeps a bone
     --degree[c.nodes.front()];
     for (size_t k = 1; k < c.nodes.size(); ++k) deleted[c.nodes[k]] = 1;
   }

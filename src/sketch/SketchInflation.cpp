@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace medial {
 namespace {
@@ -21,6 +22,26 @@ using FaceBase = CGAL::Delaunay_mesh_face_base_2<Kernel>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds>;
 using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
+
+// Faces outside the outline: reachable from the infinite face without crossing a constrained edge.
+std::set<Cdt::Face_handle> outsideFaces(const Cdt& cdt) {
+  std::set<Cdt::Face_handle> outside{cdt.infinite_face()};
+  std::vector<Cdt::Face_handle> stack{cdt.infinite_face()};
+  auto around = cdt.incident_faces(cdt.infinite_vertex()), done = around;
+  do {
+    if (outside.insert(around).second) stack.push_back(around);
+  } while (++around != done);
+  while (!stack.empty()) {
+    const Cdt::Face_handle f = stack.back();
+    stack.pop_back();
+    for (int k = 0; k < 3; ++k) {
+      if (cdt.is_constrained(Cdt::Edge(f, k))) continue;
+      const Cdt::Face_handle g = f->neighbor(k);
+      if (outside.insert(g).second) stack.push_back(g);
+    }
+  }
+  return outside;
+}
 
 }  // namespace
 
@@ -49,26 +70,27 @@ bool inflatePolygon(const Polygon2& polygon, const InflationParameters& paramete
     } while (++edges != done);
     return false;
   };
-  for (int round = 0; round < 16; ++round) {
+  for (int round = 0; round < 64; ++round) {
+    const auto outside = outsideFaces(cdt);
     std::vector<Cdt::Point> midpoints;
     for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
-      if (cdt.is_constrained(*e)) continue;
+      if (cdt.is_constrained(*e) || outside.count(e->first)) continue;
       const auto a = e->first->vertex(Cdt::cw(e->second)), b = e->first->vertex(Cdt::ccw(e->second));
       const Eigen::Vector2d middle(0.5 * (a->point().x() + b->point().x()), 0.5 * (a->point().y() + b->point().y()));
-      if (isInside(polygon, middle) && onOutline(a) && onOutline(b)) midpoints.emplace_back(middle.x(), middle.y());
+      if (onOutline(a) && onOutline(b)) midpoints.emplace_back(middle.x(), middle.y());
     }
     if (midpoints.empty()) break;
     for (const auto& p : midpoints) cdt.insert(p);
   }
-  // Vertices of the faces inside the outline (judged by their centroids: insertions after the mesher
-  // leave its domain marks stale).
+  // Vertices of the faces inside the outline (marked again: insertions after the mesher leave its marks
+  // stale).
+  const auto outside = outsideFaces(cdt);
   std::map<Cdt::Vertex_handle, int> index;
   std::vector<Eigen::Vector2d> points;
   std::vector<std::array<int, 3>> triangles;
   std::vector<char> outlineVertex;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    const auto centroid = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
-    if (!isInside(polygon, Eigen::Vector2d(centroid.x(), centroid.y()))) continue;
+    if (outside.count(f)) continue;
     std::array<int, 3> t;
     for (int k = 0; k < 3; ++k) {
       auto [it, added] = index.emplace(f->vertex(k), int(points.size()));

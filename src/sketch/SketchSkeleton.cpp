@@ -139,8 +139,9 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
 
   const auto refinementStart = Clock::now();
   SketchGraph& g = result.graph;
-  mergeJunctions(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::merging));
+  // Pruning first: the junctions at the base of spurs and twigs are not real junctions to merge.
   pruneBranches(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::pruning));
+  mergeJunctions(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::merging));
   collapseEdges(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::collapsing));
   // The root: the widest joint of the first part (the torso of a character drawn torso first).
   for (int v = 0; v < g.skeleton.nodeCount(); ++v)

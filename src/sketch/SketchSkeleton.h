@@ -6,8 +6,9 @@
 // without peripheral edges, short edges collapsed (StraightSkeletonGraph) -> every branch of three or more
 // nodes simplified by BoundedDP with epsilon_s (BoundedDP) -> nodes placed in 3-D by the part's placement
 // matrix, each with the radius of its inscribed ball (distance to the resampled outline). Parts are then
-// connected in modelling order (§3.2, PartConnection) and refined (§3.3, SkeletonRefinement): junctions
-// merged (epsilon_m), short JT-branches pruned (epsilon_t), short internal bones collapsed (epsilon_c).
+// connected in modelling order (§3.2, PartConnection) and refined (§3.3, SkeletonRefinement): short
+// JT-branches pruned (epsilon_t; first, so that the base of a spur is not merged as a junction), junctions
+// merged (epsilon_m), short internal bones collapsed (epsilon_c).
 // Stage 4 inflates each part's outline (SketchInflation).
 //
 // Units. The paper's thresholds are in pixels of its drawing canvas. Here every length parameter is in

@@ -45,10 +45,12 @@ bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, Skelet
   }
   // Skeleton vertices (not polygon vertices) become nodes; inner bisectors become edges.
   std::map<int, int> nodeOfVertex;
+  std::vector<double> times;  // offset time of each node: its distance to the outline's supporting lines
   for (auto v = skeleton->vertices_begin(); v != skeleton->vertices_end(); ++v) {
     if (!v->is_skeleton()) continue;
     nodeOfVertex[v->id()] = graph.nodeCount();
     graph.nodes.emplace_back(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y()));
+    times.push_back(CGAL::to_double(v->time()));
   }
   std::vector<std::array<int, 2>> edges;
   for (auto h = skeleton->halfedges_begin(); h != skeleton->halfedges_end(); ++h) {
@@ -78,12 +80,15 @@ bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, Skelet
     const int n = nodeOfVertex.at(h->vertex()->id());
     edges.push_back({n, graph.nodeCount()});
     graph.nodes.push_back(tipPoint + (graph.nodes[n] - tipPoint) / 3);
+    times.push_back(times[n] / 3);
   }
   if (graph.nodes.empty()) {
     error = "the straight skeleton of the polygon has no inner vertex";
     return false;
   }
-  // Collapse short edges, shortest first (§3.1: threshold 0.5 x mean skeleton edge length).
+  // Collapse short edges, shortest first (§3.1: threshold 0.5 x mean skeleton edge length). A merged
+  // cluster sits at its most central node (the largest offset time): a part's end node absorbs the short
+  // spur into a corner without moving towards it.
   double meanLength = 0;
   for (const auto& e : edges) meanLength += (graph.nodes[e[0]] - graph.nodes[e[1]]).norm();
   meanLength = edges.empty() ? 0 : meanLength / edges.size();
@@ -91,26 +96,25 @@ bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, Skelet
   const int n = graph.nodeCount();
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
-  std::vector<Eigen::Vector2d> sum = graph.nodes;
-  std::vector<int> members(n, 1);
+  std::vector<int> central(n);  // per cluster root: its most central node
+  std::iota(central.begin(), central.end(), 0);
   std::vector<int> order(edges.size());
   std::iota(order.begin(), order.end(), 0);
   auto length = [&](int e) {
-    const int a = findRoot(parent, edges[e][0]), b = findRoot(parent, edges[e][1]);
-    return (sum[a] / members[a] - sum[b] / members[b]).norm();
+    const int a = central[findRoot(parent, edges[e][0])], b = central[findRoot(parent, edges[e][1])];
+    return (graph.nodes[a] - graph.nodes[b]).norm();
   };
   std::sort(order.begin(), order.end(), [&](int a, int b) { return length(a) < length(b); });
   for (int e : order) {
     const int a = findRoot(parent, edges[e][0]), b = findRoot(parent, edges[e][1]);
     if (a == b || length(e) >= threshold) continue;
     parent[b] = a;
-    sum[a] += sum[b];
-    members[a] += members[b];
+    if (times[central[b]] > times[central[a]]) central[a] = central[b];
   }
   std::vector<int> newIndex(n, -1);
   std::vector<Eigen::Vector2d> nodes;
   for (int i = 0; i < n; ++i)
-    if (findRoot(parent, i) == i) newIndex[i] = int(nodes.size()), nodes.push_back(sum[i] / members[i]);
+    if (findRoot(parent, i) == i) newIndex[i] = int(nodes.size()), nodes.push_back(graph.nodes[central[i]]);
   graph.nodes = std::move(nodes);
   std::vector<std::array<int, 2>> kept;
   for (const auto& e : edges) {

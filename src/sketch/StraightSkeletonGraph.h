@@ -5,8 +5,8 @@
 // Peripheral edges (bisectors that touch a polygon vertex, Fig. 6) are removed, keeping only skeleton
 // edges between skeleton vertices (except at sharp tips, whose bisector is the arm: it is kept, shortened
 // by a third); then every skeleton edge shorter than collapseRatio x the mean
-// skeleton edge length (the paper's 0.5) is collapsed, shortest first, its two nodes replaced by their
-// centroid. The result is a tree (the straight skeleton of a simple polygon is one).
+// skeleton edge length (the paper's 0.5) is collapsed, shortest first; a merged cluster sits at its most
+// central node (largest offset time). The result is a tree (the straight skeleton of a simple polygon is one).
 #pragma once
 
 #include "sketch/SketchStroke.h"
