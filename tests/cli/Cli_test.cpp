@@ -50,12 +50,52 @@ TEST(Cli, UsageErrorsExitTwo) {
   }
 }
 
-TEST(Cli, CommandsNotYetAvailableExitOne) {
-  for (const char* command : {"sketch"}) {
-    auto r = runCommand(medialCommand(std::string(command) + " x -o y"));
-    EXPECT_EQ(r.exitCode, 1) << command;
-    EXPECT_NE(r.err.find("not yet available"), std::string::npos) << r.err;
+TEST(Cli, SketchWritesSkeletonAndMeshThatSqmMeshes) {
+  const std::string dir = scratchDir("cli-sketch");
+  const std::string skeleton = dir + "/bird.vtp", mesh = dir + "/bird-mesh.vtp", tube = dir + "/bird-sqm.vtp";
+  auto r = runCommand(medialCommand("sketch " + dataPath("sketches/bird.txt") + " -o " + skeleton + " --mesh " + mesh +
+                                    " --simplify 8 --part 2:5,30,30,10 --timings --quiet"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("\"sketch\""), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(skeleton));
+  EXPECT_TRUE(std::filesystem::exists(mesh));
+  auto sqm = runCommand(medialCommand("sqm " + skeleton + " -o " + tube + " --quiet"));
+  EXPECT_EQ(sqm.exitCode, 0) << sqm.err;
+}
+
+TEST(Cli, SketchUsageErrorsExitTwo) {
+  for (const char* args : {"sketch", "sketch a.txt", "sketch a.txt -o s.png", "sketch a.txt -o s.vtp --mesh m.jpg",
+                           "sketch a.txt -o s.vtp --prune -1", "sketch a.txt -o s.vtp --part 2",
+                           "sketch a.txt -o s.vtp --part 0:1,2,3,4", "sketch a.txt -o s.vtp --part 1:1,2",
+                           "sketch a.txt -o s.vtp --thickness 0", "sketch a.txt b.txt -o s.vtp"}) {
+    auto r = runCommand(medialCommand(args));
+    EXPECT_EQ(r.exitCode, 2) << "medial " << args << "\n" << r.err;
+    EXPECT_FALSE(r.err.empty()) << "medial " << args;
   }
+}
+
+TEST(Cli, SketchBadStrokesExitOneWithoutOutput) {
+  const std::string dir = scratchDir("cli-sketch-bad");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"0 0\n10 0\n", "at least 3"},
+      {"0 0\n100 100\n100 0\n0 60\n", "crosses itself"},
+      {"0 0\n10 0\n20 0\n", "no area"},
+      {"0 0\n100 0\nnan 50\n0 100\n", "non-finite"},
+      {"0 0\n100 0 7\n", "expected 'x y'"},
+      {"0 0\n100 0\n100 50\n1 0 0 0\n0 1 0 0\n", "rows instead of 4"},
+  };
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const std::string input = dir + "/bad" + std::to_string(k) + ".txt", output = dir + "/bad" + std::to_string(k) + ".vtp";
+    std::ofstream(input) << cases[k].first;
+    auto r = runCommand(medialCommand("sketch " + input + " -o " + output + " --quiet"));
+    EXPECT_EQ(r.exitCode, 1) << cases[k].first << r.err;
+    EXPECT_NE(r.err.find(cases[k].second), std::string::npos) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(output));
+  }
+  auto missing = runCommand(medialCommand("sketch " + dir + "/none.txt -o " + dir + "/none.vtp --quiet"));
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("cannot open"), std::string::npos) << missing.err;
 }
 
 TEST(Cli, SkeletonOfTorusWritesSkeletonAndSegmentation) {

@@ -1,0 +1,95 @@
+// vtkMedialSketchReader -> vtkMedialSketchSkeleton -> vtkMedialSQM on the strokes of data/sketches: the
+// issue's pipeline test (the SQM mesh of every sketch is a closed manifold), the output arrays, errors.
+#include "TestPaths.h"
+
+#include "MedialErrorCollector.h"
+#include "mesh/MeshTopology.h"
+#include "vtkMedialSQM.h"
+#include "vtkMedialSketchReader.h"
+#include "vtkMedialSketchSkeleton.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkIdList.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+medial::MeshTopology topologyOf(vtkPolyData* mesh) {
+  std::vector<std::vector<int64_t>> faces;
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(ids);) {
+    faces.emplace_back();
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) faces.back().push_back(ids->GetId(k));
+  }
+  return medial::computeMeshTopology(mesh->GetNumberOfPoints(), faces);
+}
+
+class SketchSamples : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SketchSamples, SqmMeshOfTheSketchIsAClosedManifold) {
+  auto reader = vtkSmartPointer<vtkMedialSketchReader>::New();
+  reader->SetFileName(medial::test::dataPath(std::string("sketches/") + GetParam()).c_str());
+  auto sketch = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
+  auto errors = medial::ErrorCollector::Watch(sketch);
+  sketch->SetInputConnection(reader->GetOutputPort());
+  auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+  auto sqmErrors = medial::ErrorCollector::Watch(sqm);
+  sqm->SetInputConnection(sketch->GetOutputPort(0));
+  sqm->Update();
+  ASSERT_FALSE(errors->HasErrors()) << errors->Joined();
+  ASSERT_FALSE(sqmErrors->HasErrors()) << sqmErrors->Joined();
+
+  vtkPolyData* skeleton = sketch->GetOutput(0);
+  ASSERT_GT(skeleton->GetNumberOfPoints(), 1);
+  for (const char* name : {"Radius", "NodeType", "Part"}) EXPECT_TRUE(skeleton->GetPointData()->GetArray(name)) << name;
+  for (const char* name : {"Part", "Branch"}) EXPECT_TRUE(skeleton->GetCellData()->GetArray(name)) << name;
+  EXPECT_TRUE(skeleton->GetFieldData()->GetArray("Root"));
+
+  const auto tube = topologyOf(sqm->GetOutput());
+  EXPECT_EQ(tube.borderEdges, 0);
+  EXPECT_EQ(tube.nonManifoldEdges, 0);
+  EXPECT_EQ(tube.components, 1);  // every sketch here is one tree
+  EXPECT_EQ(tube.eulerCharacteristic, 2);
+
+  vtkPolyData* inflated = sketch->GetOutput(1);
+  const auto parts = topologyOf(inflated);
+  EXPECT_TRUE(parts.isClosedManifold());
+  EXPECT_TRUE(inflated->GetPointData()->GetArray("Part"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Sketches, SketchSamples,
+                         ::testing::Values("rectangle.txt", "star.txt", "hand.txt", "bird.txt", "unsteady.txt"));
+
+TEST(SketchSkeleton, ReaderKeepsPartsAndPlacements) {
+  auto reader = vtkSmartPointer<vtkMedialSketchReader>::New();
+  reader->SetFileName(medial::test::dataPath("sketches/bird.txt").c_str());
+  reader->Update();
+  vtkPolyData* strokes = reader->GetOutput();
+  EXPECT_EQ(strokes->GetNumberOfLines(), 3);
+  vtkDataArray* placement = strokes->GetCellData()->GetArray("Placement");
+  ASSERT_TRUE(placement);
+  EXPECT_EQ(placement->GetNumberOfComponents(), 16);
+  EXPECT_EQ(placement->GetComponent(0, 0), 1.0);  // the body: identity
+  EXPECT_EQ(placement->GetComponent(1, 0), 0.0);  // a wing: stroke x -> world z
+  EXPECT_EQ(placement->GetComponent(1, 9), 0.0);
+  EXPECT_EQ(placement->GetComponent(1, 8), 1.0);
+}
+
+TEST(SketchSkeleton, EmptyInputIsAnErrorWithEmptyOutputs) {
+  auto sketch = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
+  auto errors = medial::ErrorCollector::Watch(sketch);
+  sketch->SetInputData(vtkSmartPointer<vtkPolyData>::New());
+  sketch->Update();
+  EXPECT_TRUE(errors->HasErrors());
+  EXPECT_NE(errors->Joined().find("no stroke"), std::string::npos) << errors->Joined();
+  EXPECT_EQ(sketch->GetOutput(0)->GetNumberOfPoints(), 0);
+  EXPECT_EQ(sketch->GetOutput(1)->GetNumberOfPoints(), 0);
+}
+
+}  // namespace
