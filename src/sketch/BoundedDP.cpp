@@ -7,8 +7,6 @@
 namespace medial {
 namespace {
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Centripetal Catmull-Rom point between p1 and p2 (Barry-Goldman pyramid), t in [0, 1].
 Eigen::Vector2d catmullRom(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2,
                            const Eigen::Vector2d& p3, double t) {
@@ -29,10 +27,10 @@ double rayToBoundary(const Polygon2& polygon, const Eigen::Vector2d& p, const Ei
   for (size_t i = 0, n = polygon.size(); i < n; ++i) {
     const Eigen::Vector2d& a = polygon[i];
     const Eigen::Vector2d e = polygon[(i + 1) % n] - a;
-    const double denominator = cross(d, e);
+    const double denominator = cross2(d, e);
     if (std::abs(denominator) < 1e-300) continue;
-    const double s = cross(a - p, e) / denominator;  // along the ray
-    const double u = cross(a - p, d) / denominator;  // along the edge
+    const double s = cross2(a - p, e) / denominator;  // along the ray
+    const double u = cross2(a - p, d) / denominator;  // along the edge
     if (s > 0 && u >= 0 && u <= 1) best = std::min(best, s);
   }
   return std::isfinite(best) ? best : 0.0;
@@ -74,7 +72,7 @@ void selectPoints(const Slices& s, int first, int last, double epsilon, double a
   int best = first;
   double bestError = 0;
   for (int i = first + 1; i < last; ++i) {
-    const double axis = chordLength > 0 ? std::abs(cross(chord, s.points[i] - a)) / chordLength : (s.points[i] - a).norm();
+    const double axis = chordLength > 0 ? std::abs(cross2(chord, s.points[i] - a)) / chordLength : (s.points[i] - a).norm();
     const double t = span > 0 ? (s.arc[i] - s.arc[first]) / span : 0.0;
     const double sideLeft = (1 - t) * s.widthLeft[first] + t * s.widthLeft[last];
     const double sideRight = (1 - t) * s.widthRight[first] + t * s.widthRight[last];
@@ -103,7 +101,7 @@ bool insideRegion(const Slices& s, const std::vector<int>& kept, const Polygon2&
       const Eigen::Vector2d& p = s.points[m];
       const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
       const double distance = (a + t * ab - p).norm();
-      const bool edgeOnTheLeft = cross(ab, p - a) < 0;  // p lies right of the edge
+      const bool edgeOnTheLeft = cross2(ab, p - a) < 0;  // p lies right of the edge
       if (distance > (edgeOnTheLeft ? s.widthLeft[m] : s.widthRight[m])) return false;
     }
     for (size_t e = 0, n = polygon.size(); e < n; ++e)

@@ -8,11 +8,6 @@
 namespace medial {
 namespace {
 
-int findRoot(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
 // Contracts the union-find groups of `parent` (deleted nodes excluded): each group becomes one node at
 // `position[root]` with radius `radius[root]`. Returns the number of nodes removed.
 int contractGroups(SketchGraph& graph, std::vector<int>& parent, const std::vector<char>& deleted,

@@ -24,11 +24,6 @@ boost::shared_ptr<CGAL::Straight_skeleton_2<Kernel>> buildSkeleton(const Polygon
   }
 }
 
-int findRoot(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
 }  // namespace
 
 int cgalStraightSkeletonVertexCount(const Polygon2& polygon) {

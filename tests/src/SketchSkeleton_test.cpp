@@ -113,8 +113,9 @@ TEST(SketchSkeleton, StarHasOneJunctionAndFiveTerminals) {
   expectInside(r, parts[0].stroke);
   // The terminals reach into the points: beyond the inner radius 120.
   const auto d = degrees(r.graph.skeleton);
-  for (int v = 0; v < r.graph.skeleton.nodeCount(); ++v)
+  for (int v = 0; v < r.graph.skeleton.nodeCount(); ++v) {
     if (d[v] == 1) EXPECT_GT(r.graph.skeleton.nodes[v].norm(), 150);
+  }
 }
 
 TEST(SketchSkeleton, HandHasSixTerminalsAndStaysInside) {
@@ -252,7 +253,13 @@ TEST(BoundedDP, BentBranchStaysInsideItsRegion) {
 }
 
 // Bad input: a clear error naming the stroke, never a crash.
-medial::SketchResult runOne(const Polygon2& stroke) { return medial::sketchSkeleton({SketchPart{stroke}}); }
+SketchPart partOf(const Polygon2& stroke) {
+  SketchPart part;
+  part.stroke = stroke;
+  return part;
+}
+
+medial::SketchResult runOne(const Polygon2& stroke) { return medial::sketchSkeleton({partOf(stroke)}); }
 
 TEST(SketchSkeleton, FewerThanThreePointsIsAnError) {
   const auto r = runOne({{0, 0}, {10, 0}});
@@ -286,7 +293,7 @@ TEST(SketchSkeleton, RepeatedConsecutivePointsAreDropped) {
 }
 
 TEST(SketchSkeleton, DegeneratePlacementIsAnError) {
-  SketchPart part{{{0, 0}, {100, 0}, {100, 50}, {0, 50}}};
+  SketchPart part = partOf({{0, 0}, {100, 0}, {100, 50}, {0, 50}});
   part.placement.setZero();
   const auto r = medial::sketchSkeleton({part});
   EXPECT_NE(r.error.find("placement"), std::string::npos) << r.error;
