@@ -114,7 +114,9 @@ TEST(SketchSkeleton, StarHasOneJunctionAndFiveTerminals) {
   // The terminals reach into the points: beyond the inner radius 120.
   const auto d = degrees(r.graph.skeleton);
   for (int v = 0; v < r.graph.skeleton.nodeCount(); ++v) {
-    if (d[v] == 1) EXPECT_GT(r.graph.skeleton.nodes[v].norm(), 150);
+    if (d[v] == 1) {
+      EXPECT_GT(r.graph.skeleton.nodes[v].norm(), 150);
+    }
   }
 }
 
