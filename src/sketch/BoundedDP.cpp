@@ -168,10 +168,11 @@ BoundedDPResult boundedDP(const std::vector<Eigen::Vector2d>& branch, const Poly
     for (int i = 0; i < n; ++i)
       if (keep[i]) kept.push_back(i);
     const bool everything = int(kept.size()) == n;
-    if (insideRegion(s, kept, polygon) || everything) {
+    const bool inside = insideRegion(s, kept, polygon);
+    if (inside || everything) {
       for (int i : kept) result.points.push_back(s.points[i]);
       result.threshold = epsilon;
-      result.inside = insideRegion(s, kept, polygon);
+      result.inside = inside;
       return result;
     }
   }
