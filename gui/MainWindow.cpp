@@ -1,68 +1,236 @@
 #include "MainWindow.h"
 
+#include "CenterlinePanel.h"
+#include "IsoSurfacePanel.h"
+#include "ObjectList.h"
+#include "SketchPanel.h"
+#include "SkeletonPanel.h"
+#include "SqmPanel.h"
 #include "VtkView.h"
 
 #include "MedialErrorCollector.h"
+#include "vtkMedialGhostPass.h"
 #include "vtkMedialReader.h"
 #include "vtkMedialScene.h"
+#include "vtkMedialSketchReader.h"
 
 #include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDateTime>
 #include <QDockWidget>
+#include <QDragEnterEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QImage>
-#include <QListWidget>
+#include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
+#include <QPlainTextEdit>
 #include <QProgressBar>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSlider>
+#include <QSplitter>
 #include <QStatusBar>
+#include <QTabWidget>
+#include <QToolBar>
 
+#include <vtkAssembly.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellPicker.h>
 #include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkProp3D.h>
+#include <vtkImageData.h>
+#include <vtkImageProperty.h>
+#include <vtkImageSlice.h>
+#include <vtkImageSliceMapper.h>
+#include <vtkProp3DCollection.h>
 #include <vtkRenderer.h>
 #include <vtkVersion.h>
 
 namespace medial::gui {
 
+namespace {
+
+constexpr int kMaxRecent = 8;
+
+QSettings settings() { return QSettings("Medial", "medial-gui"); }
+
+}  // namespace
+
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), scene_(vtkSmartPointer<vtkMedialScene>::New()) {
   setWindowTitle("Medial");
+  setAcceptDrops(true);
   view_ = new VtkView(this);
+  view_->setObjectName("view3d");
   view_->addRenderer(scene_->GetRenderer());
   scene_->GetRenderer()->UseFXAAOn();  // the widget's framebuffer has no multisampling
-  setCentralWidget(view_);
   connect(view_, &VtkView::resetCameraRequested, this, &MainWindow::resetCamera);
+  connect(view_, &VtkView::clicked, this, &MainWindow::onViewClicked);
+  connect(view_, &VtkView::strokeDrawn, this, &MainWindow::onStrokeDrawn);
 
-  auto* dock = new QDockWidget("Objects", this);
-  dock->setObjectName("objects");
-  objects_ = new QListWidget(dock);
-  objects_->setToolTip("Loaded objects; untick to hide");
-  dock->setWidget(objects_);
-  addDockWidget(Qt::LeftDockWidgetArea, dock);
-  connect(objects_, &QListWidget::itemChanged, this, &MainWindow::onItemChanged);
+  slices_ = new SliceViews(this);
+  slices_->hide();
+  connect(slices_, &SliceViews::cursorChanged, this, &MainWindow::onCursorChanged);
+  connect(slices_, &SliceViews::windowLevelChanged, this, &MainWindow::onWindowLevelChanged);
+  splitter_ = new QSplitter(Qt::Vertical, this);
+  splitter_->addWidget(view_);
+  splitter_->addWidget(slices_);
+  splitter_->setStretchFactor(0, 3);
+  splitter_->setStretchFactor(1, 2);
+  setCentralWidget(splitter_);
+
+  objects_ = new ObjectList(scene_, this);
+  objects_->setErrorReporter([this](const QString& title, const QString& message) { reportError(title, message); });
+  connect(objects_, &ObjectList::sceneChanged, this, &MainWindow::render);
+  connect(objects_, &ObjectList::objectsChanged, this, &MainWindow::onObjectsChanged);
+  connect(objects_, &ObjectList::currentChanged, this, [this](SceneObject* object) {
+    if (object && object->kind == SceneObject::Kind::Volume) showVolume(object);
+  });
+  auto* objectDock = new QDockWidget("Objects", this);
+  objectDock->setObjectName("objects");
+  objectDock->setWidget(objects_);
+  addDockWidget(Qt::LeftDockWidgetArea, objectDock);
+
+  log_ = new QPlainTextEdit(this);
+  log_->setObjectName("log");
+  log_->setReadOnly(true);
+  log_->setMaximumBlockCount(2000);
+  auto* logDock = new QDockWidget("Log", this);
+  logDock->setObjectName("logDock");
+  logDock->setWidget(log_);
+  addDockWidget(Qt::BottomDockWidgetArea, logDock);
+  resizeDocks({logDock}, {110}, Qt::Vertical);
 
   progress_ = new QProgressBar(this);
   progress_->setRange(0, 100);
   progress_->setMaximumWidth(200);
   progress_->hide();
   statusBar()->addPermanentWidget(progress_);
-  statusBar()->showMessage("Open a mesh, skeleton or volume with File > Open");
+  statusBar()->showMessage("Open a mesh, skeleton, volume or sketch with File > Open, or drop files here");
 
+  buildPanels();
+  buildGhostToolBar();
   buildMenus();
-  resize(1100, 750);
+  resize(1400, 900);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  for (FilterPanel* panel : panels_) {  // stop workers before the objects they feed go away
+    panel->cancel();
+    panel->wait();
+  }
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  for (FilterPanel* panel : panels_) panel->cancel();
+  QMainWindow::closeEvent(event);
+}
+
+void MainWindow::buildPanels() {
+  skeleton_ = new SkeletonPanel(objects_, this);
+  sqm_ = new SqmPanel(objects_, this);
+  centerline_ = new CenterlinePanel(objects_, this);
+  sketch_ = new SketchPanel(objects_, this);
+  iso_ = new IsoSurfacePanel(objects_, this);
+  panels_ = {skeleton_, sqm_, centerline_, sketch_, iso_};
+  tabs_ = new QTabWidget(this);
+  tabs_->setObjectName("filters");
+  const QStringList tips = {"Skeleton by mesh contraction (Au et al. 2008, contraction paper §III)",
+                            "SQM quad-dominant tube mesh from a skeleton (CESCG 2014)",
+                            "TSK centerline of a tubular structure in a volume (WSCG 2008)",
+                            "Sketch skeletonization (straight skeleton + BoundedDP)",
+                            "Iso-surface of a volume"};
+  for (size_t i = 0; i < panels_.size(); ++i) {
+    FilterPanel* panel = panels_[i];
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(panel);
+    scroll->setWidgetResizable(true);
+    const int tab = tabs_->addTab(scroll, panel->title());
+    tabs_->setTabToolTip(tab, tips[static_cast<int>(i)]);
+    connect(panel, &FilterPanel::message, this, &MainWindow::log);
+    connect(panel, &FilterPanel::failed, this, &MainWindow::reportError);
+  }
+  connect(skeleton_, &SkeletonPanel::sceneChanged, this, &MainWindow::render);
+  connect(centerline_, &CenterlinePanel::flyTo, this, &MainWindow::onFlyTo);
+  connect(slices_, &SliceViews::pointClicked, this, [this](const SliceViews::Point& p) {
+    if (tabs_->currentWidget() && tabs_->currentWidget()->isAncestorOf(centerline_)) centerline_->setSeed(p);
+  });
+  connect(sketch_, &SketchPanel::drawingToggled, this, [this](bool on) {
+    view_->setDrawingMode(on);
+    if (on && !objects_->findByName("drawn sketch")) {
+      // Draw on the z = 0 plane seen from the front.
+      vtkCamera* camera = scene_->GetRenderer()->GetActiveCamera();
+      camera->SetFocalPoint(0, 0, 0);
+      camera->SetPosition(0, 0, 1);
+      camera->SetViewUp(0, 1, 0);
+      camera->ParallelProjectionOn();
+      if (objectCount() == 0) camera->SetParallelScale(100);
+      render();
+    }
+    log(on ? "Sketch: drawing on (left-drag draws a closed stroke)" : "Sketch: drawing off");
+  });
+  auto* dock = new QDockWidget("Filters", this);
+  dock->setObjectName("filtersDock");
+  dock->setWidget(tabs_);
+  dock->setMinimumWidth(330);
+  addDockWidget(Qt::RightDockWidgetArea, dock);
+}
+
+void MainWindow::buildGhostToolBar() {
+  QToolBar* bar = addToolBar("Ghost view");
+  bar->setObjectName("ghostBar");
+  bar->addWidget(new QLabel(" Ghost view ", bar));
+  ghostMode_ = new QComboBox(bar);
+  ghostMode_->setObjectName("ghostMode");
+  ghostMode_->addItems({"Off", "Ghost", "Cutaway"});
+  ghostMode_->setCurrentIndex(1);
+  ghostMode_->setToolTip("How objects of interest (Interest column; Shift+click in the 3-D view) show through "
+                         "what hides them (Hoffmann et al., WSCG 2008)");
+  bar->addWidget(ghostMode_);
+  bar->addWidget(new QLabel(" Opacity ", bar));
+  ghostOpacity_ = new QSlider(Qt::Horizontal, bar);
+  ghostOpacity_->setObjectName("ghostOpacity");
+  ghostOpacity_->setRange(0, 100);
+  ghostOpacity_->setValue(25);
+  ghostOpacity_->setMaximumWidth(160);
+  ghostOpacity_->setToolTip("Opacity of an occluder in front of an object of interest (default 0.25)");
+  bar->addWidget(ghostOpacity_);
+  connect(ghostMode_, &QComboBox::currentIndexChanged, this, &MainWindow::setGhostMode);
+  connect(ghostOpacity_, &QSlider::valueChanged, this, [this](int v) { setGhostOpacity(v / 100.0); });
+}
+
+void MainWindow::setGhostMode(int mode) {
+  scene_->GetGhostPass()->SetMode(mode);
+  if (ghostMode_->currentIndex() != mode) ghostMode_->setCurrentIndex(mode);
+  render();
+}
+
+void MainWindow::setGhostOpacity(double opacity) {
+  scene_->GetGhostPass()->SetGhostOpacity(opacity);
+  const int value = static_cast<int>(opacity * 100 + 0.5);
+  if (ghostOpacity_->value() != value) ghostOpacity_->setValue(value);
+  render();
+}
 
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu("&File");
   file->addAction("&Open...", QKeySequence::Open, this, &MainWindow::openDialog);
+  file->addAction("Open &DICOM Folder...", this, &MainWindow::openDicomDialog);
+  recentMenu_ = file->addMenu("Open &Recent");
+  updateRecentMenu();
   file->addAction("Save &Image...", QKeySequence("Ctrl+Shift+S"), this, &MainWindow::saveScreenshotDialog);
   file->addSeparator();
   file->addAction("&Quit", QKeySequence::Quit, qApp, &QApplication::closeAllWindows);
   QMenu* view = menuBar()->addMenu("&View");
   view->addAction("&Reset Camera", QKeySequence("R"), this, &MainWindow::resetCamera);
+  QAction* slices = view->addAction("&Slice Views");
+  slices->setCheckable(true);
+  connect(slices, &QAction::toggled, slices_, &QWidget::setVisible);
+  connect(objects_, &ObjectList::objectsChanged, slices, [this, slices] { slices->setChecked(slices_->isVisible()); });
   QMenu* help = menuBar()->addMenu("&Help");
   help->addAction("&About Medial", this, &MainWindow::about);
 }
@@ -73,18 +241,35 @@ void MainWindow::setErrorHandler(std::function<void(const QString&, const QStrin
 
 void MainWindow::reportError(const QString& title, const QString& message) {
   statusBar()->showMessage(message, 10000);
+  log("Error: " + message);
   if (errorHandler_)
     errorHandler_(title, message);
   else
     QMessageBox::critical(this, title, message);
 }
 
-bool MainWindow::openFile(const QString& path) {
-  auto reader = vtkSmartPointer<vtkMedialReader>::New();
-  auto errors = medial::ErrorCollector::Watch(reader);
-  reader->SetFileName(path.toLocal8Bit().constData());
+void MainWindow::log(const QString& text) {
+  log_->appendPlainText(QDateTime::currentDateTime().toString("hh:mm:ss  ") + text);
+}
 
-  // Progress of the read, shown in the status bar (reading runs on the UI thread here).
+QString MainWindow::logText() const { return log_->toPlainText(); }
+
+bool MainWindow::openFile(const QString& path) {
+  const QByteArray name = path.toLocal8Bit();
+  const bool sketch = path.endsWith(".txt", Qt::CaseInsensitive);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (sketch) {
+    auto sketchReader = vtkSmartPointer<vtkMedialSketchReader>::New();
+    sketchReader->SetFileName(name.constData());
+    reader = sketchReader;
+  } else {
+    auto medialReader = vtkSmartPointer<vtkMedialReader>::New();
+    medialReader->SetFileName(name.constData());
+    reader = medialReader;
+  }
+  auto errors = medial::ErrorCollector::Watch(reader);
+
+  // Progress of the read, shown in the status bar (reading runs on the UI thread).
   auto progress = vtkSmartPointer<vtkCallbackCommand>::New();
   progress->SetClientData(progress_);
   progress->SetCallback([](vtkObject*, unsigned long, void* bar, void* fraction) {
@@ -102,41 +287,149 @@ bool MainWindow::openFile(const QString& path) {
   progress_->hide();
 
   if (errors->HasErrors()) {
-    reportError("Cannot open file", QString::fromLocal8Bit(reader->GetErrorMessage()));
+    const QString message = sketch ? QString::fromStdString(errors->Joined())
+                                   : QString::fromLocal8Bit(vtkMedialReader::SafeDownCast(reader)->GetErrorMessage());
+    reportError("Cannot open file", message.contains(path) ? message : path + ": " + message);
     return false;
   }
-  auto sceneErrors = medial::ErrorCollector::Watch(scene_);
-  vtkProp3D* prop = scene_->AddData(reader->GetOutputDataObject(0));
-  if (!prop) {
-    reportError("Cannot show file", path + ": " + QString::fromStdString(sceneErrors->Joined()));
+  vtkDataObject* data = reader->GetOutputDataObject(0);
+  auto* polyData = vtkPolyData::SafeDownCast(data);
+  if (sketch && (!polyData || polyData->GetNumberOfLines() == 0)) {
+    reportError("Cannot open file", path + ": no stroke in the file");
     return false;
   }
-  props_.emplace_back(prop);
-  auto* item = new QListWidgetItem(QFileInfo(path).fileName(), objects_);
-  item->setToolTip(path);
-  item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
-  item->setCheckState(Qt::Checked);
-  if (props_.size() == 1) resetCamera();
-  view_->update();
+  const QString title = QFileInfo(path).fileName().isEmpty() ? path : QFileInfo(path).fileName();
+  SceneObject* object = objects_->add(title, data, path);
+  if (!object) return false;
+  addRecent(path);
+  log("Opened " + path);
+  if (objectCount() == 1) resetCamera();
   statusBar()->showMessage("Opened " + path, 5000);
   return true;
 }
 
-int MainWindow::objectCount() const { return static_cast<int>(props_.size()); }
+void MainWindow::onObjectsChanged() {
+  // The slice views follow the volume shown; when it is deleted, the next volume (or none).
+  const auto volumes = objects_->ofKind(SceneObject::Kind::Volume);
+  bool live = false;
+  for (SceneObject* v : volumes) live = live || v == shownVolume_;
+  if (!live) {
+    shownVolume_ = nullptr;
+    if (volumes.empty()) {
+      slices_->setVolume(nullptr, QString());
+      slices_->hide();
+    } else {
+      showVolume(volumes.back());
+    }
+  }
+}
+
+void MainWindow::showVolume(SceneObject* volume) {
+  if (volume == shownVolume_) return;
+  shownVolume_ = volume;
+  slices_->show();
+  slices_->setVolume(vtkImageData::SafeDownCast(volume->data), volume->name);
+}
+
+void MainWindow::onCursorChanged(const SliceViews::Point&) {
+  // The 3-D view's three slices of the shown volume follow the cursor.
+  auto* assembly = shownVolume_ ? vtkAssembly::SafeDownCast(shownVolume_->prop) : nullptr;
+  if (!assembly) return;
+  vtkProp3DCollection* parts = assembly->GetParts();
+  parts->InitTraversal();
+  while (vtkProp3D* part = parts->GetNextProp3D())
+    if (auto* slice = vtkImageSlice::SafeDownCast(part))
+      if (auto* mapper = vtkImageSliceMapper::SafeDownCast(slice->GetMapper()))
+        mapper->SetSliceNumber(slices_->view(mapper->GetOrientation())->sliceIndex());
+  render();
+}
+
+void MainWindow::onWindowLevelChanged(double window, double level) {
+  auto* assembly = shownVolume_ ? vtkAssembly::SafeDownCast(shownVolume_->prop) : nullptr;
+  if (!assembly) return;
+  vtkProp3DCollection* parts = assembly->GetParts();
+  parts->InitTraversal();
+  while (vtkProp3D* part = parts->GetNextProp3D())
+    if (auto* slice = vtkImageSlice::SafeDownCast(part)) {
+      slice->GetProperty()->SetColorWindow(window);
+      slice->GetProperty()->SetColorLevel(level);
+    }
+  render();
+}
+
+void MainWindow::onViewClicked(const QPointF& position) {
+  // A click selects the object under the pointer; on a skeleton with skinning weights it colours the mesh
+  // by the nearest bone's weight; Shift+click toggles the object of interest (ghost view).
+  auto picker = vtkSmartPointer<vtkCellPicker>::New();
+  picker->SetTolerance(0.002);
+  const qreal ratio = view_->devicePixelRatioF();
+  if (!picker->Pick(position.x() * ratio, (view_->height() - position.y()) * ratio, 0, scene_->GetRenderer())) return;
+  vtkProp3D* prop = picker->GetProp3D();
+  for (int row = 0; row < objects_->count(); ++row) {
+    SceneObject* object = objects_->at(row);
+    if (object->prop != prop) continue;
+    objects_->setCurrent(object);
+    if (QApplication::keyboardModifiers() & Qt::ShiftModifier) {
+      objects_->setInterest(object, !object->interest);
+      log(object->name + (object->interest ? ": object of interest" : ": context"));
+    } else if (object->kind == SceneObject::Kind::Skeleton && object->skinnedMesh) {
+      double point[3];
+      picker->GetPickPosition(point);
+      skeleton_->selectBone(object, SkeletonPanel::nearestBone(object, point));
+    }
+    return;
+  }
+}
+
+bool MainWindow::planePoint(const QPointF& position, double point[3]) const {
+  vtkRenderer* renderer = scene_->GetRenderer();
+  const qreal ratio = view_->devicePixelRatioF();
+  const double x = position.x() * ratio, y = (view_->height() - position.y()) * ratio;
+  double ends[2][4];
+  for (int i = 0; i < 2; ++i) {
+    renderer->SetDisplayPoint(x, y, i);
+    renderer->DisplayToWorld();
+    renderer->GetWorldPoint(ends[i]);
+    if (ends[i][3] == 0) return false;
+    for (int c = 0; c < 3; ++c) ends[i][c] /= ends[i][3];
+  }
+  const double dz = ends[1][2] - ends[0][2];
+  if (std::fabs(dz) < 1e-12) return false;  // looking along the plane
+  const double t = -ends[0][2] / dz;
+  for (int c = 0; c < 3; ++c) point[c] = ends[0][c] + t * (ends[1][c] - ends[0][c]);
+  return true;
+}
+
+void MainWindow::onStrokeDrawn(const QVector<QPointF>& positions) {
+  QVector<QPointF> stroke;
+  for (const QPointF& position : positions) {
+    double p[3];
+    if (planePoint(position, p)) stroke.append(QPointF(p[0], p[1]));
+  }
+  if (!sketch_->addStroke(stroke)) log("Sketch: the stroke needs at least 3 points on the drawing plane");
+}
+
+void MainWindow::onFlyTo(const std::array<double, 3>& eye, const std::array<double, 3>& /*focal*/,
+                         const std::array<double, 3>& /*up*/) {
+  vtkCamera* camera = scene_->GetRenderer()->GetActiveCamera();
+  camera->ParallelProjectionOff();
+  centerline_->flyThrough().apply(camera, centerline_->position());  // eye, focal, up and an endoscope angle
+  if (shownVolume_) slices_->setCursor(eye);
+  render();
+}
+
+void MainWindow::render() { view_->update(); }
+
+int MainWindow::objectCount() const { return objects_->count(); }
 
 vtkMedialScene* MainWindow::scene() const { return scene_; }
 
-void MainWindow::onItemChanged(QListWidgetItem* item) {
-  const int row = objects_->row(item);
-  if (row < 0 || row >= static_cast<int>(props_.size())) return;
-  props_[row]->SetVisibility(item->checkState() == Qt::Checked);
-  view_->update();
-}
-
 void MainWindow::resetCamera() {
+  scene_->GetRenderer()->GetActiveCamera()->ParallelProjectionOff();
   const double aspect = view_->height() > 0 ? static_cast<double>(view_->width()) / view_->height() : 4.0 / 3.0;
   scene_->ResetCamera(aspect);
-  view_->update();
+  for (int axis = 0; axis < 3; ++axis) slices_->view(axis)->resetCamera();
+  render();
 }
 
 bool MainWindow::saveScreenshot(const QString& path) {
@@ -149,10 +442,17 @@ bool MainWindow::saveScreenshot(const QString& path) {
 }
 
 void MainWindow::openDialog() {
-  const QString filter = QString("Meshes, skeletons and volumes (%1 %2);;Meshes and skeletons (%1);;Volumes (%2);;All files (*)")
-                             .arg(vtkMedialReader::GetMeshExtensions(), vtkMedialReader::GetVolumeExtensions());
+  const QString filter =
+      QString("Meshes, skeletons, volumes and sketches (%1 %2 *.txt);;Meshes and skeletons (%1);;Volumes (%2);;"
+              "Sketches (*.txt);;All files (*)")
+          .arg(vtkMedialReader::GetMeshExtensions(), vtkMedialReader::GetVolumeExtensions());
   const QStringList paths = QFileDialog::getOpenFileNames(this, "Open", QString(), filter);
   for (const QString& path : paths) openFile(path);
+}
+
+void MainWindow::openDicomDialog() {
+  const QString folder = QFileDialog::getExistingDirectory(this, "Open DICOM series folder");
+  if (!folder.isEmpty()) openFile(folder);
 }
 
 void MainWindow::saveScreenshotDialog() {
@@ -160,11 +460,41 @@ void MainWindow::saveScreenshotDialog() {
   if (!path.isEmpty()) saveScreenshot(path);
 }
 
+QStringList MainWindow::recentFiles() const { return settings().value("recentFiles").toStringList(); }
+
+void MainWindow::addRecent(const QString& path) {
+  QStringList recent = recentFiles();
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  recent.removeAll(absolute);
+  recent.prepend(absolute);
+  while (recent.size() > kMaxRecent) recent.removeLast();
+  settings().setValue("recentFiles", recent);
+  updateRecentMenu();
+}
+
+void MainWindow::updateRecentMenu() {
+  recentMenu_->clear();
+  for (const QString& path : recentFiles()) recentMenu_->addAction(path, this, [this, path] { openFile(path); });
+  recentMenu_->setEnabled(!recentMenu_->isEmpty());
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  for (const QUrl& url : event->mimeData()->urls())
+    if (url.isLocalFile()) openFile(url.toLocalFile());
+  event->acceptProposedAction();
+}
+
 void MainWindow::about() {
   QMessageBox::about(this, "About Medial",
                      QString("<b>Medial %1</b><br>Skeletons, centerlines, tube meshes and ghost views.<br><br>"
-                             "VTK %2 &middot; Qt %3")
-                         .arg(MEDIAL_VERSION, vtkVersion::GetVTKVersion(), qVersion()));
+                             "VTK %2 &middot; Qt %3 (built with %4) &middot; ITK %5 &middot; CGAL %6 &middot; "
+                             "Eigen %7")
+                         .arg(MEDIAL_VERSION, vtkVersion::GetVTKVersion(), qVersion(), QT_VERSION_STR,
+                              MEDIAL_ITK_VERSION, MEDIAL_CGAL_VERSION, MEDIAL_EIGEN_VERSION));
 }
 
 }  // namespace medial::gui

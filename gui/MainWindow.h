@@ -1,6 +1,8 @@
-// MainWindow: the shell of medial-gui: a 3-D view, an object list with visibility, File > Open, a
-// screenshot, and error dialogs for files that cannot be read.
+// MainWindow: medial-gui: the 3-D view (ghost view, picking, sketch drawing), slice views for volumes,
+// the object list, one panel per filter, a log, recent files, drag and drop and screenshots.
 #pragma once
+
+#include "SliceViews.h"
 
 #include <QMainWindow>
 
@@ -8,14 +10,25 @@
 
 #include <functional>
 
-class QListWidget;
-class QListWidgetItem;
+class QComboBox;
+class QMenu;
+class QPlainTextEdit;
 class QProgressBar;
+class QSlider;
+class QSplitter;
+class QTabWidget;
 class vtkMedialScene;
-class vtkProp3D;
 
 namespace medial::gui {
 
+class CenterlinePanel;
+class FilterPanel;
+class IsoSurfacePanel;
+class ObjectList;
+class SceneObject;
+class SketchPanel;
+class SkeletonPanel;
+class SqmPanel;
 class VtkView;
 
 class MainWindow : public QMainWindow {
@@ -25,8 +38,9 @@ class MainWindow : public QMainWindow {
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
 
-  // Opens a mesh, skeleton or volume and adds it to the view. On failure, reports the error (a dialog,
-  // or the handler set with setErrorHandler) and returns false; the session is left as it was.
+  // Opens a mesh, skeleton, volume (file or DICOM folder) or sketch (.txt) and adds it. On failure,
+  // reports the error (a dialog, or the handler set with setErrorHandler) and returns false; the session
+  // is left as it was.
   bool openFile(const QString& path);
   // Saves what the 3-D view shows as an image (PNG, JPEG, ...). Returns false on failure.
   bool saveScreenshot(const QString& path);
@@ -34,25 +48,69 @@ class MainWindow : public QMainWindow {
   int objectCount() const;
   VtkView* view() const { return view_; }
   vtkMedialScene* scene() const;
+  ObjectList* objects() const { return objects_; }
+  SliceViews* sliceViews() const { return slices_; }
+  SkeletonPanel* skeletonPanel() const { return skeleton_; }
+  SqmPanel* sqmPanel() const { return sqm_; }
+  CenterlinePanel* centerlinePanel() const { return centerline_; }
+  SketchPanel* sketchPanel() const { return sketch_; }
+  IsoSurfacePanel* isoSurfacePanel() const { return iso_; }
+  QTabWidget* filterTabs() const { return tabs_; }
+  QString logText() const;
+  // Ghost view: 0 off, 1 ghost, 2 cutaway.
+  void setGhostMode(int mode);
+  void setGhostOpacity(double opacity);
+  QStringList recentFiles() const;
 
   // Replaces the error dialog (the --screenshot mode prints to stderr instead).
   void setErrorHandler(std::function<void(const QString& title, const QString& message)> handler);
 
- private slots:
-  void openDialog();
-  void saveScreenshotDialog();
-  void onItemChanged(QListWidgetItem* item);
-  void about();
+ protected:
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+  void closeEvent(QCloseEvent* event) override;
 
  private:
   void buildMenus();
+  void buildGhostToolBar();
+  void buildPanels();
+  void openDialog();
+  void openDicomDialog();
+  void saveScreenshotDialog();
+  void about();
   void reportError(const QString& title, const QString& message);
+  void log(const QString& text);
+  void addRecent(const QString& path);
+  void updateRecentMenu();
+  void onObjectsChanged();
+  void onCursorChanged(const SliceViews::Point& cursor);
+  void onWindowLevelChanged(double window, double level);
+  void onViewClicked(const QPointF& position);
+  void onStrokeDrawn(const QVector<QPointF>& positions);
+  void onFlyTo(const std::array<double, 3>& eye, const std::array<double, 3>& focal, const std::array<double, 3>& up);
+  void showVolume(SceneObject* volume);
+  // The world point on the z = 0 plane under a position of the 3-D view.
+  bool planePoint(const QPointF& position, double point[3]) const;
+  void render();
 
   VtkView* view_ = nullptr;
-  QListWidget* objects_ = nullptr;
+  SliceViews* slices_ = nullptr;
+  QSplitter* splitter_ = nullptr;
+  ObjectList* objects_ = nullptr;
+  QTabWidget* tabs_ = nullptr;
+  QPlainTextEdit* log_ = nullptr;
   QProgressBar* progress_ = nullptr;
+  QComboBox* ghostMode_ = nullptr;
+  QSlider* ghostOpacity_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  SkeletonPanel* skeleton_ = nullptr;
+  SqmPanel* sqm_ = nullptr;
+  CenterlinePanel* centerline_ = nullptr;
+  SketchPanel* sketch_ = nullptr;
+  IsoSurfacePanel* iso_ = nullptr;
+  std::vector<FilterPanel*> panels_;
   vtkSmartPointer<vtkMedialScene> scene_;
-  std::vector<vtkSmartPointer<vtkProp3D>> props_;  // one per row of objects_
+  SceneObject* shownVolume_ = nullptr;
   std::function<void(const QString&, const QString&)> errorHandler_;
 };
 

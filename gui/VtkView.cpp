@@ -2,6 +2,7 @@
 
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QPainter>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 
@@ -77,6 +78,8 @@ VtkView::~VtkView() {
 
 vtkGenericOpenGLRenderWindow* VtkView::renderWindow() const { return window_; }
 
+vtkGenericRenderWindowInteractor* VtkView::interactor() const { return interactor_; }
+
 void VtkView::addRenderer(vtkRenderer* renderer) { window_->AddRenderer(renderer); }
 
 void VtkView::onVtkEvent(vtkObject*, unsigned long eventId, void* callData) {
@@ -137,6 +140,20 @@ void VtkView::paintGL() {
   state->vtkglClear(kColorBufferBit);
   state->Pop();
   state->vtkglBindFramebuffer(kDrawFramebuffer, defaultFramebufferObject());
+
+  if (stroke_.size() > 1) {  // the stroke being drawn, over the picture
+    QPainter painter(this);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(QPen(QColor(20, 20, 20), 2.0));
+    painter.drawPolyline(stroke_.constData(), static_cast<int>(stroke_.size()));
+  }
+}
+
+void VtkView::setDrawingMode(bool on) {
+  drawing_ = on;
+  stroke_.clear();
+  setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+  update();
 }
 
 void VtkView::setEventPosition(const QPointF& position, Qt::KeyboardModifiers modifiers, int repeat) {
@@ -148,6 +165,11 @@ void VtkView::setEventPosition(const QPointF& position, Qt::KeyboardModifiers mo
 }
 
 void VtkView::mousePressEvent(QMouseEvent* event) {
+  if (event->button() == Qt::LeftButton) pressPosition_ = event->position();
+  if (drawing_ && event->button() == Qt::LeftButton) {
+    stroke_ = {event->position()};
+    return;
+  }
   setEventPosition(event->position(), event->modifiers());
   switch (event->button()) {
     case Qt::LeftButton: interactor_->InvokeEvent(vtkCommand::LeftButtonPressEvent); break;
@@ -163,6 +185,15 @@ void VtkView::mouseDoubleClickEvent(QMouseEvent* event) {
 }
 
 void VtkView::mouseReleaseEvent(QMouseEvent* event) {
+  if (drawing_ && event->button() == Qt::LeftButton) {
+    const QVector<QPointF> stroke = stroke_;
+    stroke_.clear();
+    update();
+    if (stroke.size() > 2) emit strokeDrawn(stroke);
+    return;
+  }
+  if (event->button() == Qt::LeftButton && (event->position() - pressPosition_).manhattanLength() < 4)
+    emit clicked(event->position());
   setEventPosition(event->position(), event->modifiers());
   switch (event->button()) {
     case Qt::LeftButton: interactor_->InvokeEvent(vtkCommand::LeftButtonReleaseEvent); break;
@@ -173,6 +204,11 @@ void VtkView::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void VtkView::mouseMoveEvent(QMouseEvent* event) {
+  if (drawing_ && !stroke_.isEmpty() && (event->buttons() & Qt::LeftButton)) {
+    stroke_.append(event->position());
+    update();
+    return;
+  }
   setEventPosition(event->position(), event->modifiers());
   interactor_->InvokeEvent(vtkCommand::MouseMoveEvent);
 }

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <QOpenGLWidget>
+#include <QPointF>
+#include <QVector>
 
 #include <vtkNew.h>
 
@@ -22,15 +24,24 @@ class VtkView : public QOpenGLWidget {
   ~VtkView() override;
 
   vtkGenericOpenGLRenderWindow* renderWindow() const;
+  vtkGenericRenderWindowInteractor* interactor() const;
   void addRenderer(vtkRenderer* renderer);
 
   // Sets the default surface format VTK needs (OpenGL 3.2 core, depth 24, stencil 8, alpha 8). Call
   // before constructing the QApplication.
   static void setDefaultSurfaceFormat();
 
+  // Drawing mode: a left drag draws a stroke (shown over the view) instead of rotating the camera.
+  void setDrawingMode(bool on);
+  bool drawingMode() const { return drawing_; }
+
  signals:
   // Key R: the owner resets the camera its own way.
   void resetCameraRequested();
+  // A left click without a drag, at a widget position (picking).
+  void clicked(const QPointF& position);
+  // A stroke drawn in drawing mode, in widget positions.
+  void strokeDrawn(const QVector<QPointF>& positions);
 
  protected:
   void initializeGL() override;
@@ -55,6 +66,9 @@ class VtkView : public QOpenGLWidget {
   vtkNew<vtkGenericOpenGLRenderWindow> window_;
   vtkNew<vtkGenericRenderWindowInteractor> interactor_;
   bool initialized_ = false;
+  bool drawing_ = false;
+  QVector<QPointF> stroke_;     // the stroke being drawn
+  QPointF pressPosition_;       // where the left button went down (click detection)
   int wheelRemainder_ = 0;  // angle delta not yet turned into wheel steps
 };
 

@@ -1,6 +1,7 @@
 // medial-gui: Medial's Qt6 application.
 //   medial-gui [FILE...]                         open the files in the window
-//   medial-gui --screenshot IMAGE.png [FILE...]  open, render, save the 3-D view, quit (for tests);
+//   medial-gui --screenshot IMAGE.png [FILE...]  open, render, save the 3-D view (--window: the whole
+//                                                window), quit (for tests);
 //                                                errors go to stderr and the exit code is 1
 #include "MainWindow.h"
 #include "VtkView.h"
@@ -23,7 +24,9 @@ int main(int argc, char** argv) {
   parser.addVersionOption();
   QCommandLineOption screenshot("screenshot", "Open FILEs, save the 3-D view to IMAGE and quit.", "IMAGE");
   QCommandLineOption size("size", "Window size for --screenshot (default 1024x768).", "WxH", "1024x768");
+  QCommandLineOption whole("window", "With --screenshot: the whole window, not only the 3-D view.");
   parser.addOption(screenshot);
+  parser.addOption(whole);
   parser.addOption(size);
   parser.addPositionalArgument("files", "Meshes, skeletons or volumes to open.", "[FILE...]");
   parser.process(app);
@@ -46,7 +49,8 @@ int main(int argc, char** argv) {
   if (failed) return 1;
   QTimer::singleShot(0, &window, [&] {
     window.resetCamera();
-    failed = !window.saveScreenshot(parser.value(screenshot));
+    failed = parser.isSet(whole) ? !window.grab().save(parser.value(screenshot))
+                                 : !window.saveScreenshot(parser.value(screenshot));
     app.quit();
   });
   app.exec();

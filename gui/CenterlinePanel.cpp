@@ -1,0 +1,209 @@
+#include "CenterlinePanel.h"
+
+#include "ObjectList.h"
+#include "vtkMedialTskCenterline.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <QVBoxLayout>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QValueAxis>
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+
+#include <cmath>
+
+namespace medial::gui {
+
+namespace {
+
+std::vector<Parameter> centerlineParameters() {
+  using P = Parameter;
+  return {
+      P::choice("Selection", "Structure", {"label", "threshold", "non-zero"},
+                "Which voxels form the tube: one label, an intensity window (e.g. colon air), or all non-zero"),
+      P::integer("Label", "Label", 1, -1000000, 1000000, "Voxel value of the structure (label images)"),
+      P::real("ThresholdLow", "Threshold low", -1024, -1e6, 1e6, 1, "Lower end of the window (HU for CT)"),
+      P::real("ThresholdHigh", "Threshold high", -600, -1e6, 1e6, 1, "Upper end of the window (colon air: -600 HU)"),
+      P::toggle("DropBorderParts", "Drop border parts", true,
+                "Remove parts touching the volume border (the air outside the body), threshold mode"),
+      P::toggle("FillHoles", "Fill holes", false, "Fill cavities of the structure before the distance field"),
+      P::real("AntecedentWidth", "Antecedent width", 0.3, 0.01, 10, 3,
+              "Width of the TSK antecedent Gaussians relative to their cluster (§3, default 0.3)"),
+      P::real("SampleSpacing", "Output spacing (mm)", 0, 0, 100, 2, "Distance between output points; 0: smallest voxel"),
+  };
+}
+
+}  // namespace
+
+CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
+    : FilterPanel("Centerline", SceneObject::Kind::Volume, centerlineParameters(), objects, parent) {
+  seedLabel_ = new QLabel(this);
+  seedLabel_->setObjectName("seed");
+  auto* clear = new QPushButton("Clear seed", this);
+  connect(clear, &QPushButton::clicked, this, &CenterlinePanel::clearSeed);
+  auto* seedRow = new QHBoxLayout;
+  seedRow->addWidget(seedLabel_, 1);
+  seedRow->addWidget(clear);
+  extraLayout()->addLayout(seedRow);
+  clearSeed();
+
+  diameter_ = new QLineSeries;
+  diameter_->setName("diameter (mm)");
+  marker_ = new QLineSeries;
+  marker_->setName("camera");
+  auto* chart = new QChart;
+  chart->addSeries(diameter_);
+  chart->addSeries(marker_);
+  chart->createDefaultAxes();
+  chart->legend()->hide();
+  chart->setTitle("Diameter along the centerline");
+  chart->setMargins(QMargins(2, 2, 2, 2));
+  chart_ = new QChartView(chart, this);
+  chart_->setObjectName("profile");
+  chart_->setMinimumHeight(180);
+  chart_->setRenderHint(QPainter::Antialiasing);
+  extraLayout()->addWidget(chart_);
+
+  positionSlider_ = new QSlider(Qt::Horizontal, this);
+  positionSlider_->setObjectName("flyPosition");
+  positionSlider_->setRange(0, 1000);
+  positionSlider_->setToolTip("Camera position along the centerline");
+  playButton_ = new QPushButton("Play", this);
+  playButton_->setObjectName("play");
+  playButton_->setCheckable(true);
+  speed_ = new QDoubleSpinBox(this);
+  speed_->setObjectName("flySpeed");
+  speed_->setRange(0.5, 500);
+  speed_->setValue(20);
+  speed_->setSuffix(" mm/s");
+  auto* flyRow = new QHBoxLayout;
+  flyRow->addWidget(playButton_);
+  flyRow->addWidget(speed_);
+  auto* flyForm = new QFormLayout;
+  flyForm->addRow("Fly-through", flyRow);
+  flyForm->addRow("Position", positionSlider_);
+  extraLayout()->addLayout(flyForm);
+  for (QWidget* w : {static_cast<QWidget*>(positionSlider_), static_cast<QWidget*>(playButton_)}) w->setEnabled(false);
+
+  connect(playButton_, &QPushButton::toggled, this, &CenterlinePanel::play);
+  connect(positionSlider_, &QSlider::valueChanged, this, [this](int value) {
+    if (!fly_.empty()) setPosition(fly_.length() * value / 1000.0);
+  });
+  timer_.setInterval(40);
+  connect(&timer_, &QTimer::timeout, this, &CenterlinePanel::step);
+}
+
+void CenterlinePanel::setSeed(const std::array<double, 3>& seed) {
+  seed_ = seed;
+  seedLabel_->setText(QString("Seed P0: %1, %2, %3 mm").arg(seed[0], 0, 'f', 1).arg(seed[1], 0, 'f', 1).arg(seed[2], 0, 'f', 1));
+}
+
+void CenterlinePanel::clearSeed() {
+  seed_.reset();
+  seedLabel_->setText("Seed P0: lowest end (click a slice view to set)");
+}
+
+vtkSmartPointer<vtkAlgorithm> CenterlinePanel::makeFilter(SceneObject* input, QString&) {
+  auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  filter->SetInputData(copyOf(input));
+  const QString selection = form()->choice("Selection");
+  if (selection == "label")
+    filter->SetLabel(static_cast<int>(form()->value("Label")));
+  else if (selection == "threshold")
+    filter->SetThreshold(form()->value("ThresholdLow"), form()->value("ThresholdHigh"));
+  else
+    filter->SelectNonZero();
+  filter->SetDropBorderParts(selection == "threshold" && form()->isOn("DropBorderParts"));
+  filter->SetFillHoles(form()->isOn("FillHoles"));
+  filter->SetAntecedentWidth(form()->value("AntecedentWidth"));
+  filter->SetSampleSpacing(form()->value("SampleSpacing"));
+  if (seed_) filter->SetSeed((*seed_)[0], (*seed_)[1], (*seed_)[2]);
+  return filter;
+}
+
+void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
+  auto* tsk = static_cast<vtkMedialTskCenterline*>(filter);
+  auto line = vtkSmartPointer<vtkPolyData>::New();
+  line->ShallowCopy(tsk->GetOutput());
+  const QString name = input->name + " centerline";
+  if (SceneObject* previous = objects()->findByName(name)) objects()->remove(previous);
+  SceneObject* result = objects()->add(name, line);
+  if (!result) return;
+  objects()->setInterest(result, true);
+  fly_.setPath(line);
+  buildProfile(line);
+  for (QWidget* w : {static_cast<QWidget*>(positionSlider_), static_cast<QWidget*>(playButton_)}) w->setEnabled(!fly_.empty());
+  emit message(QString("Centerline: %1 points, %2 mm, %3 structure voxels")
+                   .arg(line->GetNumberOfPoints())
+                   .arg(fly_.length(), 0, 'f', 1)
+                   .arg(tsk->GetStructureVoxels()));
+}
+
+void CenterlinePanel::buildProfile(vtkPolyData* centerline) {
+  diameter_->clear();
+  vtkDataArray* radius = centerline->GetPointData()->GetArray("Radius");
+  vtkDataArray* arc = centerline->GetPointData()->GetArray("ArcLength");
+  double top = 1;
+  if (radius && arc) {
+    QList<QPointF> points;
+    for (vtkIdType i = 0; i < centerline->GetNumberOfPoints(); ++i) {
+      points.append(QPointF(arc->GetComponent(i, 0), 2 * radius->GetComponent(i, 0)));
+      top = std::max(top, 2 * radius->GetComponent(i, 0));
+    }
+    diameter_->replace(points);
+  }
+  const auto horizontal = chart_->chart()->axes(Qt::Horizontal), vertical = chart_->chart()->axes(Qt::Vertical);
+  if (!horizontal.isEmpty()) {
+    horizontal.first()->setRange(0, std::max(fly_.length(), 1.0));
+    horizontal.first()->setTitleText("arc length (mm)");
+  }
+  if (!vertical.isEmpty()) {
+    vertical.first()->setRange(0, 1.1 * top);
+    vertical.first()->setTitleText("diameter (mm)");
+  }
+  setPosition(0);
+}
+
+int CenterlinePanel::profilePoints() const { return static_cast<int>(diameter_->count()); }
+
+void CenterlinePanel::setPosition(double arcLength) {
+  if (fly_.empty()) return;
+  position_ = std::clamp(arcLength, 0.0, fly_.length());
+  {
+    const QSignalBlocker block(positionSlider_);
+    positionSlider_->setValue(static_cast<int>(std::lround(1000.0 * position_ / fly_.length())));
+  }
+  const auto vertical = chart_->chart()->axes(Qt::Vertical);
+  const double top = vertical.isEmpty() ? 1.0 : static_cast<QValueAxis*>(vertical.first())->max();
+  marker_->replace(QList<QPointF>{{position_, 0}, {position_, top}});
+  emit flyTo(fly_.eye(position_), fly_.focal(position_), fly_.up(position_));
+}
+
+void CenterlinePanel::play(bool on) {
+  if (on && !fly_.empty()) {
+    if (position_ >= fly_.length()) setPosition(0);
+    timer_.start();
+  } else {
+    timer_.stop();
+  }
+  const QSignalBlocker block(playButton_);
+  playButton_->setChecked(timer_.isActive());
+  playButton_->setText(timer_.isActive() ? "Pause" : "Play");
+}
+
+void CenterlinePanel::step() {
+  setPosition(position_ + speed_->value() * timer_.interval() / 1000.0);
+  if (position_ >= fly_.length()) play(false);
+}
+
+}  // namespace medial::gui

@@ -1,0 +1,133 @@
+#include "FilterPanel.h"
+
+#include "ObjectList.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include <vtkDataObject.h>
+
+namespace medial::gui {
+
+FilterPanel::FilterPanel(const QString& title, SceneObject::Kind inputKind, std::vector<Parameter> parameters,
+                         ObjectList* objects, QWidget* parent)
+    : QWidget(parent), title_(title), inputKind_(inputKind), objects_(objects) {
+  setObjectName(title);
+  inputs_ = new QComboBox(this);
+  inputs_->setObjectName("input");
+  inputs_->setToolTip("The " + kindName(inputKind) + " the filter runs on");
+  form_ = new ParameterForm(std::move(parameters), this);
+  run_ = new QPushButton("Run", this);
+  run_->setObjectName("run");
+  cancel_ = new QPushButton("Cancel", this);
+  cancel_->setObjectName("cancel");
+  cancel_->setEnabled(false);
+  progress_ = new QProgressBar(this);
+  progress_->setRange(0, 100);
+  progress_->setValue(0);
+
+  auto* inputRow = new QFormLayout;
+  inputRow->addRow("Input " + kindName(inputKind), inputs_);
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(run_);
+  buttons->addWidget(cancel_);
+  extra_ = new QVBoxLayout;
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(inputRow);
+  layout->addWidget(form_);
+  layout->addLayout(buttons);
+  layout->addWidget(progress_);
+  layout->addLayout(extra_);
+  layout->addStretch(1);
+
+  connect(run_, &QPushButton::clicked, this, [this] { run(); });
+  connect(cancel_, &QPushButton::clicked, this, &FilterPanel::cancel);
+  connect(&runner_, &FilterRunner::progressed, progress_, &QProgressBar::setValue);
+  connect(&runner_, &FilterRunner::finished, this, &FilterPanel::onFinished);
+  connect(objects_, &ObjectList::objectsChanged, this, &FilterPanel::refreshInputs);
+  connect(objects_, &ObjectList::currentChanged, this, [this](SceneObject* object) {
+    if (object && object->kind == inputKind_ && !isRunning()) setInput(object);
+  });
+  refreshInputs();
+}
+
+void FilterPanel::refreshInputs() {
+  SceneObject* selected = input();
+  const QSignalBlocker block(inputs_);
+  inputs_->clear();
+  for (SceneObject* object : objects_->ofKind(inputKind_))
+    inputs_->addItem(object->name, QVariant::fromValue(static_cast<void*>(object)));
+  if (selected) setInput(selected);
+  run_->setEnabled(inputs_->count() > 0 && !isRunning());
+}
+
+SceneObject* FilterPanel::input() const {
+  if (inputs_->currentIndex() < 0) return nullptr;
+  auto* object = static_cast<SceneObject*>(inputs_->currentData().value<void*>());
+  // The combo may name an object deleted since: trust only live ones.
+  for (SceneObject* live : objects_->ofKind(inputKind_))
+    if (live == object) return object;
+  return nullptr;
+}
+
+void FilterPanel::setInput(SceneObject* object) {
+  const int index = inputs_->findData(QVariant::fromValue(static_cast<void*>(object)));
+  if (index >= 0) inputs_->setCurrentIndex(index);
+}
+
+vtkSmartPointer<vtkDataObject> FilterPanel::copyOf(SceneObject* object) {
+  vtkSmartPointer<vtkDataObject> copy = vtkSmartPointer<vtkDataObject>::Take(object->data->NewInstance());
+  copy->ShallowCopy(object->data);
+  return copy;
+}
+
+bool FilterPanel::run() {
+  if (isRunning()) return false;
+  SceneObject* object = input();
+  if (!object) {
+    emit failed(title_, "Open or compute a " + kindName(inputKind_) + " first.");
+    return false;
+  }
+  QString error;
+  vtkSmartPointer<vtkAlgorithm> filter = makeFilter(object, error);
+  if (!filter) {
+    emit failed(title_, error);
+    return false;
+  }
+  runningInput_ = object;
+  progress_->setValue(0);
+  run_->setEnabled(false);
+  cancel_->setEnabled(true);
+  emit message(title_ + ": running on " + object->name);
+  runner_.start(filter, title_);
+  return true;
+}
+
+void FilterPanel::onFinished(vtkAlgorithm* filter, bool ok, const QString& text, double seconds) {
+  run_->setEnabled(inputs_->count() > 0);
+  cancel_->setEnabled(false);
+  progress_->setValue(ok ? 100 : 0);
+  SceneObject* object = runningInput_;
+  runningInput_ = nullptr;
+  bool live = false;
+  for (SceneObject* candidate : objects_->ofKind(inputKind_)) live = live || candidate == object;
+  lastOk_ = ok && live;
+  if (ok && live) {
+    collect(filter, object, seconds);
+    emit message(QString("%1: done in %2 s").arg(title_).arg(seconds, 0, 'f', 2));
+  } else if (text == "cancelled") {
+    emit message(title_ + ": cancelled");
+  } else {
+    const QString why = ok ? QString("the input was deleted during the run") : text;
+    emit message(title_ + ": failed: " + why);
+    emit failed(title_ + " failed", why);
+  }
+  emit completed(lastOk_);
+}
+
+}  // namespace medial::gui

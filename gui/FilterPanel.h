@@ -1,0 +1,77 @@
+// FilterPanel: the common part of every filter's panel: the input (an object of the right kind), the
+// parameter form, Run and Cancel, and a progress bar. The filter runs on a worker thread (FilterRunner);
+// a subclass says how to build the filter from the form and what to do with its outputs.
+#pragma once
+
+#include "FilterRunner.h"
+#include "ParameterForm.h"
+#include "SceneObject.h"
+
+#include <QWidget>
+
+#include <vtkAlgorithm.h>
+#include <vtkSmartPointer.h>
+
+class QComboBox;
+class QProgressBar;
+class QPushButton;
+class QVBoxLayout;
+
+namespace medial::gui {
+
+class ObjectList;
+
+class FilterPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  FilterPanel(const QString& title, SceneObject::Kind inputKind, std::vector<Parameter> parameters,
+              ObjectList* objects, QWidget* parent = nullptr);
+
+  QString title() const { return title_; }
+  ParameterForm* form() const { return form_; }
+  SceneObject* input() const;
+  void setInput(SceneObject* object);
+  // Starts the filter on the selected input; false (with an error) when there is none or one is running.
+  bool run();
+  void cancel() { runner_.cancel(); }
+  bool isRunning() const { return runner_.isRunning(); }
+  void wait() { runner_.wait(); }
+  // Whether the last run ended well (false before any run).
+  bool lastRunSucceeded() const { return lastOk_; }
+
+ signals:
+  void message(const QString& text);  // a line for the log
+  void failed(const QString& title, const QString& message);
+  void completed(bool ok);
+
+ protected:
+  // The filter for `input` with the form's values, its input data set (a shallow copy); null + error to stop.
+  virtual vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) = 0;
+  // Puts the outputs of a successful run into the object list.
+  virtual void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) = 0;
+  // Extra controls go below the Run/Cancel row.
+  QVBoxLayout* extraLayout() const { return extra_; }
+  ObjectList* objects() const { return objects_; }
+  // A copy of the object's data the worker thread may read while the UI keeps rendering the original.
+  static vtkSmartPointer<vtkDataObject> copyOf(SceneObject* object);
+
+ private:
+  void refreshInputs();
+  void onFinished(vtkAlgorithm* filter, bool ok, const QString& message, double seconds);
+
+  QString title_;
+  SceneObject::Kind inputKind_;
+  ObjectList* objects_;
+  ParameterForm* form_ = nullptr;
+  QComboBox* inputs_ = nullptr;
+  QPushButton* run_ = nullptr;
+  QPushButton* cancel_ = nullptr;
+  QProgressBar* progress_ = nullptr;
+  QVBoxLayout* extra_ = nullptr;
+  FilterRunner runner_;
+  SceneObject* runningInput_ = nullptr;
+  bool lastOk_ = false;
+};
+
+}  // namespace medial::gui

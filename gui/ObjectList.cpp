@@ -1,0 +1,310 @@
+#include "ObjectList.h"
+
+#include "MedialErrorCollector.h"
+#include "vtkMedialPolyDataWriter.h"
+#include "vtkMedialRigWriter.h"
+#include "vtkMedialScene.h"
+
+#include <QColorDialog>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenu>
+#include <QSlider>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <vtkActor.h>
+#include <vtkCellData.h>
+#include <vtkImageData.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkXMLImageDataWriter.h>
+
+namespace medial::gui {
+
+namespace {
+
+constexpr int kNameColumn = 0, kInterestColumn = 1;
+
+SceneObject::Kind kindOf(vtkDataObject* data) {
+  if (vtkImageData::SafeDownCast(data)) return SceneObject::Kind::Volume;
+  auto* polyData = vtkPolyData::SafeDownCast(data);
+  if (polyData && polyData->GetCellData()->GetArray("Placement")) return SceneObject::Kind::Sketch;
+  if (polyData && vtkMedialScene::IsSkeleton(polyData)) return SceneObject::Kind::Skeleton;
+  return SceneObject::Kind::Mesh;
+}
+
+}  // namespace
+
+QString kindName(SceneObject::Kind kind) {
+  switch (kind) {
+    case SceneObject::Kind::Mesh: return "mesh";
+    case SceneObject::Kind::Skeleton: return "skeleton";
+    case SceneObject::Kind::Volume: return "volume";
+    case SceneObject::Kind::Sketch: return "sketch";
+  }
+  return {};
+}
+
+ObjectList::ObjectList(vtkMedialScene* scene, QWidget* parent) : QWidget(parent), scene_(scene) {
+  tree_ = new QTreeWidget(this);
+  tree_->setObjectName("objectTree");
+  tree_->setColumnCount(2);
+  tree_->setHeaderLabels({"Object", "Interest"});
+  tree_->header()->setSectionResizeMode(kNameColumn, QHeaderView::Stretch);
+  tree_->header()->setSectionResizeMode(kInterestColumn, QHeaderView::ResizeToContents);
+  tree_->header()->setStretchLastSection(false);
+  tree_->setRootIsDecorated(false);
+  tree_->setContextMenuPolicy(Qt::CustomContextMenu);
+  tree_->setToolTip("Tick: visible. Interest: stays visible through other objects in the ghost view.\n"
+                    "Right-click for colour, save as, rig export and delete.");
+  connect(tree_, &QTreeWidget::itemChanged, this, &ObjectList::onItemChanged);
+  connect(tree_, &QTreeWidget::customContextMenuRequested, this, &ObjectList::showMenu);
+  connect(tree_, &QTreeWidget::currentItemChanged, this, [this] {
+    SceneObject* object = current();
+    opacity_->setEnabled(object && object->kind != SceneObject::Kind::Volume);
+    if (auto* actor = object ? vtkActor::SafeDownCast(object->prop) : nullptr) {
+      const QSignalBlocker block(opacity_);
+      opacity_->setValue(static_cast<int>(actor->GetProperty()->GetOpacity() * 100 + 0.5));
+    }
+    emit currentChanged(object);
+  });
+
+  opacity_ = new QSlider(Qt::Horizontal, this);
+  opacity_->setObjectName("objectOpacity");
+  opacity_->setRange(0, 100);
+  opacity_->setValue(100);
+  opacity_->setEnabled(false);
+  opacity_->setToolTip("Opacity of the selected object");
+  connect(opacity_, &QSlider::valueChanged, this, [this](int value) {
+    if (SceneObject* object = current()) setOpacity(object, value / 100.0);
+  });
+
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(2, 2, 2, 2);
+  layout->addWidget(tree_);
+  layout->addWidget(new QLabel("Opacity", this));
+  layout->addWidget(opacity_);
+}
+
+ObjectList::~ObjectList() = default;
+
+void ObjectList::setErrorReporter(std::function<void(const QString&, const QString&)> report) {
+  report_ = std::move(report);
+}
+
+void ObjectList::fail(const QString& title, const QString& message) {
+  if (report_) report_(title, message);
+}
+
+SceneObject* ObjectList::add(const QString& name, vtkDataObject* data, const QString& path) {
+  auto errors = medial::ErrorCollector::Watch(scene_);
+  vtkProp3D* prop = data ? scene_->AddData(data) : nullptr;
+  scene_->RemoveObserver(errors);
+  if (!prop) {
+    fail("Cannot show " + name, name + ": " + QString::fromStdString(errors->Joined()));
+    return nullptr;
+  }
+  auto object = std::make_unique<SceneObject>();
+  object->name = name;
+  object->path = path;
+  object->kind = kindOf(data);
+  object->data = data;
+  object->prop = prop;
+  if (object->kind == SceneObject::Kind::Sketch)  // strokes: thin lines, not tubes
+    if (auto* actor = vtkActor::SafeDownCast(prop)) actor->GetProperty()->SetColor(0.1, 0.1, 0.1);
+
+  const QSignalBlocker block(tree_);
+  auto* item = new QTreeWidgetItem(tree_);
+  item->setText(kNameColumn, name);
+  item->setToolTip(kNameColumn, (path.isEmpty() ? QString("computed") : path) + " (" + kindName(object->kind) + ")");
+  item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+  item->setCheckState(kNameColumn, Qt::Checked);
+  if (object->kind != SceneObject::Kind::Volume) item->setCheckState(kInterestColumn, Qt::Unchecked);
+  objects_.push_back(std::move(object));
+  tree_->setCurrentItem(item);
+  emit objectsChanged();
+  emit sceneChanged();
+  return objects_.back().get();
+}
+
+void ObjectList::remove(SceneObject* object) {
+  const int row = rowOf(object);
+  if (row < 0) return;
+  if (object->interest) scene_->SetImportance(object->prop, 0);
+  scene_->GetRenderer()->RemoveViewProp(object->prop);
+  delete tree_->takeTopLevelItem(row);
+  objects_.erase(objects_.begin() + row);
+  emit objectsChanged();
+  emit sceneChanged();
+}
+
+SceneObject* ObjectList::current() const {
+  const int row = tree_->indexOfTopLevelItem(tree_->currentItem());
+  return row >= 0 && row < count() ? objects_[row].get() : nullptr;
+}
+
+void ObjectList::setCurrent(SceneObject* object) {
+  if (QTreeWidgetItem* item = itemOf(object)) tree_->setCurrentItem(item);
+}
+
+SceneObject* ObjectList::findByName(const QString& name) const {
+  for (const auto& object : objects_)
+    if (object->name == name) return object.get();
+  return nullptr;
+}
+
+std::vector<SceneObject*> ObjectList::ofKind(SceneObject::Kind kind) const {
+  std::vector<SceneObject*> found;
+  for (const auto& object : objects_)
+    if (object->kind == kind) found.push_back(object.get());
+  return found;
+}
+
+int ObjectList::rowOf(const SceneObject* object) const {
+  for (int row = 0; row < count(); ++row)
+    if (objects_[row].get() == object) return row;
+  return -1;
+}
+
+QTreeWidgetItem* ObjectList::itemOf(const SceneObject* object) const {
+  const int row = rowOf(object);
+  return row < 0 ? nullptr : tree_->topLevelItem(row);
+}
+
+void ObjectList::onItemChanged(QTreeWidgetItem* item, int column) {
+  const int row = tree_->indexOfTopLevelItem(item);
+  if (row < 0 || row >= count()) return;
+  SceneObject* object = objects_[row].get();
+  if (column == kNameColumn) setVisible(object, item->checkState(kNameColumn) == Qt::Checked);
+  if (column == kInterestColumn) setInterest(object, item->checkState(kInterestColumn) == Qt::Checked);
+}
+
+void ObjectList::setVisible(SceneObject* object, bool visible) {
+  object->prop->SetVisibility(visible);
+  if (QTreeWidgetItem* item = itemOf(object)) {
+    const QSignalBlocker block(tree_);
+    item->setCheckState(kNameColumn, visible ? Qt::Checked : Qt::Unchecked);
+  }
+  emit sceneChanged();
+}
+
+void ObjectList::setInterest(SceneObject* object, bool interest) {
+  if (object->kind == SceneObject::Kind::Volume) return;  // the ghost pass cannot use an assembly
+  object->interest = interest;
+  scene_->SetImportance(object->prop, interest ? 1.0 : 0.0);
+  if (QTreeWidgetItem* item = itemOf(object)) {
+    const QSignalBlocker block(tree_);
+    item->setCheckState(kInterestColumn, interest ? Qt::Checked : Qt::Unchecked);
+  }
+  emit sceneChanged();
+}
+
+void ObjectList::setColor(SceneObject* object, double r, double g, double b) {
+  if (auto* actor = vtkActor::SafeDownCast(object->prop)) {
+    actor->GetProperty()->SetColor(r, g, b);
+    emit sceneChanged();
+  }
+}
+
+void ObjectList::setOpacity(SceneObject* object, double opacity) {
+  if (auto* actor = vtkActor::SafeDownCast(object->prop)) {
+    actor->GetProperty()->SetOpacity(opacity);
+    emit sceneChanged();
+  }
+}
+
+bool ObjectList::save(SceneObject* object, const QString& path) {
+  const QByteArray name = path.toLocal8Bit();
+  if (auto* image = vtkImageData::SafeDownCast(object->data)) {
+    if (!path.endsWith(".vti", Qt::CaseInsensitive)) {
+      fail("Cannot save", path + ": volumes are saved as VTK image data (.vti)");
+      return false;
+    }
+    auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
+    writer->SetInputData(image);
+    writer->SetFileName(name.constData());
+    if (writer->Write() != 1) {
+      fail("Cannot save", path + ": cannot write the file");
+      return false;
+    }
+    return true;
+  }
+  auto writer = vtkSmartPointer<vtkMedialPolyDataWriter>::New();
+  auto errors = medial::ErrorCollector::Watch(writer);
+  writer->SetInputData(object->data);
+  writer->SetFileName(name.constData());
+  writer->Write();
+  if (errors->HasErrors()) {
+    fail("Cannot save", path + ": " + QString::fromStdString(errors->Joined()));
+    return false;
+  }
+  return true;
+}
+
+bool ObjectList::exportRig(SceneObject* object, const QString& path) {
+  if (!object->skinnedMesh) {
+    fail("Cannot export rig", object->name + " has no skinning weights: extract a skeleton with weights first");
+    return false;
+  }
+  auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
+  auto errors = medial::ErrorCollector::Watch(writer);
+  writer->SetInputData(object->skinnedMesh);
+  writer->SetSkeletonData(object->polyData());
+  const QByteArray name = path.toLocal8Bit();
+  writer->SetFileName(name.constData());
+  writer->Write();
+  if (errors->HasErrors()) {
+    fail("Cannot export rig", path + ": " + QString::fromStdString(errors->Joined()));
+    return false;
+  }
+  return true;
+}
+
+void ObjectList::showMenu(const QPoint& position) {
+  QTreeWidgetItem* item = tree_->itemAt(position);
+  if (!item) return;
+  tree_->setCurrentItem(item);
+  SceneObject* object = current();
+  QMenu menu(this);
+  QAction* color = menu.addAction("Colour...", this, &ObjectList::chooseColor);
+  color->setEnabled(object->kind != SceneObject::Kind::Volume);
+  menu.addAction("Save As...", this, &ObjectList::saveDialog);
+  QAction* rig = menu.addAction("Export Rig...", this, &ObjectList::rigDialog);
+  rig->setEnabled(object->skinnedMesh != nullptr);
+  menu.addSeparator();
+  menu.addAction("Delete", this, [this, object] { remove(object); });
+  menu.exec(tree_->viewport()->mapToGlobal(position));
+}
+
+void ObjectList::chooseColor() {
+  SceneObject* object = current();
+  auto* actor = object ? vtkActor::SafeDownCast(object->prop) : nullptr;
+  if (!actor) return;
+  const double* rgb = actor->GetProperty()->GetColor();
+  const QColor chosen = QColorDialog::getColor(QColor::fromRgbF(rgb[0], rgb[1], rgb[2]), this, "Colour of " + object->name);
+  if (chosen.isValid()) setColor(object, chosen.redF(), chosen.greenF(), chosen.blueF());
+}
+
+void ObjectList::saveDialog() {
+  SceneObject* object = current();
+  if (!object) return;
+  const bool volume = object->kind == SceneObject::Kind::Volume;
+  const QString filter = volume ? QString("VTK image data (*.vti)")
+                                : QString("Meshes and skeletons (%1)").arg(vtkMedialPolyDataWriter::GetExtensions());
+  const QString suggested = QFileInfo(object->name).completeBaseName() + (volume ? ".vti" : ".vtp");
+  const QString path = QFileDialog::getSaveFileName(this, "Save " + object->name, suggested, filter);
+  if (!path.isEmpty()) save(object, path);
+}
+
+void ObjectList::rigDialog() {
+  SceneObject* object = current();
+  if (!object) return;
+  const QString path = QFileDialog::getSaveFileName(this, "Export rig", QFileInfo(object->name).completeBaseName() + ".glb",
+                                                    QString("Rigs (%1)").arg(vtkMedialRigWriter::GetExtensions()));
+  if (!path.isEmpty()) exportRig(object, path);
+}
+
+}  // namespace medial::gui

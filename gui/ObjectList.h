@@ -1,0 +1,71 @@
+// ObjectList: the dock listing every loaded or computed object, with visibility (the check box), object
+// of interest for the ghost view (second column), colour, opacity, save as, rig export and delete.
+#pragma once
+
+#include "SceneObject.h"
+
+#include <QWidget>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+class QSlider;
+class QTreeWidget;
+class QTreeWidgetItem;
+class vtkMedialScene;
+
+namespace medial::gui {
+
+class ObjectList : public QWidget {
+  Q_OBJECT
+
+ public:
+  ObjectList(vtkMedialScene* scene, QWidget* parent = nullptr);
+  ~ObjectList() override;
+
+  // Shows `data` in the scene and adds a row; returns null (and reports why) when the scene cannot show it.
+  SceneObject* add(const QString& name, vtkDataObject* data, const QString& path = QString());
+  void remove(SceneObject* object);
+  int count() const { return static_cast<int>(objects_.size()); }
+  SceneObject* at(int row) const { return objects_[row].get(); }
+  SceneObject* current() const;
+  void setCurrent(SceneObject* object);
+  SceneObject* findByName(const QString& name) const;
+  std::vector<SceneObject*> ofKind(SceneObject::Kind kind) const;
+
+  void setVisible(SceneObject* object, bool visible);
+  void setInterest(SceneObject* object, bool interest);
+  void setColor(SceneObject* object, double r, double g, double b);
+  void setOpacity(SceneObject* object, double opacity);
+  // Writes the object (mesh: VTP VTK OBJ PLY STL; skeleton also SWC; volume VTI). False on failure.
+  bool save(SceneObject* object, const QString& path);
+  // Writes a contraction skeleton's rig (GLB, FBX). False on failure.
+  bool exportRig(SceneObject* object, const QString& path);
+
+  // Where errors go (MainWindow shows a dialog, or its own handler).
+  void setErrorReporter(std::function<void(const QString& title, const QString& message)> report);
+
+ signals:
+  void sceneChanged();    // something visible changed: render again
+  void objectsChanged();  // rows added or removed (panels refresh their input lists)
+  void currentChanged(SceneObject* object);
+
+ private:
+  void onItemChanged(QTreeWidgetItem* item, int column);
+  void showMenu(const QPoint& position);
+  void chooseColor();
+  void saveDialog();
+  void rigDialog();
+  QTreeWidgetItem* itemOf(const SceneObject* object) const;
+  int rowOf(const SceneObject* object) const;
+  void fail(const QString& title, const QString& message);
+
+  vtkMedialScene* scene_;
+  QTreeWidget* tree_ = nullptr;
+  QSlider* opacity_ = nullptr;
+  std::vector<std::unique_ptr<SceneObject>> objects_;
+  std::function<void(const QString&, const QString&)> report_;
+};
+
+}  // namespace medial::gui

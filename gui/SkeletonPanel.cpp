@@ -1,0 +1,194 @@
+#include "SkeletonPanel.h"
+
+#include "ObjectList.h"
+#include "vtkMedialContractionSkeleton.h"
+
+#include <QFormLayout>
+#include <QLabel>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkLine.h>
+#include <vtkLookupTable.h>
+#include <vtkMapper.h>
+#include <vtkPointData.h>
+
+#include <limits>
+
+namespace medial::gui {
+
+namespace {
+
+std::vector<Parameter> contractionParameters() {
+  using P = Parameter;
+  return {
+      P::integer("TargetNodes", "Skeleton nodes", 30, 0, 100000,
+                 "Nodes kept by node selection (§III.D); 0 keeps the whole curve skeleton"),
+      P::real("InitialContractionFactor", "W_L0 factor", 1e-3, 1e-6, 10, 6,
+              "W_L0 = factor · sqrt(mean face area) (§III.A, default 1e-3)"),
+      P::real("ContractionScale", "s_L", 2.0, 1.01, 10, 2, "Growth of W_L per iteration (§III.A, default 2)"),
+      P::real("MaxContractionWeight", "W_L cap", 2048, 1, 1e6, 0, "Upper bound of W_L (§III.A, default 2048)"),
+      P::real("MaxAttractionWeight", "W_H cap", 10000, 1, 1e7, 0, "Upper bound of W_H (§III.A, default 10000)"),
+      P::integer("MaxIterations", "Max iterations", 40, 1, 1000, "Contraction iterations at most (§III.A)"),
+      P::real("ShapeWeight", "w_a", 1.0, 0, 100, 3, "Shape cost weight of the surgery, eq. (10) (default 1)"),
+      P::real("SamplingWeight", "w_b", 0.1, 0, 100, 3, "Sampling cost weight of the surgery, eq. (10) (default 0.1)"),
+      P::toggle("RefineEmbedding", "Refine embedding", true, "Move nodes to the centre of their vertices (§III.C)"),
+      P::toggle("ComputeWeights", "Skinning weights", true, "Heat-diffusion skinning weights (§III.E), for the rig"),
+      P::real("HeatConstant", "c (heat)", 1.0, 1e-3, 100, 3, "H_jj = c / d(j)^2 (§III.E, Baran and Popović: 1)"),
+      P::choice("Solver", "Solver",
+                {"cholmod-metis", "cholmod-amd", "llt-amd", "ldlt-amd", "llt-metis", "ldlt-metis", "lu-colamd",
+                 "lu-amd", "lu-metis", "qr-colamd", "cg"},
+                "Sparse solver of the normal equations (5)"),
+  };
+}
+
+// Distinct colours for segment ids (golden-ratio hues), so that neighbouring nodes differ.
+vtkSmartPointer<vtkLookupTable> segmentColours(int count) {
+  auto table = vtkSmartPointer<vtkLookupTable>::New();
+  table->SetNumberOfTableValues(std::max(count, 1));
+  double hue = 0.1;
+  for (int i = 0; i < std::max(count, 1); ++i, hue += 0.618034) {
+    hue -= static_cast<int>(hue);
+    double rgb[3];
+    vtkMath::HSVToRGB(hue, 0.55, 0.95, rgb, rgb + 1, rgb + 2);
+    table->SetTableValue(i, rgb[0], rgb[1], rgb[2]);
+  }
+  table->SetTableRange(0, std::max(count - 1, 1));
+  return table;
+}
+
+vtkSmartPointer<vtkLookupTable> weightColours() {
+  auto table = vtkSmartPointer<vtkLookupTable>::New();
+  table->SetHueRange(0.667, 0.0);  // blue (0) to red (1)
+  table->SetTableRange(0, 1);
+  table->Build();
+  return table;
+}
+
+}  // namespace
+
+SkeletonPanel::SkeletonPanel(ObjectList* objects, QWidget* parent)
+    : FilterPanel("Skeleton", SceneObject::Kind::Mesh, contractionParameters(), objects, parent) {
+  bone_ = new QSpinBox(this);
+  bone_->setObjectName("bone");
+  bone_->setRange(-1, -1);
+  bone_->setSpecialValueText("segments");
+  bone_->setToolTip("Colour the mesh by this bone's skinning weight (or click a bone in the 3-D view)");
+  auto* row = new QFormLayout;
+  row->addRow("Show weights of bone", bone_);
+  extraLayout()->addLayout(row);
+  connect(bone_, &QSpinBox::valueChanged, this, [this](int bone) {
+    if (lastSkeleton_) selectBone(lastSkeleton_, bone);
+  });
+  connect(objects, &ObjectList::objectsChanged, this, [this] {
+    bool live = false;
+    for (SceneObject* s : this->objects()->ofKind(SceneObject::Kind::Skeleton)) live = live || s == lastSkeleton_;
+    if (!live) lastSkeleton_ = nullptr;
+  });
+}
+
+vtkSmartPointer<vtkAlgorithm> SkeletonPanel::makeFilter(SceneObject* input, QString&) {
+  auto filter = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
+  const ParameterForm* f = form();
+  filter->SetInputData(copyOf(input));
+  filter->SetTargetNodes(static_cast<int>(f->value("TargetNodes")));
+  filter->SetInitialContractionFactor(f->value("InitialContractionFactor"));
+  filter->SetContractionScale(f->value("ContractionScale"));
+  filter->SetMaxContractionWeight(f->value("MaxContractionWeight"));
+  filter->SetMaxAttractionWeight(f->value("MaxAttractionWeight"));
+  filter->SetMaxIterations(static_cast<int>(f->value("MaxIterations")));
+  filter->SetShapeWeight(f->value("ShapeWeight"));
+  filter->SetSamplingWeight(f->value("SamplingWeight"));
+  filter->SetRefineEmbedding(f->isOn("RefineEmbedding"));
+  filter->SetComputeWeights(f->isOn("ComputeWeights"));
+  filter->SetHeatConstant(f->value("HeatConstant"));
+  filter->SetSolver(f->choice("Solver").toStdString());
+  return filter;
+}
+
+void SkeletonPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
+  auto* contraction = static_cast<vtkMedialContractionSkeleton*>(filter);
+  auto skeletonData = vtkSmartPointer<vtkPolyData>::New();
+  skeletonData->ShallowCopy(contraction->GetOutput(0));
+  auto meshData = vtkSmartPointer<vtkPolyData>::New();
+  meshData->ShallowCopy(contraction->GetOutput(1));
+  emit message(QString("Skeleton: %1 nodes, %2 bones, %3 contraction iterations")
+                   .arg(skeletonData->GetNumberOfPoints())
+                   .arg(skeletonData->GetNumberOfLines())
+                   .arg(contraction->GetContractionIterations()));
+
+  SceneObject* segmentation = objects()->add(input->name + " segments", meshData);
+  SceneObject* skeleton = objects()->add(input->name + " skeleton", skeletonData);
+  if (!segmentation || !skeleton) return;
+  if (meshData->GetPointData()->GetArray("SkinWeights")) skeleton->skinnedMesh = meshData;
+  objects()->setVisible(input, false);  // the segmentation mesh replaces it
+  objects()->setOpacity(segmentation, 0.6);
+  objects()->setInterest(skeleton, true);  // seen through the mesh in the ghost view
+  lastSkeleton_ = skeleton;
+  {
+    const QSignalBlocker block(bone_);
+    bone_->setRange(-1, skeleton->skinnedMesh ? static_cast<int>(skeletonData->GetNumberOfLines()) - 1 : -1);
+    bone_->setValue(-1);
+  }
+  selectBone(skeleton, -1);
+}
+
+SceneObject* SkeletonPanel::segmentationOf(SceneObject* skeleton) const {
+  if (!skeleton) return nullptr;
+  const QString name = skeleton->name.endsWith(" skeleton") ? skeleton->name.chopped(9) + " segments" : QString();
+  return objects()->findByName(name);
+}
+
+bool SkeletonPanel::selectBone(SceneObject* skeleton, int bone) {
+  SceneObject* mesh = segmentationOf(skeleton);
+  auto* actor = mesh ? vtkActor::SafeDownCast(mesh->prop) : nullptr;
+  if (!actor) return false;
+  vtkPolyData* data = mesh->polyData();
+  vtkMapper* mapper = actor->GetMapper();
+  vtkDataArray* weights = data->GetPointData()->GetArray("SkinWeights");
+  if (bone >= 0 && (!weights || bone >= weights->GetNumberOfComponents())) return false;
+  mapper->ScalarVisibilityOn();
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SetColorModeToMapScalars();
+  if (bone < 0) {
+    const int nodes = static_cast<int>(skeleton->polyData()->GetNumberOfPoints());
+    mapper->SetLookupTable(segmentColours(nodes));
+    mapper->ColorByArrayComponent("SkeletonNode", 0);
+    mapper->SetScalarRange(0, std::max(nodes - 1, 1));
+  } else {
+    mapper->SetLookupTable(weightColours());
+    mapper->ColorByArrayComponent("SkinWeights", bone);
+    mapper->SetScalarRange(0, 1);
+  }
+  if (skeleton == lastSkeleton_ && bone_->value() != bone) {
+    const QSignalBlocker block(bone_);
+    bone_->setValue(bone);
+  }
+  emit message(bone < 0 ? QString("Mesh coloured by SkeletonNode") : QString("Mesh coloured by the weight of bone %1").arg(bone));
+  emit sceneChanged();
+  return true;
+}
+
+int SkeletonPanel::nearestBone(SceneObject* skeleton, const double point[3]) {
+  vtkPolyData* data = skeleton ? skeleton->polyData() : nullptr;
+  if (!data || !data->GetLines()) return -1;
+  int best = -1, cell = 0;
+  double bestDistance = std::numeric_limits<double>::max();
+  vtkIdType count;
+  const vtkIdType* ids;
+  auto lines = data->GetLines();
+  for (lines->InitTraversal(); lines->GetNextCell(count, ids); ++cell) {
+    if (count < 2) continue;
+    double a[3], b[3], t, closest[3];
+    data->GetPoint(ids[0], a);
+    data->GetPoint(ids[count - 1], b);
+    const double d = vtkLine::DistanceToLine(point, a, b, t, closest);
+    if (d < bestDistance) bestDistance = d, best = cell;
+  }
+  return best;
+}
+
+}  // namespace medial::gui

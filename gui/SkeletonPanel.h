@@ -1,0 +1,38 @@
+// SkeletonPanel: skeleton by mesh contraction (vtkMedialContractionSkeleton) from a mesh. The result is
+// the skeleton and the mesh coloured by `SkeletonNode` (the segmentation); selectBone() colours that mesh
+// by one bone's skinning weight instead; the skeleton's context menu exports the rig.
+#pragma once
+
+#include "FilterPanel.h"
+
+class QSpinBox;
+
+namespace medial::gui {
+
+class SkeletonPanel : public FilterPanel {
+  Q_OBJECT
+
+ public:
+  SkeletonPanel(ObjectList* objects, QWidget* parent = nullptr);
+
+  // Colours the segmentation mesh of `skeleton` by the weight of bone `bone` (its line cell), or by
+  // SkeletonNode when bone < 0. False when the skeleton has no such mesh or bone.
+  bool selectBone(SceneObject* skeleton, int bone);
+  // The bone (line cell) of `skeleton` nearest to a world point, or -1.
+  static int nearestBone(SceneObject* skeleton, const double point[3]);
+  // The segmentation mesh computed with `skeleton`, if it is still in the list.
+  SceneObject* segmentationOf(SceneObject* skeleton) const;
+
+ signals:
+  void sceneChanged();
+
+ protected:
+  vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) override;
+  void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) override;
+
+ private:
+  QSpinBox* bone_ = nullptr;
+  SceneObject* lastSkeleton_ = nullptr;
+};
+
+}  // namespace medial::gui

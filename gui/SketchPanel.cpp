@@ -1,0 +1,168 @@
+#include "SketchPanel.h"
+
+#include "ObjectList.h"
+#include "vtkMedialSketchSkeleton.h"
+
+#include <QCheckBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QSlider>
+#include <QVBoxLayout>
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkPoints.h>
+#include <vtkProperty.h>
+
+namespace medial::gui {
+
+namespace {
+
+constexpr const char* kDrawnSketch = "drawn sketch";
+
+std::vector<Parameter> sketchParameters() {
+  using P = Parameter;
+  return {
+      P::real("Thickness", "Thickness", 1.0, 0.01, 10, 2, "Height parameter c of the inflation (§4.1: Poisson equation, Dirichlet boundary); scales the thickness"),
+      P::toggle("Inflate", "Inflated mesh", true, "Also build the inflated mesh of every stroke (§4.1)"),
+  };
+}
+
+struct Threshold {
+  const char* name;
+  const char* label;
+  int value;
+  const char* tooltip;
+};
+
+constexpr Threshold kThresholds[4] = {
+    {"Simplification", "ε_s simplify", 5, "Branch simplification ε_s of BoundedDP, Algorithms 1-2 (§3.1; default 5 px)"},
+    {"Merging", "ε_m merge", 30, "Joint merging ε_m (§3.3; default 30 px)"},
+    {"Pruning", "ε_t prune", 30, "Branch pruning ε_t (§3.3; default 30 px)"},
+    {"Collapsing", "ε_c collapse", 10, "Edge collapsing ε_c (§3.3; default 10 px)"},
+};
+
+}  // namespace
+
+SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
+    : FilterPanel("Sketch", SceneObject::Kind::Sketch, sketchParameters(), objects, parent) {
+  auto* rows = new QFormLayout;
+  for (int i = 0; i < 4; ++i) {
+    auto* slider = new QSlider(Qt::Horizontal, this);
+    slider->setObjectName(kThresholds[i].name);
+    slider->setRange(0, 100);
+    slider->setValue(kThresholds[i].value);
+    slider->setToolTip(kThresholds[i].tooltip);
+    auto* value = new QLabel(QString::number(kThresholds[i].value), this);
+    value->setMinimumWidth(28);
+    connect(slider, &QSlider::valueChanged, value, [value](int v) { value->setNum(v); });
+    connect(slider, &QSlider::valueChanged, this, &SketchPanel::parameterChanged);
+    auto* row = new QHBoxLayout;
+    row->addWidget(slider, 1);
+    row->addWidget(value);
+    rows->addRow(kThresholds[i].label, row);
+    thresholds_[i] = slider;
+  }
+  live_ = new QCheckBox("Update live", this);
+  live_->setChecked(true);
+  draw_ = new QCheckBox("Draw strokes in the 3-D view", this);
+  draw_->setObjectName("draw");
+  draw_->setToolTip("Left-drag draws a closed stroke on the view plane; each stroke is a new part.\n"
+                    "Turn off to rotate the view again.");
+  rows->addRow(live_);
+  rows->addRow(draw_);
+  extraLayout()->addLayout(rows);
+  connect(form(), &ParameterForm::valueChanged, this, &SketchPanel::parameterChanged);
+  connect(draw_, &QCheckBox::toggled, this, &SketchPanel::drawingToggled);
+  connect(this, &FilterPanel::completed, this, [this] {
+    if (rerun_) {
+      rerun_ = false;
+      run();
+    }
+  });
+}
+
+bool SketchPanel::isDrawing() const { return draw_->isChecked(); }
+void SketchPanel::setDrawing(bool on) { draw_->setChecked(on); }
+
+void SketchPanel::parameterChanged() {
+  if (!live_->isChecked() || !input() || !objects()->findByName(input()->name + " skeleton")) return;
+  if (isRunning()) {
+    rerun_ = true;
+    cancel();
+    return;
+  }
+  run();
+}
+
+bool SketchPanel::addStroke(const QVector<QPointF>& points) {
+  if (points.size() < 3) return false;
+  // The drawn sketch is rebuilt with one more closed polyline (its first point repeated at the end), and
+  // an identity `Placement` per stroke: the strokes lie in the z = 0 plane.
+  auto sketch = vtkSmartPointer<vtkPolyData>::New();
+  auto coordinates = vtkSmartPointer<vtkPoints>::New();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  auto placement = vtkSmartPointer<vtkDoubleArray>::New();
+  placement->SetName("Placement");
+  placement->SetNumberOfComponents(16);
+  SceneObject* previous = objects()->findByName(kDrawnSketch);
+  if (previous) {
+    coordinates->DeepCopy(previous->polyData()->GetPoints());
+    lines->DeepCopy(previous->polyData()->GetLines());
+    placement->DeepCopy(previous->polyData()->GetCellData()->GetArray("Placement"));
+  }
+  const vtkIdType first = coordinates->GetNumberOfPoints();
+  lines->InsertNextCell(points.size() + 1);
+  for (const QPointF& p : points) lines->InsertCellPoint(coordinates->InsertNextPoint(p.x(), p.y(), 0.0));
+  lines->InsertCellPoint(first);
+  const double identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  placement->InsertNextTuple(identity);
+  sketch->SetPoints(coordinates);
+  sketch->SetLines(lines);
+  sketch->GetCellData()->AddArray(placement);
+
+  if (previous) objects()->remove(previous);
+  SceneObject* object = objects()->add(kDrawnSketch, sketch);
+  if (!object) return false;
+  setInput(object);
+  if (!live_->isChecked()) return true;
+  if (isRunning()) {
+    rerun_ = true;
+    cancel();
+    return true;
+  }
+  return run();
+}
+
+vtkSmartPointer<vtkAlgorithm> SketchPanel::makeFilter(SceneObject* input, QString&) {
+  auto filter = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
+  filter->SetInputData(copyOf(input));
+  filter->SetSimplificationThreshold(thresholds_[0]->value());
+  filter->SetMergingThreshold(thresholds_[1]->value());
+  filter->SetPruningThreshold(thresholds_[2]->value());
+  filter->SetCollapsingThreshold(thresholds_[3]->value());
+  filter->SetThickness(form()->value("Thickness"));
+  filter->SetInflate(form()->isOn("Inflate"));
+  return filter;
+}
+
+void SketchPanel::collect(vtkAlgorithm* filter, SceneObject* input, double seconds) {
+  auto* sketch = static_cast<vtkMedialSketchSkeleton*>(filter);
+  auto skeleton = vtkSmartPointer<vtkPolyData>::New();
+  skeleton->ShallowCopy(sketch->GetOutput(0));
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(sketch->GetOutput(1));
+  for (const QString suffix : {" skeleton", " mesh"})
+    if (SceneObject* previous = objects()->findByName(input->name + suffix)) objects()->remove(previous);
+  if (mesh->GetNumberOfPoints() > 0)
+    if (SceneObject* m = objects()->add(input->name + " mesh", mesh)) objects()->setOpacity(m, 0.5);
+  if (SceneObject* s = objects()->add(input->name + " skeleton", skeleton)) objects()->setInterest(s, true);
+  emit message(QString("Sketch: %1 nodes, %2 bones in %3 ms")
+                   .arg(skeleton->GetNumberOfPoints())
+                   .arg(skeleton->GetNumberOfLines())
+                   .arg(seconds * 1000, 0, 'f', 1));
+}
+
+}  // namespace medial::gui

@@ -1,0 +1,46 @@
+// SketchPanel: sketch skeletonization (vtkMedialSketchSkeleton) of a sketch (strokes read from a .txt
+// file, or drawn in the 3-D view with "Draw strokes"). The four refinement thresholds are sliders; with
+// "Update live" each change, and each new stroke, re-runs the filter and replaces skeleton and mesh.
+#pragma once
+
+#include "FilterPanel.h"
+
+#include <QPointF>
+#include <QVector>
+
+class QCheckBox;
+class QSlider;
+
+namespace medial::gui {
+
+class SketchPanel : public FilterPanel {
+  Q_OBJECT
+
+ public:
+  SketchPanel(ObjectList* objects, QWidget* parent = nullptr);
+
+  // The four thresholds of §3.1 and §3.3 in sketch pixels (ES, EM, ET, EC).
+  QSlider* thresholdSlider(int index) const { return thresholds_[index]; }
+  // Adds a closed stroke (points in the z = 0 plane of world space) to the drawn sketch, creating it if
+  // needed, and runs the filter. False when the stroke has fewer than 3 points.
+  bool addStroke(const QVector<QPointF>& points);
+  bool isDrawing() const;
+  void setDrawing(bool on);
+
+ signals:
+  void drawingToggled(bool on);
+
+ protected:
+  vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) override;
+  void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) override;
+
+ private:
+  void parameterChanged();
+
+  QSlider* thresholds_[4] = {};
+  QCheckBox* live_ = nullptr;
+  QCheckBox* draw_ = nullptr;
+  bool rerun_ = false;
+};
+
+}  // namespace medial::gui
