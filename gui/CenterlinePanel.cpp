@@ -15,7 +15,10 @@
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
 
+#include <vtkActor.h>
 #include <vtkCellArray.h>
+#include <vtkMapper.h>
+#include <vtkProperty.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
@@ -139,6 +142,13 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
   if (SceneObject* previous = objects()->findByName(name)) objects()->remove(previous);
   SceneObject* result = objects()->add(name, line);
   if (!result) return;
+  // Drawn as a plain line, not as tubes and balls: the fly-through's camera stands on it.
+  if (auto* actor = vtkActor::SafeDownCast(result->prop)) {
+    actor->GetMapper()->SetInputDataObject(line);
+    actor->GetProperty()->SetLineWidth(3);
+    actor->GetProperty()->LightingOff();
+    actor->GetProperty()->SetColor(0.1, 0.8, 0.2);
+  }
   objects()->setInterest(result, true);
   fly_.setPath(line);
   buildProfile(line);

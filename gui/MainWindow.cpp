@@ -161,14 +161,14 @@ void MainWindow::buildPanels() {
   });
   connect(sketch_, &SketchPanel::drawingToggled, this, [this](bool on) {
     view_->setDrawingMode(on);
-    if (on && !objects_->findByName("drawn sketch")) {
-      // Draw on the z = 0 plane seen from the front.
+    if (on) {
+      // Draw on the z = 0 plane seen from the front, keeping the focal point and the zoom.
       vtkCamera* camera = scene_->GetRenderer()->GetActiveCamera();
-      camera->SetFocalPoint(0, 0, 0);
-      camera->SetPosition(0, 0, 1);
+      const double* focal = camera->GetFocalPoint();
+      camera->SetFocalPoint(focal[0], focal[1], 0);
+      camera->SetPosition(focal[0], focal[1], camera->GetDistance());
       camera->SetViewUp(0, 1, 0);
-      camera->ParallelProjectionOn();
-      if (objectCount() == 0) camera->SetParallelScale(100);
+      scene_->GetRenderer()->ResetCameraClippingRange();
       render();
     }
     log(on ? "Sketch: drawing on (left-drag draws a closed stroke)" : "Sketch: drawing off");
@@ -309,6 +309,8 @@ bool MainWindow::openFile(const QString& path) {
 }
 
 void MainWindow::onObjectsChanged() {
+  scene_->GetRenderer()->ResetCameraClippingRange();  // new objects may lie outside the near/far planes
+
   // The slice views follow the volume shown; when it is deleted, the next volume (or none).
   const auto volumes = objects_->ofKind(SceneObject::Kind::Volume);
   bool live = false;

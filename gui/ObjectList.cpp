@@ -99,9 +99,12 @@ void ObjectList::fail(const QString& title, const QString& message) {
   if (report_) report_(title, message);
 }
 
-SceneObject* ObjectList::add(const QString& name, vtkDataObject* data, const QString& path) {
+SceneObject* ObjectList::add(const QString& name, vtkDataObject* data, const QString& path, double radiusScale) {
   auto errors = medial::ErrorCollector::Watch(scene_);
+  const double sceneScale = scene_->GetSkeletonRadiusScale();
+  scene_->SetSkeletonRadiusScale(radiusScale);
   vtkProp3D* prop = data ? scene_->AddData(data) : nullptr;
+  scene_->SetSkeletonRadiusScale(sceneScale);
   scene_->RemoveObserver(errors);
   if (!prop) {
     fail("Cannot show " + name, name + ": " + QString::fromStdString(errors->Joined()));
@@ -116,16 +119,19 @@ SceneObject* ObjectList::add(const QString& name, vtkDataObject* data, const QSt
   if (object->kind == SceneObject::Kind::Sketch)  // strokes: thin lines, not tubes
     if (auto* actor = vtkActor::SafeDownCast(prop)) actor->GetProperty()->SetColor(0.1, 0.1, 0.1);
 
-  const QSignalBlocker block(tree_);
-  auto* item = new QTreeWidgetItem(tree_);
+  auto* item = new QTreeWidgetItem;
   item->setText(kNameColumn, name);
   item->setToolTip(kNameColumn, (path.isEmpty() ? QString("computed") : path) + " (" + kindName(object->kind) + ")");
   item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
   item->setCheckState(kNameColumn, Qt::Checked);
   if (object->kind != SceneObject::Kind::Volume) item->setCheckState(kInterestColumn, Qt::Unchecked);
+  {
+    const QSignalBlocker block(tree_);  // no itemChanged for the row being built
+    tree_->addTopLevelItem(item);
+  }
   objects_.push_back(std::move(object));
+  emit objectsChanged();  // panels list the new object before it becomes current
   tree_->setCurrentItem(item);
-  emit objectsChanged();
   emit sceneChanged();
   return objects_.back().get();
 }

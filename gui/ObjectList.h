@@ -17,6 +17,9 @@ class vtkMedialScene;
 
 namespace medial::gui {
 
+// Computed skeletons are drawn at this fraction of their `Radius`, so that they show inside their mesh.
+constexpr double kComputedRadiusScale = 0.3;
+
 class ObjectList : public QWidget {
   Q_OBJECT
 
@@ -25,7 +28,8 @@ class ObjectList : public QWidget {
   ~ObjectList() override;
 
   // Shows `data` in the scene and adds a row; returns null (and reports why) when the scene cannot show it.
-  SceneObject* add(const QString& name, vtkDataObject* data, const QString& path = QString());
+  // A skeleton's tubes are drawn at radiusScale x `Radius` (a centerline: thin, to fly inside its tube).
+  SceneObject* add(const QString& name, vtkDataObject* data, const QString& path = QString(), double radiusScale = 1.0);
   void remove(SceneObject* object);
   int count() const { return static_cast<int>(objects_.size()); }
   SceneObject* at(int row) const { return objects_[row].get(); }

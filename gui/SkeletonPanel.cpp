@@ -121,7 +121,7 @@ void SkeletonPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
                    .arg(contraction->GetContractionIterations()));
 
   SceneObject* segmentation = objects()->add(input->name + " segments", meshData);
-  SceneObject* skeleton = objects()->add(input->name + " skeleton", skeletonData);
+  SceneObject* skeleton = objects()->add(input->name + " skeleton", skeletonData, QString(), kComputedRadiusScale);
   if (!segmentation || !skeleton) return;
   if (meshData->GetPointData()->GetArray("SkinWeights")) skeleton->skinnedMesh = meshData;
   objects()->setVisible(input, false);  // the segmentation mesh replaces it

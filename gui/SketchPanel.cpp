@@ -34,14 +34,15 @@ struct Threshold {
   const char* name;
   const char* label;
   int value;
+  int maximum;
   const char* tooltip;
 };
 
 constexpr Threshold kThresholds[4] = {
-    {"Simplification", "ε_s simplify", 5, "Branch simplification ε_s of BoundedDP, Algorithms 1-2 (§3.1; default 5 px)"},
-    {"Merging", "ε_m merge", 30, "Joint merging ε_m (§3.3; default 30 px)"},
-    {"Pruning", "ε_t prune", 30, "Branch pruning ε_t (§3.3; default 30 px)"},
-    {"Collapsing", "ε_c collapse", 10, "Edge collapsing ε_c (§3.3; default 10 px)"},
+    {"Simplification", "ε_s simplify", 5, 50, "Branch simplification ε_s of BoundedDP, Algorithms 1-2 (§3.1; default 5 px)"},
+    {"Merging", "ε_m merge", 30, 300, "Joint merging ε_m (§3.3; default 30 px)"},
+    {"Pruning", "ε_t prune", 30, 300, "Branch pruning ε_t (§3.3; default 30 px)"},
+    {"Collapsing", "ε_c collapse", 10, 100, "Edge collapsing ε_c (§3.3; default 10 px)"},
 };
 
 }  // namespace
@@ -52,7 +53,7 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
   for (int i = 0; i < 4; ++i) {
     auto* slider = new QSlider(Qt::Horizontal, this);
     slider->setObjectName(kThresholds[i].name);
-    slider->setRange(0, 100);
+    slider->setRange(0, kThresholds[i].maximum);
     slider->setValue(kThresholds[i].value);
     slider->setToolTip(kThresholds[i].tooltip);
     auto* value = new QLabel(QString::number(kThresholds[i].value), this);
@@ -158,7 +159,8 @@ void SketchPanel::collect(vtkAlgorithm* filter, SceneObject* input, double secon
     if (SceneObject* previous = objects()->findByName(input->name + suffix)) objects()->remove(previous);
   if (mesh->GetNumberOfPoints() > 0)
     if (SceneObject* m = objects()->add(input->name + " mesh", mesh)) objects()->setOpacity(m, 0.5);
-  if (SceneObject* s = objects()->add(input->name + " skeleton", skeleton)) objects()->setInterest(s, true);
+  if (SceneObject* s = objects()->add(input->name + " skeleton", skeleton, QString(), kComputedRadiusScale))
+    objects()->setInterest(s, true);
   emit message(QString("Sketch: %1 nodes, %2 bones in %3 ms")
                    .arg(skeleton->GetNumberOfPoints())
                    .arg(skeleton->GetNumberOfLines())

@@ -1,0 +1,329 @@
+// medial-gui's workflows driven through the UI with QTest, as a person would: open each kind of sample,
+// press a panel's Run button, wait, check the object list and the picture; cancel a long run; open a
+// corrupt file. Run under xvfb-run (QOpenGLWidget needs an X server).
+#include "ImageComparison.h"
+#include "TestPaths.h"
+
+#include "CenterlinePanel.h"
+#include "IsoSurfacePanel.h"
+#include "MainWindow.h"
+#include "ObjectList.h"
+#include "SketchPanel.h"
+#include "SkeletonPanel.h"
+#include "SqmPanel.h"
+#include "VtkView.h"
+#include "vtkMedialGhostPass.h"
+#include "vtkMedialScene.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QMouseEvent>
+#include <QPushButton>
+#include <QSlider>
+#include <QTabWidget>
+#include <QTest>
+
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkSphereSource.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+namespace {
+
+using namespace medial::gui;
+using medial::test::dataPath;
+
+class GuiWorkflow : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!medial::test::hasDisplay()) GTEST_SKIP() << "no X display: run the tests under xvfb-run -a";
+    // One scratch folder per test (scratchDir empties the folder it returns).
+    dir = medial::test::scratchDir(std::string("gui-workflow/") +
+                                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    window = std::make_unique<MainWindow>();
+    window->setErrorHandler([this](const QString& title, const QString& message) {
+      errors.append(title + ": " + message);
+    });
+    window->resize(1280, 860);
+    window->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  }
+
+  void open(const std::string& path) { ASSERT_TRUE(window->openFile(QString::fromStdString(path))) << errors.join("\n").toStdString(); }
+
+  // Presses the panel's Run button as a user would and waits for the filter to finish.
+  bool runThroughUi(FilterPanel* panel, int timeoutMs = 120000) {
+    auto* run = panel->findChild<QPushButton*>("run");
+    EXPECT_TRUE(run && run->isEnabled());
+    if (!run || !run->isEnabled()) return false;
+    QTest::mouseClick(run, Qt::LeftButton);
+    EXPECT_TRUE(panel->isRunning());
+    QElapsedTimer clock;
+    clock.start();
+    while (panel->isRunning() && clock.elapsed() < timeoutMs) QTest::qWait(20);
+    QTest::qWait(20);
+    return !panel->isRunning() && panel->lastRunSucceeded();
+  }
+
+  SceneObject* object(const QString& name) { return window->objects()->findByName(name); }
+
+  // Saves the 3-D view and returns the share of its pixels that are not background.
+  double screenshot(const std::string& name) {
+    window->view()->update();
+    QTest::qWait(50);
+    const std::string png = dir + "/" + name + ".png";
+    EXPECT_TRUE(window->saveScreenshot(QString::fromStdString(png)));
+    return medial::test::foregroundFractionOfPng(png);
+  }
+
+  std::string dir;
+  std::unique_ptr<MainWindow> window;
+  QStringList errors;
+};
+
+}  // namespace
+
+TEST_F(GuiWorkflow, OpensEveryKindOfSample) {
+  open(dataPath("meshes/torus.off"));
+  open(dataPath("skeletons/figure.vtp"));
+  open(dataPath("skeletons/hand.swc"));
+  open(dataPath("sketches/bird.txt"));
+  open(dataPath("volumes/tubes/u.nii.gz"));
+  ASSERT_EQ(window->objectCount(), 5);
+  EXPECT_EQ(window->objects()->at(0)->kind, SceneObject::Kind::Mesh);
+  EXPECT_EQ(window->objects()->at(1)->kind, SceneObject::Kind::Skeleton);
+  EXPECT_EQ(window->objects()->at(2)->kind, SceneObject::Kind::Skeleton);
+  EXPECT_EQ(window->objects()->at(3)->kind, SceneObject::Kind::Sketch);
+  EXPECT_EQ(window->objects()->at(4)->kind, SceneObject::Kind::Volume);
+  EXPECT_TRUE(window->sliceViews()->isVisible()) << "a volume shows its slice views";
+  EXPECT_TRUE(window->recentFiles().first().endsWith("u.nii.gz"));
+  EXPECT_GT(screenshot("every-kind"), 0.05);
+  EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
+}
+
+TEST_F(GuiWorkflow, HeadCtInSlicesAndIsoSurface) {
+  const std::string ct = medial::test::externalPath("invesalius/Cranium.inv3");
+  MEDIAL_REQUIRE_FILE(ct);
+  open(ct);
+  SliceViews* slices = window->sliceViews();
+  ASSERT_TRUE(slices->isVisible());
+  EXPECT_DOUBLE_EQ(slices->window(), 400) << "CT opens in the soft-tissue window";
+  // Bone preset, then a right-drag in the axial view widens the window.
+  slices->findChild<QComboBox*>("windowLevelPreset")->setCurrentIndex(1);
+  EXPECT_DOUBLE_EQ(slices->window(), 1800);
+  SliceView* axial = slices->view(2);
+  const QPoint centre = axial->rect().center();
+  QTest::mousePress(axial, Qt::RightButton, Qt::NoModifier, centre);
+  QMouseEvent move(QEvent::MouseMove, centre + QPoint(60, 0), axial->mapToGlobal(centre + QPoint(60, 0)), Qt::NoButton,
+                   Qt::RightButton, Qt::NoModifier);
+  QApplication::sendEvent(axial, &move);
+  QTest::mouseRelease(axial, Qt::RightButton, Qt::NoModifier, centre + QPoint(60, 0));
+  EXPECT_GT(slices->window(), 1800);
+  // A click in the axial view moves the crosshair: the coronal and sagittal slices follow.
+  const int coronalBefore = slices->view(1)->sliceIndex();
+  QTest::mouseClick(axial, Qt::LeftButton, Qt::NoModifier, centre + QPoint(0, axial->height() / 4));
+  EXPECT_NE(slices->view(1)->sliceIndex(), coronalBefore);
+  // The wheel steps through axial slices.
+  const int axialBefore = axial->sliceIndex();
+  QWheelEvent wheel(centre, axial->mapToGlobal(centre), QPoint(), QPoint(0, 360), Qt::NoButton, Qt::NoModifier,
+                    Qt::NoScrollPhase, false);
+  QApplication::sendEvent(axial, &wheel);
+  EXPECT_EQ(axial->sliceIndex(), axialBefore + 3);
+
+  // Bone iso-surface at 300 HU, in 3-D.
+  window->isoSurfacePanel()->form()->setValue("Value", 300);
+  ASSERT_TRUE(runThroughUi(window->isoSurfacePanel())) << errors.join("\n").toStdString();
+  SceneObject* bone = object("Cranium.inv3 iso 300");
+  ASSERT_NE(bone, nullptr);
+  EXPECT_GT(bone->polyData()->GetNumberOfPolys(), 10000);
+  window->resetCamera();
+  EXPECT_GT(screenshot("cranium-bone"), 0.1);
+}
+
+TEST_F(GuiWorkflow, SkeletonGhostViewSqmAndRig) {
+  open(dataPath("meshes/torus.off"));
+  ASSERT_TRUE(runThroughUi(window->skeletonPanel())) << errors.join("\n").toStdString();
+  SceneObject* skeleton = object("torus.off skeleton");
+  SceneObject* segments = object("torus.off segments");
+  ASSERT_NE(skeleton, nullptr);
+  ASSERT_NE(segments, nullptr);
+  EXPECT_GE(skeleton->polyData()->GetNumberOfPoints(), 4);
+  EXPECT_TRUE(skeleton->interest) << "the skeleton is shown through its mesh";
+  ASSERT_TRUE(skeleton->skinnedMesh);
+  EXPECT_TRUE(segments->polyData()->GetPointData()->GetArray("SkeletonNode"));
+  EXPECT_TRUE(window->logText().contains("Skeleton: done in"));
+
+  // Colour by bone 0's weight; ghost view and cutaway both draw something.
+  EXPECT_TRUE(window->skeletonPanel()->selectBone(skeleton, 0));
+  window->setGhostMode(vtkMedialGhostPass::Ghost);
+  EXPECT_GT(screenshot("torus-ghost"), 0.05);
+  EXPECT_EQ(window->scene()->GetGhostPass()->GetLastInterestCount(), 1);
+  window->setGhostMode(vtkMedialGhostPass::Cutaway);
+  EXPECT_GT(screenshot("torus-cutaway"), 0.05);
+
+  // Rig export (GLB) and Save As of the skeleton (SWC).
+  ASSERT_TRUE(window->objects()->exportRig(skeleton, QString::fromStdString(dir + "/torus-rig.glb")));
+  EXPECT_GT(std::filesystem::file_size(dir + "/torus-rig.glb"), 1000u);
+  ASSERT_TRUE(window->objects()->save(skeleton, QString::fromStdString(dir + "/torus-skeleton.vtp")));
+  // SWC holds trees only: the torus's cycle is refused with a message.
+  EXPECT_FALSE(window->objects()->save(skeleton, QString::fromStdString(dir + "/torus-skeleton.swc")));
+  ASSERT_EQ(errors.size(), 1);
+  EXPECT_TRUE(errors.first().contains("torus-skeleton.swc")) << errors.first().toStdString();
+  errors.clear();
+
+  // SQM of the computed skeleton; the subdivision slider updates the mesh live.
+  window->sqmPanel()->setInput(skeleton);
+  ASSERT_TRUE(runThroughUi(window->sqmPanel())) << errors.join("\n").toStdString();
+  SceneObject* sqm = object("torus.off skeleton SQM");
+  ASSERT_NE(sqm, nullptr);
+  // Catmull-Clark turns every n-gon into n quads.
+  const vtkIdType corners = sqm->polyData()->GetPolys()->GetNumberOfConnectivityIds();
+  window->sqmPanel()->subdivisionSlider()->setValue(1);
+  ASSERT_TRUE(window->sqmPanel()->isRunning()) << "the slider re-runs the filter";
+  window->sqmPanel()->wait();
+  sqm = object("torus.off skeleton SQM");
+  ASSERT_NE(sqm, nullptr);
+  EXPECT_EQ(sqm->polyData()->GetNumberOfPolys(), corners) << "one Catmull-Clark level: one quad per corner";
+  EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
+}
+
+TEST_F(GuiWorkflow, CenterlineFromClickedSeedAndFlyThrough) {
+  open(dataPath("volumes/tubes/u.nii.gz"));
+  CenterlinePanel* panel = window->centerlinePanel();
+  window->filterTabs()->setCurrentIndex(2);
+  panel->form()->setValue("Selection", 0);  // label 1
+  // Seed: a click in the axial slice view (the centerline tab is showing).
+  SliceView* axial = window->sliceViews()->view(2);
+  QTest::mouseClick(axial, Qt::LeftButton, Qt::NoModifier, axial->rect().center());
+  ASSERT_TRUE(panel->seed().has_value());
+  panel->clearSeed();  // the centre of the U is outside the tube: let P0 be the lowest end
+  ASSERT_TRUE(runThroughUi(panel)) << errors.join("\n").toStdString();
+  // The tube's wall, to fly inside.
+  window->isoSurfacePanel()->form()->setValue("Value", 0.5);
+  ASSERT_TRUE(runThroughUi(window->isoSurfacePanel())) << errors.join("\n").toStdString();
+  SceneObject* line = object("u.nii.gz centerline");
+  ASSERT_NE(line, nullptr);
+  EXPECT_GT(line->polyData()->GetNumberOfPoints(), 20);
+  EXPECT_EQ(panel->profilePoints(), line->polyData()->GetNumberOfPoints());
+
+  // Fly-through: the slider puts the camera on the centerline, looking along it.
+  const FlyThrough& fly = panel->flyThrough();
+  ASSERT_FALSE(fly.empty());
+  panel->setPosition(0.5 * fly.length());
+  vtkCamera* camera = window->scene()->GetRenderer()->GetActiveCamera();
+  const auto eye = fly.eye(0.5 * fly.length());
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(camera->GetPosition()[i], eye[i], 1e-6);
+  EXPECT_DOUBLE_EQ(camera->GetViewAngle(), 80.0);
+  EXPECT_GT(screenshot("u-inside"), 0.3) << "inside the tube the wall fills the view";
+  // Play moves forward; pause stops.
+  panel->play(true);
+  QTest::qWait(300);
+  panel->play(false);
+  EXPECT_GT(panel->position(), 0.5 * fly.length());
+}
+
+TEST_F(GuiWorkflow, SketchFileAndDrawnStrokes) {
+  open(dataPath("sketches/hand.txt"));
+  SketchPanel* panel = window->sketchPanel();
+  ASSERT_TRUE(runThroughUi(panel)) << errors.join("\n").toStdString();
+  SceneObject* skeleton = object("hand.txt skeleton");
+  ASSERT_NE(skeleton, nullptr);
+  ASSERT_NE(object("hand.txt mesh"), nullptr);
+  const vtkIdType fine = skeleton->polyData()->GetNumberOfPoints();
+  // A much larger pruning threshold removes branches, live.
+  panel->thresholdSlider(2)->setValue(300);
+  panel->wait();
+  skeleton = object("hand.txt skeleton");
+  ASSERT_NE(skeleton, nullptr);
+  EXPECT_LT(skeleton->polyData()->GetNumberOfPoints(), fine);
+
+  // Drawing: a left drag in the 3-D view draws a closed stroke; skeleton and mesh appear.
+  panel->setDrawing(true);
+  VtkView* view = window->view();
+  const QPoint centre = view->rect().center();
+  QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(150, 0));
+  for (int step = 1; step < 48; ++step) {
+    const double angle = 2 * M_PI * step / 48;
+    const QPoint at = centre + QPoint(static_cast<int>(150 * std::cos(angle)), static_cast<int>(60 * std::sin(angle)));
+    QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(view, &move);
+  }
+  QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(150, -5));
+  ASSERT_NE(object("drawn sketch"), nullptr);
+  panel->wait();
+  SceneObject* drawn = object("drawn sketch skeleton");
+  ASSERT_NE(drawn, nullptr) << errors.join("\n").toStdString();
+  EXPECT_GE(drawn->polyData()->GetNumberOfPoints(), 2);
+  panel->setDrawing(false);
+  EXPECT_GT(screenshot("drawn-sketch"), 0.02);
+}
+
+TEST_F(GuiWorkflow, CancelALongRunAndRecover) {
+  // A dense sphere (~40,000 vertices) keeps the contraction busy for seconds.
+  auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+  sphere->SetThetaResolution(200);
+  sphere->SetPhiResolution(200);
+  sphere->Update();
+  const std::string path = dir + "/dense-sphere.vtp";
+  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+  writer->SetInputData(sphere->GetOutput());
+  writer->SetFileName(path.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  open(path);
+
+  SkeletonPanel* panel = window->skeletonPanel();
+  QTest::mouseClick(panel->findChild<QPushButton*>("run"), Qt::LeftButton);
+  ASSERT_TRUE(panel->isRunning());
+  QTest::qWait(200);
+  QElapsedTimer clock;
+  clock.start();
+  QTest::mouseClick(panel->findChild<QPushButton*>("cancel"), Qt::LeftButton);
+  panel->wait();
+  EXPECT_LT(clock.elapsed(), 15000) << "cancel took too long";
+  EXPECT_FALSE(panel->lastRunSucceeded());
+  EXPECT_TRUE(window->logText().contains("Skeleton: cancelled"));
+  EXPECT_TRUE(errors.isEmpty()) << "a cancel is not an error: " << errors.join("\n").toStdString();
+  EXPECT_EQ(window->objectCount(), 1);
+  // The window still works: the Run button is back and a small mesh runs to the end.
+  EXPECT_TRUE(panel->findChild<QPushButton*>("run")->isEnabled());
+  open(dataPath("meshes/capsule.vtp"));
+  ASSERT_TRUE(runThroughUi(panel)) << errors.join("\n").toStdString();
+  EXPECT_NE(object("capsule.vtp skeleton"), nullptr);
+}
+
+TEST_F(GuiWorkflow, CorruptFilesGiveAnErrorAndTheSessionGoesOn) {
+  for (const char* name : {"corrupt.vtp", "corrupt.nii.gz", "corrupt.txt"}) {
+    std::ofstream(dir + "/" + name) << "this is not a " << name << " file\n";
+    errors.clear();
+    EXPECT_FALSE(window->openFile(QString::fromStdString(dir + "/" + name)));
+    ASSERT_EQ(errors.size(), 1) << name;
+    EXPECT_TRUE(errors.first().contains(name)) << errors.first().toStdString();
+  }
+  EXPECT_EQ(window->objectCount(), 0);
+  errors.clear();
+  open(dataPath("meshes/capsule.vtp"));
+  EXPECT_GT(screenshot("after-corrupt"), 0.03);
+  // A filter without input says so instead of running.
+  EXPECT_FALSE(window->centerlinePanel()->run());
+  EXPECT_EQ(errors.size(), 1);
+}
+
+TEST_F(GuiWorkflow, DeletingAnObjectUpdatesListAndPanels) {
+  open(dataPath("skeletons/figure.vtp"));
+  open(dataPath("volumes/tubes/u.nii.gz"));
+  EXPECT_NE(window->sqmPanel()->input(), nullptr);
+  window->objects()->remove(window->objects()->at(1));
+  EXPECT_FALSE(window->sliceViews()->isVisible()) << "no volume left";
+  window->objects()->remove(window->objects()->at(0));
+  EXPECT_EQ(window->sqmPanel()->input(), nullptr);
+  EXPECT_FALSE(window->sqmPanel()->run());
+}
