@@ -49,6 +49,9 @@ FilterPanel::FilterPanel(const QString& title, SceneObject::Kind inputKind, std:
   connect(cancel_, &QPushButton::clicked, this, &FilterPanel::cancel);
   connect(&runner_, &FilterRunner::progressed, progress_, &QProgressBar::setValue);
   connect(&runner_, &FilterRunner::finished, this, &FilterPanel::onFinished);
+  connect(inputs_, &QComboBox::currentIndexChanged, this, [this] {
+    if (SceneObject* object = input()) inputChanged(object);
+  });
   connect(objects_, &ObjectList::objectsChanged, this, &FilterPanel::refreshInputs);
   connect(objects_, &ObjectList::currentChanged, this, [this](SceneObject* object) {
     if (object && object->kind == inputKind_ && !isRunning()) setInput(object);
@@ -63,6 +66,7 @@ void FilterPanel::refreshInputs() {
   for (SceneObject* object : objects_->ofKind(inputKind_))
     inputs_->addItem(object->name, QVariant::fromValue(static_cast<void*>(object)));
   if (selected) setInput(selected);
+  if (input() != selected && input()) inputChanged(input());  // signals were blocked
   run_->setEnabled(inputs_->count() > 0 && !isRunning());
 }
 

@@ -50,6 +50,8 @@ class FilterPanel : public QWidget {
   virtual vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) = 0;
   // Puts the outputs of a successful run into the object list.
   virtual void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) = 0;
+  // Called when another input is selected (e.g. to suggest parameter values that suit it).
+  virtual void inputChanged(SceneObject* /*input*/) {}
   // Extra controls go below the Run/Cancel row.
   QVBoxLayout* extraLayout() const { return extra_; }
   ObjectList* objects() const { return objects_; }

@@ -29,6 +29,14 @@ std::vector<Parameter> isoParameters() {
 IsoSurfacePanel::IsoSurfacePanel(ObjectList* objects, QWidget* parent)
     : FilterPanel("Iso-surface", SceneObject::Kind::Volume, isoParameters(), objects, parent) {}
 
+void IsoSurfacePanel::inputChanged(SceneObject* input) {
+  auto* image = vtkImageData::SafeDownCast(input->data);
+  if (!image || !image->GetPointData()->GetScalars()) return;
+  double range[2];
+  image->GetPointData()->GetScalars()->GetRange(range, 0);
+  form()->setValue("Value", range[0] < -500 && range[1] > 300 ? 300.0 : 0.5 * (range[0] + range[1]));
+}
+
 vtkSmartPointer<vtkAlgorithm> IsoSurfacePanel::makeFilter(SceneObject* input, QString& error) {
   auto* image = vtkImageData::SafeDownCast(input->data);
   double range[2];
@@ -72,6 +80,7 @@ void IsoSurfacePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
   const QString name = QString("%1 iso %2").arg(input->name).arg(form()->value("Value"));
   if (SceneObject* previous = objects()->findByName(name)) objects()->remove(previous);
   objects()->add(name, mesh);
+  objects()->setVisible(input, false);  // the volume's opaque 3-D slices would hide the surface
   emit message(QString("Iso-surface: %1 triangles").arg(mesh->GetNumberOfPolys()));
 }
 

@@ -15,6 +15,8 @@ class IsoSurfacePanel : public FilterPanel {
  protected:
   vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) override;
   void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) override;
+  // CT (values below -500 HU): bone at 300 HU; anything else (labels, masks): the middle of its range.
+  void inputChanged(SceneObject* input) override;
 };
 
 }  // namespace medial::gui

@@ -180,6 +180,12 @@ void MainWindow::buildPanels() {
   addDockWidget(Qt::RightDockWidgetArea, dock);
 }
 
+FilterPanel* MainWindow::panel(const QString& name) const {
+  for (FilterPanel* panel : panels_)
+    if (panel->title().compare(name, Qt::CaseInsensitive) == 0) return panel;
+  return nullptr;
+}
+
 void MainWindow::buildGhostToolBar() {
   QToolBar* bar = addToolBar("Ghost view");
   bar->setObjectName("ghostBar");

@@ -56,6 +56,8 @@ class MainWindow : public QMainWindow {
   SketchPanel* sketchPanel() const { return sketch_; }
   IsoSurfacePanel* isoSurfacePanel() const { return iso_; }
   QTabWidget* filterTabs() const { return tabs_; }
+  // The filter panel titled `name` (case-insensitive: skeleton, sqm, centerline, sketch, iso-surface).
+  FilterPanel* panel(const QString& name) const;
   QString logText() const;
   // Ghost view: 0 off, 1 ghost, 2 cutaway.
   void setGhostMode(int mode);

@@ -114,8 +114,8 @@ void SliceViews::updateLabel() {
                       .arg(cursor_[1], 0, 'f', 1)
                       .arg(cursor_[2], 0, 'f', 1)
                       .arg(value.isEmpty() ? QString("-") : value)
-                      .arg(window_, 0, 'f', 0)
-                      .arg(level_, 0, 'f', 0));
+                      .arg(window_, 0, 'g', 4)
+                      .arg(level_, 0, 'g', 4));
 }
 
 }  // namespace medial::gui

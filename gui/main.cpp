@@ -3,11 +3,13 @@
 //   medial-gui --screenshot IMAGE.png [FILE...]  open, render, save the 3-D view (--window: the whole
 //                                                window), quit (for tests);
 //                                                errors go to stderr and the exit code is 1
+#include "FilterPanel.h"
 #include "MainWindow.h"
 #include "VtkView.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QTabWidget>
 #include <QTimer>
 
 #include <cstdio>
@@ -25,6 +27,10 @@ int main(int argc, char** argv) {
   QCommandLineOption screenshot("screenshot", "Open FILEs, save the 3-D view to IMAGE and quit.", "IMAGE");
   QCommandLineOption size("size", "Window size for --screenshot (default 1024x768).", "WxH", "1024x768");
   QCommandLineOption whole("window", "With --screenshot: the whole window, not only the 3-D view.");
+  QCommandLineOption run("run", "Run a filter panel with its defaults on the last suitable object, before the "
+                                "screenshot (repeatable, in order): skeleton, sqm, centerline, sketch, iso-surface.",
+                         "FILTER");
+  parser.addOption(run);
   parser.addOption(screenshot);
   parser.addOption(whole);
   parser.addOption(size);
@@ -48,6 +54,28 @@ int main(int argc, char** argv) {
 
   if (failed) return 1;
   QTimer::singleShot(0, &window, [&] {
+    for (const QString& name : parser.values(run)) {
+      medial::gui::FilterPanel* panel = window.panel(name);
+      if (!panel) {
+        std::fprintf(stderr, "medial-gui: --run %s: no such filter\n", name.toLocal8Bit().constData());
+        failed = true;
+        break;
+      }
+      for (int tab = 0; tab < window.filterTabs()->count(); ++tab)  // show the panel that runs
+        if (window.filterTabs()->widget(tab)->isAncestorOf(panel)) window.filterTabs()->setCurrentIndex(tab);
+      if (!panel->run()) break;  // the error handler has reported why
+      panel->wait();
+      if (!panel->lastRunSucceeded()) {
+        std::fprintf(stderr, "medial-gui: --run %s failed; log:\n%s\n", name.toLocal8Bit().constData(),
+                     window.logText().toLocal8Bit().constData());
+        failed = true;
+        break;
+      }
+    }
+    if (failed) {
+      app.quit();
+      return;
+    }
     window.resetCamera();
     failed = parser.isSet(whole) ? !window.grab().save(parser.value(screenshot))
                                  : !window.saveScreenshot(parser.value(screenshot));
