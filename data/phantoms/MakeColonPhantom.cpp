@@ -1,0 +1,187 @@
+// medial-make-colon-phantom OUTPUT_DIR: a CT-like colon phantom written as a DICOM series (one CT slice
+// per file, int16 Hounsfield units), for the TSK centerline and the GUI's virtual colonoscopy.
+//
+// An elliptic body (soft tissue 40 HU, a 10 mm fat layer at -100 HU) in air (-1000 HU) holds an
+// air-filled colon (-1000 HU) that runs from the rectum up the sigmoid and the descending colon, across the
+// transverse colon and down the ascending colon to the cecum, 8 to 12 mm in radius with a haustral fold
+// every 30 mm; Gaussian noise (sigma 15 HU, fixed seed) over everything. 160 x 128 x 150 voxels of
+// 0.9 x 0.9 x 1.25 mm. The true axis goes to OUTPUT_DIR/axis.txt ("x y z radius" in mm per line), so a
+// test can measure a centerline against it. Threshold -1024..-600 HU with the border air dropped gives the
+// colon alone (as in the TSK paper's CT data).
+#include <itkGDCMImageIO.h>
+#include <itkImage.h>
+#include <itkImageSeriesWriter.h>
+#include <itkMetaDataObject.h>
+#include <itkNumericSeriesFileNames.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Point = std::array<double, 3>;
+constexpr int kSize[3] = {160, 128, 150};
+constexpr double kSpacing[3] = {0.9, 0.9, 1.25};
+
+// Control points of the colon's axis in mm, rectum first.
+// Control points of the colon's axis in mm, rectum first; non-adjacent loops keep >= 13 mm of tissue
+// between their walls, so that the air forms one tube.
+const std::vector<Point> kControl = {{72, 75, 14},  {72, 78, 32},  {60, 70, 48},   {75, 55, 62},
+                                     {100, 62, 50}, {112, 62, 75}, {110, 60, 150}, {80, 45, 168},
+                                     {48, 45, 152}, {32, 60, 160}, {30, 62, 110},  {34, 62, 72}};
+
+Point catmullRom(const Point& p0, const Point& p1, const Point& p2, const Point& p3, double t) {
+  Point p;
+  for (int c = 0; c < 3; ++c)
+    p[c] = 0.5 * ((2 * p1[c]) + (-p0[c] + p2[c]) * t + (2 * p0[c] - 5 * p1[c] + 4 * p2[c] - p3[c]) * t * t +
+                  (-p0[c] + 3 * p1[c] - 3 * p2[c] + p3[c]) * t * t * t);
+  return p;
+}
+
+struct AxisPoint {
+  Point p;
+  double radius;
+};
+
+std::vector<AxisPoint> colonAxis() {
+  std::vector<Point> points;
+  const size_t n = kControl.size();
+  for (size_t i = 0; i + 1 < n; ++i)
+    for (int k = 0; k < 200; ++k)
+      points.push_back(catmullRom(kControl[i > 0 ? i - 1 : 0], kControl[i], kControl[i + 1],
+                                  kControl[std::min(i + 2, n - 1)], k / 200.0));
+  points.push_back(kControl.back());
+  std::vector<double> arc(points.size(), 0.0);
+  for (size_t i = 1; i < points.size(); ++i)
+    arc[i] = arc[i - 1] + std::hypot(points[i][0] - points[i - 1][0], points[i][1] - points[i - 1][1],
+                                     points[i][2] - points[i - 1][2]);
+  std::vector<AxisPoint> axis;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const double s = arc[i] / arc.back();
+    const double base = 8.0 + 4.0 * s;  // rectum 8 mm ... cecum 12 mm
+    const double fold = std::pow(std::max(0.0, std::cos(2 * M_PI * arc[i] / 30.0)), 8);  // haustra
+    axis.push_back({points[i], base * (1.0 - 0.18 * fold)});
+  }
+  return axis;
+}
+
+// A DICOM UID under the 2.25 root (a number from a fixed-seed generator: the phantom is reproducible).
+std::string makeUid(std::mt19937_64& random) { return "2.25." + std::to_string(random() >> 1); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: medial-make-colon-phantom OUTPUT_DIR\n");
+    return 2;
+  }
+  const std::filesystem::path out = argv[1];
+  std::filesystem::create_directories(out);
+
+  // Air inside the colon: balls along the axis.
+  const std::vector<AxisPoint> axis = colonAxis();
+  std::vector<unsigned char> colon(size_t(kSize[0]) * kSize[1] * kSize[2], 0);
+  for (const AxisPoint& a : axis) {
+    int lo[3], hi[3];
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::max(0, static_cast<int>(std::floor((a.p[c] - a.radius) / kSpacing[c])));
+      hi[c] = std::min(kSize[c] - 1, static_cast<int>(std::ceil((a.p[c] + a.radius) / kSpacing[c])));
+    }
+    for (int z = lo[2]; z <= hi[2]; ++z)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int x = lo[0]; x <= hi[0]; ++x) {
+          const double dx = x * kSpacing[0] - a.p[0], dy = y * kSpacing[1] - a.p[1], dz = z * kSpacing[2] - a.p[2];
+          if (dx * dx + dy * dy + dz * dz <= a.radius * a.radius) colon[(size_t(z) * kSize[1] + y) * kSize[0] + x] = 1;
+        }
+  }
+
+  using Volume = itk::Image<int16_t, 3>;
+  auto volume = Volume::New();
+  Volume::RegionType region;
+  region.SetSize({static_cast<itk::SizeValueType>(kSize[0]), static_cast<itk::SizeValueType>(kSize[1]),
+                  static_cast<itk::SizeValueType>(kSize[2])});
+  volume->SetRegions(region);
+  volume->SetSpacing(kSpacing);
+  volume->Allocate();
+  std::mt19937 random(20081);
+  std::normal_distribution<double> noise(0.0, 15.0);
+  const double cx = 0.5 * (kSize[0] - 1) * kSpacing[0], cy = 0.5 * (kSize[1] - 1) * kSpacing[1];
+  const double ax = 66.0, ay = 52.0;  // body semi-axes (mm)
+  for (int z = 0; z < kSize[2]; ++z)
+    for (int y = 0; y < kSize[1]; ++y)
+      for (int x = 0; x < kSize[0]; ++x) {
+        const double u = (x * kSpacing[0] - cx) / ax, v = (y * kSpacing[1] - cy) / ay;
+        const double rho = std::sqrt(u * u + v * v);  // 1 on the skin
+        double hu = rho > 1.0 ? -1000.0 : rho > 1.0 - 10.0 / ay ? -100.0 : 40.0;
+        if (colon[(size_t(z) * kSize[1] + y) * kSize[0] + x]) hu = -1000.0;
+        hu = std::clamp(hu + noise(random), -1024.0, 3071.0);
+        volume->SetPixel({x, y, z}, static_cast<int16_t>(std::lround(hu)));
+      }
+
+  // One DICOM file per axial slice; position, orientation and spacing per slice so that readers sort and
+  // place them (GDCMSeriesFileNames orders by Image Position Patient).
+  auto io = itk::GDCMImageIO::New();
+  std::mt19937_64 uids(2008);
+  const std::string study = makeUid(uids), series = makeUid(uids), frame = makeUid(uids);
+  using Slice = itk::Image<int16_t, 2>;
+  using Writer = itk::ImageSeriesWriter<Volume, Slice>;
+  Writer::DictionaryArrayType dictionaries;
+  std::vector<std::unique_ptr<itk::MetaDataDictionary>> owned;
+  for (int z = 0; z < kSize[2]; ++z) {
+    owned.push_back(std::make_unique<itk::MetaDataDictionary>());
+    itk::MetaDataDictionary& d = *owned.back();
+    auto set = [&d](const char* tag, const std::string& value) { itk::EncapsulateMetaData<std::string>(d, tag, value); };
+    char text[128];
+    set("0008|0060", "CT");
+    set("0010|0010", "Colon^Phantom");
+    set("0010|0020", "MEDIAL-COLON-1");
+    set("0008|103e", "Medial CT colon phantom");
+    set("0020|000d", study);
+    set("0020|000e", series);
+    set("0020|0052", frame);
+    set("0008|0018", makeUid(uids));
+    std::snprintf(text, sizeof text, "%d", z + 1);
+    set("0020|0013", text);
+    std::snprintf(text, sizeof text, "0\\0\\%.4f", z * kSpacing[2]);
+    set("0020|0032", text);
+    set("0020|0037", "1\\0\\0\\0\\1\\0");
+    std::snprintf(text, sizeof text, "%.4f\\%.4f", kSpacing[1], kSpacing[0]);
+    set("0028|0030", text);
+    std::snprintf(text, sizeof text, "%.4f", kSpacing[2]);
+    set("0018|0050", text);
+    set("0028|0004", "MONOCHROME2");
+    set("0028|1052", "0");
+    set("0028|1053", "1");
+    dictionaries.push_back(&d);
+  }
+  auto names = itk::NumericSeriesFileNames::New();
+  names->SetSeriesFormat((out / "slice%03d.dcm").string());
+  names->SetStartIndex(1);
+  names->SetEndIndex(kSize[2]);
+  names->SetIncrementIndex(1);
+  auto writer = Writer::New();
+  writer->SetInput(volume);
+  writer->SetImageIO(io);
+  writer->SetFileNames(names->GetFileNames());
+  writer->SetMetaDataDictionaryArray(&dictionaries);
+  try {
+    writer->Update();
+  } catch (const itk::ExceptionObject& e) {
+    std::fprintf(stderr, "medial-make-colon-phantom: %s\n", e.GetDescription());
+    return 1;
+  }
+
+  std::ofstream axisFile(out / "axis.txt");
+  axisFile << "# true colon axis, rectum first: x y z radius (mm)\n";
+  for (const AxisPoint& a : axis) axisFile << a.p[0] << ' ' << a.p[1] << ' ' << a.p[2] << ' ' << a.radius << '\n';
+  std::printf("wrote %d DICOM slices and axis.txt to %s\n", kSize[2], out.string().c_str());
+  return 0;
+}
