@@ -35,8 +35,11 @@ bool FilterRunner::start(vtkAlgorithm* filter, const QString& label) {
     // Progress comes on this thread: forward whole percents only, queued to the UI thread.
     auto progress = vtkSmartPointer<vtkCallbackCommand>::New();
     progress->SetClientData(this);
-    progress->SetCallback([](vtkObject*, unsigned long, void* self, void* fraction) {
+    progress->SetCallback([](vtkObject* caller, unsigned long, void* self, void* fraction) {
       auto* runner = static_cast<FilterRunner*>(self);
+      // The abort flag is set here, on the worker thread: setting it from the UI thread would call
+      // Modified() and invoke observers while this thread adds, calls and removes its own.
+      if (runner->cancelled_) static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
       const int percent = static_cast<int>(*static_cast<double*>(fraction) * 100.0);
       if (runner->lastPercent_.exchange(percent) != percent) emit runner->progressed(percent);
     });
@@ -59,8 +62,7 @@ bool FilterRunner::start(vtkAlgorithm* filter, const QString& label) {
 
 void FilterRunner::cancel() {
   if (!thread_) return;
-  cancelled_ = true;
-  filter_->SetAbortExecute(1);
+  cancelled_ = true;  // the worker sets the filter's AbortExecute at its next progress report
 }
 
 void FilterRunner::wait() {

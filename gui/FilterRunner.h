@@ -1,6 +1,6 @@
 // FilterRunner: updates a VTK filter on a worker thread so the window stays responsive. Progress events
-// (fired on the worker) reach the UI thread as queued signals; cancel() sets the filter's AbortExecute,
-// which our filters poll between stages and iterations.
+// (fired on the worker) reach the UI thread as queued signals; cancel() makes the worker set the filter's
+// AbortExecute at its next progress report, which our filters poll between stages and iterations.
 #pragma once
 
 #include <QObject>

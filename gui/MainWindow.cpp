@@ -31,6 +31,7 @@
 #include <QProgressBar>
 #include <QScrollArea>
 #include <QSettings>
+#include <QShowEvent>
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
@@ -128,6 +129,14 @@ MainWindow::~MainWindow() {
 void MainWindow::closeEvent(QCloseEvent* event) {
   for (FilterPanel* panel : panels_) panel->cancel();
   QMainWindow::closeEvent(event);
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
+  // Files opened before the window was shown were framed for a guessed aspect ratio: frame them again
+  // for the view's real size.
+  if (!shownOnce_ && objectCount() > 0) resetCamera();
+  shownOnce_ = true;
 }
 
 void MainWindow::buildPanels() {

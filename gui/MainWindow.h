@@ -71,6 +71,7 @@ class MainWindow : public QMainWindow {
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
   void closeEvent(QCloseEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
  private:
   void buildMenus();
@@ -113,6 +114,7 @@ class MainWindow : public QMainWindow {
   std::vector<FilterPanel*> panels_;
   vtkSmartPointer<vtkMedialScene> scene_;
   SceneObject* shownVolume_ = nullptr;
+  bool shownOnce_ = false;
   std::function<void(const QString&, const QString&)> errorHandler_;
 };
 
