@@ -374,19 +374,27 @@ void MainWindow::onWindowLevelChanged(double window, double level) {
   render();
 }
 
-void MainWindow::onViewClicked(const QPointF& position) {
+void MainWindow::onViewClicked(const QPointF& position, Qt::KeyboardModifiers modifiers) {
   // A click selects the object under the pointer; on a skeleton with skinning weights it colours the mesh
-  // by the nearest bone's weight; Shift+click toggles the object of interest (ghost view).
+  // by the nearest bone's weight; Shift+click toggles the object of interest (ghost view). Skeletons are
+  // tried first: they usually lie inside the mesh that a plain pick would return.
+  const qreal ratio = view_->devicePixelRatioF();
+  const double x = position.x() * ratio, y = (view_->height() - position.y()) * ratio;
   auto picker = vtkSmartPointer<vtkCellPicker>::New();
   picker->SetTolerance(0.002);
-  const qreal ratio = view_->devicePixelRatioF();
-  if (!picker->Pick(position.x() * ratio, (view_->height() - position.y()) * ratio, 0, scene_->GetRenderer())) return;
+  picker->PickFromListOn();
+  for (SceneObject* skeleton : objects_->ofKind(SceneObject::Kind::Skeleton))
+    if (skeleton->prop->GetVisibility()) picker->AddPickList(skeleton->prop);
+  if (!picker->Pick(x, y, 0, scene_->GetRenderer())) {
+    picker->PickFromListOff();
+    if (!picker->Pick(x, y, 0, scene_->GetRenderer())) return;
+  }
   vtkProp3D* prop = picker->GetProp3D();
   for (int row = 0; row < objects_->count(); ++row) {
     SceneObject* object = objects_->at(row);
     if (object->prop != prop) continue;
     objects_->setCurrent(object);
-    if (QApplication::keyboardModifiers() & Qt::ShiftModifier) {
+    if (modifiers & Qt::ShiftModifier) {
       objects_->setInterest(object, !object->interest);
       log(object->name + (object->interest ? ": object of interest" : ": context"));
     } else if (object->kind == SceneObject::Kind::Skeleton && object->skinnedMesh) {

@@ -88,7 +88,7 @@ class MainWindow : public QMainWindow {
   void onObjectsChanged();
   void onCursorChanged(const SliceViews::Point& cursor);
   void onWindowLevelChanged(double window, double level);
-  void onViewClicked(const QPointF& position);
+  void onViewClicked(const QPointF& position, Qt::KeyboardModifiers modifiers);
   void onStrokeDrawn(const QVector<QPointF>& positions);
   void onFlyTo(const std::array<double, 3>& eye, const std::array<double, 3>& focal, const std::array<double, 3>& up);
   void showVolume(SceneObject* volume);

@@ -193,7 +193,7 @@ void VtkView::mouseReleaseEvent(QMouseEvent* event) {
     return;
   }
   if (event->button() == Qt::LeftButton && (event->position() - pressPosition_).manhattanLength() < 4)
-    emit clicked(event->position());
+    emit clicked(event->position(), event->modifiers());
   setEventPosition(event->position(), event->modifiers());
   switch (event->button()) {
     case Qt::LeftButton: interactor_->InvokeEvent(vtkCommand::LeftButtonReleaseEvent); break;

@@ -39,7 +39,7 @@ class VtkView : public QOpenGLWidget {
   // Key R: the owner resets the camera its own way.
   void resetCameraRequested();
   // A left click without a drag, at a widget position (picking).
-  void clicked(const QPointF& position);
+  void clicked(const QPointF& position, Qt::KeyboardModifiers modifiers);
   // A stroke drawn in drawing mode, in widget positions.
   void strokeDrawn(const QVector<QPointF>& positions);
 

@@ -398,3 +398,40 @@ TEST_F(GuiWorkflow, ColonPhantomDicomThresholdSeedCenterlineFlyThrough) {
   EXPECT_GT(screenshot("colon-inside"), 0.1) << "inside the colon its wall fills the view";
   EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
 }
+
+TEST_F(GuiWorkflow, ClicksInThe3dViewPickBonesAndObjectsOfInterest) {
+  open(dataPath("meshes/capsule.vtp"));
+  ASSERT_TRUE(runThroughUi(window->skeletonPanel())) << errors.join("\n").toStdString();
+  SceneObject* skeleton = object("capsule.vtp skeleton");
+  SceneObject* segments = object("capsule.vtp segments");
+  ASSERT_NE(skeleton, nullptr);
+  ASSERT_NE(segments, nullptr);
+  window->resetCamera();
+  QTest::qWait(50);
+  // Click on the skeleton's first bone (inside the translucent mesh): the mesh shows its weights.
+  vtkPolyData* bones = skeleton->polyData();
+  vtkIdType count;
+  const vtkIdType* ids;
+  bones->GetLines()->InitTraversal();
+  ASSERT_TRUE(bones->GetLines()->GetNextCell(count, ids));
+  double a[3], b[3], middle[3], display[3];
+  bones->GetPoint(ids[0], a);
+  bones->GetPoint(ids[1], b);
+  for (int i = 0; i < 3; ++i) middle[i] = 0.5 * (a[i] + b[i]);
+  vtkRenderer* renderer = window->scene()->GetRenderer();
+  renderer->SetWorldPoint(middle[0], middle[1], middle[2], 1.0);
+  renderer->WorldToDisplay();
+  renderer->GetDisplayPoint(display);
+  VtkView* view = window->view();
+  const qreal ratio = view->devicePixelRatioF();
+  const QPoint at(static_cast<int>(display[0] / ratio), static_cast<int>(view->height() - display[1] / ratio));
+  QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
+  EXPECT_EQ(window->objects()->current(), skeleton) << "the click picks the skeleton inside the mesh";
+  EXPECT_TRUE(window->logText().contains("Mesh coloured by the weight of bone 0")) << window->logText().toStdString();
+  // Shift+click toggles the object of interest.
+  ASSERT_TRUE(skeleton->interest);
+  QTest::mouseClick(view, Qt::LeftButton, Qt::ShiftModifier, at);
+  EXPECT_FALSE(skeleton->interest);
+  QTest::mouseClick(view, Qt::LeftButton, Qt::ShiftModifier, at);
+  EXPECT_TRUE(skeleton->interest);
+}
