@@ -1,4 +1,5 @@
-// `medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] [--fill-holes]`
+// `medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] [--fill-holes]
+//  [--profile PROFILE.csv] [--terrain TERRAIN.png] [--section-spacing K] [--section-rays N]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "Progress.h"
@@ -6,12 +7,15 @@
 #include "RunFilter.h"
 #include "Timings.h"
 #include "WriteOutput.h"
+#include "WriteSections.h"
 
+#include "MedialFileNames.h"
 #include "vtkMedialTskCenterline.h"
 
 #include <vtkImageData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkTable.h>
 
 #include <cstdio>
 
@@ -19,7 +23,8 @@ namespace medial::cli {
 
 int runCenterline(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
-      args, {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--antecedent-width"},
+      args, {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain", "--section-spacing",
+              "--section-rays", "--antecedent-width"},
              {"--fill-holes", "--keep-border-parts", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("centerline needs exactly one VOLUME (file or DICOM folder)");
   const std::string input = parsed.positional[0];
@@ -54,7 +59,21 @@ int runCenterline(const std::vector<std::string>& args) {
     if (!(width > 0)) throw UsageError("--antecedent-width must be positive");
     filter->SetAntecedentWidth(width);
   }
-  if (parsed.has("--profile")) throw Failure("--profile: diameter profiles are not available yet");
+  const std::string profile = parsed.value("--profile"), terrain = parsed.value("--terrain");
+  if (parsed.has("--profile") && profile.empty()) throw UsageError("--profile needs a file name");
+  if (parsed.has("--terrain") && terrain.empty()) throw UsageError("--terrain needs a file name");
+  if (!terrain.empty() && fileExtension(terrain) != ".png") throw UsageError("--terrain must end in .png: " + terrain);
+  filter->SetComputeSections(!profile.empty() || !terrain.empty());
+  if (parsed.has("--section-spacing")) {
+    const double k = parseNumbers(parsed.value("--section-spacing"), 1, "--section-spacing")[0];
+    if (!(k > 0)) throw UsageError("--section-spacing must be positive (mm)");
+    filter->SetSectionSpacing(k);
+  }
+  if (parsed.has("--section-rays")) {
+    const double n = parseNumbers(parsed.value("--section-rays"), 1, "--section-rays")[0];
+    if (!(n >= 4 && n <= 3600 && n == double(int(n)))) throw UsageError("--section-rays must be a whole number in 4..3600");
+    filter->SetSectionRays(int(n));
+  }
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
@@ -68,6 +87,8 @@ int runCenterline(const std::vector<std::string>& args) {
 
   timings.start("write");
   writePolyData(filter->GetOutput(), output);
+  if (!profile.empty()) writeProfileCsv(vtkTable::SafeDownCast(filter->GetOutputDataObject(1)), profile);
+  if (!terrain.empty()) writeTerrainPng(vtkImageData::SafeDownCast(filter->GetOutputDataObject(2)), terrain);
   timings.stop();
   if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
   return kSuccess;

@@ -43,7 +43,7 @@ const std::vector<Command>& commands() {
       {"centerline", "TSK centerline of a tubular structure in a CT or label volume",
        "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z]\n"
        "                         [--fill-holes] [--keep-border-parts] [--antecedent-width W] [--quiet]\n"
-       "                         [--timings]\n\n"
+       "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] [--timings]\n\n"
        "Follows a tube (colon, vessel) in VOLUME (.nii .nii.gz .mha .mhd .nrrd .inr .vti or a DICOM folder) by\n"
        "the TSK method (WSCG 2008): layers and cylindrical clusters from P0, then three Takagi-Sugeno-Kang\n"
        "models. The structure: voxels equal to L, or within LO..HI (parts touching the volume's border are\n"
@@ -55,7 +55,12 @@ const std::vector<Command>& commands() {
        "  --fill-holes              fill cavities of the structure first\n"
        "  --keep-border-parts       keep thresholded parts that touch the volume's border\n"
        "  --antecedent-width W      TSK Gaussian width relative to a cluster (default 0.3)\n"
-       "  --profile PROFILE.csv     diameter profile: not available yet\n"
+       "  --profile PROFILE.csv     perpendicular sections every K mm: arc length, min/max diameter,\n"
+       "                            perimeter (mm) and area (mm2) per row (paper section 4, Fig. 14)\n"
+       "  --terrain TERRAIN.png     the unfolded wall: distance from the axis over angle (x) and arc\n"
+       "                            length (y, from the top), white = far (Fig. 15)\n"
+       "  --section-spacing K       mm between sections (default 1)\n"
+       "  --section-rays N          angles per section (default 72)\n"
        "  --quiet                   no progress line\n"
        "  --timings                 print stage times as JSON on stdout\n",
        runCenterline},

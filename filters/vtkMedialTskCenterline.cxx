@@ -1,6 +1,7 @@
 #include "vtkMedialTskCenterline.h"
 
 #include "centerline/TskAxis.h"
+#include "centerline/TubeSections.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -15,6 +16,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyLine.h>
 #include <vtkSmartPointer.h>
+#include <vtkTable.h>
 
 #include <cmath>
 
@@ -63,6 +65,14 @@ void vtkMedialTskCenterline::SetSeed(double x, double y, double z) {
 void vtkMedialTskCenterline::ClearSeed() {
   this->HasSeed = false;
   this->Modified();
+}
+
+vtkMedialTskCenterline::vtkMedialTskCenterline() { this->SetNumberOfOutputPorts(3); }
+
+int vtkMedialTskCenterline::FillOutputPortInformation(int port, vtkInformation* info) {
+  if (port == 0) return this->Superclass::FillOutputPortInformation(port, info);
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 1 ? "vtkTable" : "vtkImageData");
+  return 1;
 }
 
 int vtkMedialTskCenterline::FillInputPortInformation(int, vtkInformation* info) {
@@ -165,6 +175,46 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   output->SetLines(line);
   output->GetPointData()->AddArray(radius);
   output->GetPointData()->AddArray(arcLength);
+  if (this->ComputeSections && !this->WriteSections(volume, centerline.points, outputVector)) return 0;
   this->UpdateProgress(1.0);
   return 1;
+}
+
+bool vtkMedialTskCenterline::WriteSections(const medial::BinaryVolume& volume,
+                                           const std::vector<Eigen::Vector3d>& axis,
+                                           vtkInformationVector* outputVector) {
+  medial::SectionParameters parameters;
+  parameters.spacing = this->SectionSpacing;
+  parameters.rays = this->SectionRays;
+  const medial::TubeSections sections = medial::tubeSections(volume, axis, parameters, [this](double f) {
+    this->UpdateProgress(0.9 + 0.1 * f);
+    return !this->GetAbortExecute();
+  });
+  if (sections.arcLength.empty()) {
+    if (!this->GetAbortExecute()) vtkErrorMacro(<< "no section could be computed along the centerline");
+    return false;
+  }
+  // Port 1: the profile, one row per section.
+  vtkTable* table = vtkTable::GetData(outputVector, 1);
+  const char* names[5] = {"ArcLength", "MinDiameter", "MaxDiameter", "Perimeter", "Area"};
+  const std::vector<double>* columns[5] = {&sections.arcLength, &sections.minDiameter, &sections.maxDiameter,
+                                           &sections.perimeter, &sections.area};
+  for (int c = 0; c < 5; ++c) {
+    auto column = vtkSmartPointer<vtkDoubleArray>::New();
+    column->SetName(names[c]);
+    for (double v : *columns[c]) column->InsertNextValue(v);
+    table->AddColumn(column);
+  }
+  // Port 2: the unfolded wall, angle along x and arc length along y.
+  vtkImageData* terrain = vtkImageData::GetData(outputVector, 2);
+  const int rays = sections.rays, count = int(sections.arcLength.size());
+  terrain->SetDimensions(rays, count, 1);
+  terrain->SetSpacing(360.0 / rays, this->SectionSpacing, 1.0);
+  auto distance = vtkSmartPointer<vtkDoubleArray>::New();
+  distance->SetName("WallDistance");
+  distance->SetNumberOfValues(vtkIdType(rays) * count);
+  for (int y = 0; y < count; ++y)
+    for (int x = 0; x < rays; ++x) distance->SetValue(vtkIdType(y) * rays + x, sections.wall[size_t(y)][size_t(x)]);
+  terrain->GetPointData()->SetScalars(distance);
+  return true;
 }

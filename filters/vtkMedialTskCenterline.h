@@ -9,6 +9,12 @@
  * FillHoles, its cavities are filled.
  * Output: one polyline from P0 (the seed, or the lowest end of the structure) along the structure, in
  * physical coordinates (mm), with point data `Radius` and `ArcLength` (mm).
+ * With ComputeSections, the virtual-colonoscopy measurements of the paper's section 4 (Figs. 14-15):
+ * output port 1, a vtkTable with one row per perpendicular section every SectionSpacing mm (columns
+ * `ArcLength`, `MinDiameter`, `MaxDiameter`, `Perimeter` in mm, `Area` in mm^2; NaN where a ray found no
+ * wall); output port 2, the unfolded wall ("terrain"): a 2-D vtkImageData of SectionRays x sections with
+ * point data `WallDistance` (mm from the axis), x = angle (spacing 360/rays degrees), y = arc length (spacing
+ * SectionSpacing mm). Implements medial::tubeSections (src/centerline/TubeSections.h).
  * Errors (empty output): not a 3-D image, a label that no voxel has, nothing left after the clean-up, a
  * seed outside the structure. Implements medial::structureTube and medial::tskAxis (src/centerline).
  */
@@ -16,6 +22,14 @@
 
 #include "MedialFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace medial {
+struct BinaryVolume;
+}
 
 class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm {
  public:
@@ -48,18 +62,32 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   vtkSetMacro(SampleSpacing, double);
   vtkGetMacro(SampleSpacing, double);
 
+  /// Perpendicular sections and the unfolded wall on output ports 1 and 2 (default off).
+  vtkSetMacro(ComputeSections, bool);
+  vtkGetMacro(ComputeSections, bool);
+  vtkBooleanMacro(ComputeSections, bool);
+  /// k, the arc length between sections in mm (default 1).
+  vtkSetClampMacro(SectionSpacing, double, 0.01, 1000.0);
+  vtkGetMacro(SectionSpacing, double);
+  /// Rays (angles) per section, even (default 72: every 5 degrees).
+  vtkSetClampMacro(SectionRays, int, 4, 3600);
+  vtkGetMacro(SectionRays, int);
   /// Figures of the last update.
   vtkGetMacro(PrimitiveCenterlinePoints, int);
   vtkGetMacro(StructureVoxels, vtkIdType);
 
  protected:
-  vtkMedialTskCenterline() = default;
+  vtkMedialTskCenterline();
   ~vtkMedialTskCenterline() override = default;
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
  private:
   vtkMedialTskCenterline(const vtkMedialTskCenterline&) = delete;
+  // Fills output ports 1 (profile table) and 2 (unfolded wall); false after an error or an abort.
+  bool WriteSections(const medial::BinaryVolume& volume, const std::vector<Eigen::Vector3d>& axis,
+                     vtkInformationVector* outputVector);
   void operator=(const vtkMedialTskCenterline&) = delete;
 
   enum class Selection { NonZero, Label, Threshold };
@@ -72,6 +100,9 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   double Seed[3] = {0, 0, 0};
   double AntecedentWidth = 0.3;
   double SampleSpacing = 0;
+  bool ComputeSections = false;
+  double SectionSpacing = 1.0;
+  int SectionRays = 72;
   int PrimitiveCenterlinePoints = 0;
   vtkIdType StructureVoxels = 0;
 };

@@ -1,6 +1,7 @@
 #include "CenterlinePanel.h"
 
 #include "ObjectList.h"
+#include "MedialTerrainImage.h"
 #include "vtkMedialTskCenterline.h"
 
 #include <QDoubleSpinBox>
@@ -12,6 +13,7 @@
 #include <QVBoxLayout>
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
+#include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
 
@@ -22,7 +24,9 @@
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
+#include <vtkTable.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace medial::gui {
@@ -43,6 +47,8 @@ std::vector<Parameter> centerlineParameters() {
       P::real("AntecedentWidth", "Antecedent width", 0.3, 0.01, 10, 3,
               "Width of the TSK antecedent Gaussians relative to their cluster (§3, default 0.3)"),
       P::real("SampleSpacing", "Output spacing (mm)", 0, 0, 100, 2, "Distance between output points; 0: smallest voxel"),
+      P::real("SectionSpacing", "Section spacing k (mm)", 1, 0.1, 100, 1,
+              "Perpendicular sections every k mm for the profile and the unfolded wall (§4, Figs. 14-15)"),
   };
 }
 
@@ -60,22 +66,33 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
   extraLayout()->addLayout(seedRow);
   clearSeed();
 
-  diameter_ = new QLineSeries;
-  diameter_->setName("diameter (mm)");
+  minDiameter_ = new QLineSeries;
+  minDiameter_->setName("min diameter");
+  maxDiameter_ = new QLineSeries;
+  maxDiameter_->setName("max diameter");
   marker_ = new QLineSeries;
   marker_->setName("camera");
   auto* chart = new QChart;
-  chart->addSeries(diameter_);
+  chart->addSeries(minDiameter_);
+  chart->addSeries(maxDiameter_);
   chart->addSeries(marker_);
   chart->createDefaultAxes();
-  chart->legend()->hide();
-  chart->setTitle("Diameter along the centerline");
+  chart->legend()->setAlignment(Qt::AlignBottom);
+  chart->legend()->markers(marker_).first()->setVisible(false);
+  chart->setTitle("Section diameters along the centerline");
   chart->setMargins(QMargins(2, 2, 2, 2));
   chart_ = new QChartView(chart, this);
   chart_->setObjectName("profile");
   chart_->setMinimumHeight(180);
   chart_->setRenderHint(QPainter::Antialiasing);
   extraLayout()->addWidget(chart_);
+  terrain_ = new QLabel(this);
+  terrain_->setObjectName("terrain");
+  terrain_->setMinimumHeight(120);
+  terrain_->setToolTip("Unfolded wall: distance from the axis over the arc length (across, as the profile) "
+                       "and the angle (down); dark bands are folds (paper Fig. 15)");
+  extraLayout()->addWidget(new QLabel("Unfolded wall", this));
+  extraLayout()->addWidget(terrain_);
 
   positionSlider_ = new QSlider(Qt::Horizontal, this);
   positionSlider_->setObjectName("flyPosition");
@@ -131,6 +148,8 @@ vtkSmartPointer<vtkAlgorithm> CenterlinePanel::makeFilter(SceneObject* input, QS
   filter->SetAntecedentWidth(form()->value("AntecedentWidth"));
   filter->SetSampleSpacing(form()->value("SampleSpacing"));
   if (seed_) filter->SetSeed((*seed_)[0], (*seed_)[1], (*seed_)[2]);
+  filter->ComputeSectionsOn();
+  filter->SetSectionSpacing(form()->value("SectionSpacing"));
   return filter;
 }
 
@@ -151,7 +170,8 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
   }
   objects()->setInterest(result, true);
   fly_.setPath(line);
-  buildProfile(line);
+  buildProfile(vtkTable::SafeDownCast(tsk->GetOutputDataObject(1)));
+  showTerrain(vtkImageData::SafeDownCast(tsk->GetOutputDataObject(2)));
   for (QWidget* w : {static_cast<QWidget*>(positionSlider_), static_cast<QWidget*>(playButton_)}) w->setEnabled(!fly_.empty());
   emit message(QString("Centerline: %1 points, %2 mm, %3 structure voxels")
                    .arg(line->GetNumberOfPoints())
@@ -159,18 +179,31 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
                    .arg(tsk->GetStructureVoxels()));
 }
 
-void CenterlinePanel::buildProfile(vtkPolyData* centerline) {
-  diameter_->clear();
-  vtkDataArray* radius = centerline->GetPointData()->GetArray("Radius");
-  vtkDataArray* arc = centerline->GetPointData()->GetArray("ArcLength");
+void CenterlinePanel::buildProfile(vtkTable* profile) {
+  // Min and max diameter of the perpendicular sections over the arc length (NaN rows skipped).
+  minDiameter_->clear();
+  maxDiameter_->clear();
   double top = 1;
-  if (radius && arc) {
-    QList<QPointF> points;
-    for (vtkIdType i = 0; i < centerline->GetNumberOfPoints(); ++i) {
-      points.append(QPointF(arc->GetComponent(i, 0), 2 * radius->GetComponent(i, 0)));
-      top = std::max(top, 2 * radius->GetComponent(i, 0));
+  auto* arc = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("ArcLength") : nullptr);
+  auto* low = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("MinDiameter") : nullptr);
+  auto* high = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("MaxDiameter") : nullptr);
+  if (arc && low && high) {
+    QList<QPointF> lows, highs;
+    std::vector<double> maxima;
+    for (vtkIdType i = 0; i < arc->GetNumberOfTuples(); ++i) {
+      const double s = arc->GetComponent(i, 0), a = low->GetComponent(i, 0), b = high->GetComponent(i, 0);
+      if (!std::isfinite(a) || !std::isfinite(b)) continue;
+      lows.append(QPointF(s, a));
+      highs.append(QPointF(s, b));
+      maxima.push_back(b);
     }
-    diameter_->replace(points);
+    minDiameter_->replace(lows);
+    maxDiameter_->replace(highs);
+    // The axis ends at the 95th percentile of the max diameter: oblique cuts at sharp bends spike it.
+    if (!maxima.empty()) {
+      std::sort(maxima.begin(), maxima.end());
+      top = std::max(top, maxima[maxima.size() * 95 / 100]);
+    }
   }
   const auto horizontal = chart_->chart()->axes(Qt::Horizontal), vertical = chart_->chart()->axes(Qt::Vertical);
   if (!horizontal.isEmpty()) {
@@ -184,7 +217,25 @@ void CenterlinePanel::buildProfile(vtkPolyData* centerline) {
   setPosition(0);
 }
 
-int CenterlinePanel::profilePoints() const { return static_cast<int>(diameter_->count()); }
+void CenterlinePanel::showTerrain(vtkImageData* terrain) {
+  // The unfolded wall with the arc length across (as the profile's axis) and the angle down, stretched
+  // to the panel's width.
+  const medial::TerrainGrey grey = medial::terrainGrey(terrain);
+  if (grey.pixels.empty()) {
+    terrain_->clear();
+    terrainImage_ = QImage();
+    return;
+  }
+  QImage image(grey.height, grey.width, QImage::Format_Grayscale8);  // sections x angles
+  for (int angle = 0; angle < grey.width; ++angle) {
+    uchar* row = image.scanLine(angle);
+    for (int section = 0; section < grey.height; ++section) row[section] = grey.pixels[size_t(section) * grey.width + angle];
+  }
+  terrainImage_ = image;
+  terrain_->setPixmap(QPixmap::fromImage(image.scaled(std::max(terrain_->width(), 100), 120)));
+}
+
+int CenterlinePanel::profilePoints() const { return static_cast<int>(maxDiameter_->count()); }
 
 void CenterlinePanel::setPosition(double arcLength) {
   if (fly_.empty()) return;

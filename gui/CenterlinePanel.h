@@ -1,11 +1,13 @@
 // CenterlinePanel: TSK centerline (vtkMedialTskCenterline) from a volume: a label or a threshold, a seed
-// clicked in a slice view; then the diameter profile along the arc length (Qt Charts) and a fly-through
-// (play/pause, speed, position slider) that moves the 3-D camera inside the tube.
+// clicked in a slice view; then the sections' min/max diameter along the arc length (Qt Charts), the
+// unfolded wall, and a fly-through (play/pause, speed, position slider) that moves the 3-D camera inside
+// the tube.
 #pragma once
 
 #include "FilterPanel.h"
 #include "FlyThrough.h"
 
+#include <QImage>
 #include <QTimer>
 
 #include <array>
@@ -17,6 +19,8 @@ class QPushButton;
 class QSlider;
 class QDoubleSpinBox;
 class QLineSeries;
+class vtkImageData;
+class vtkTable;
 
 namespace medial::gui {
 
@@ -38,6 +42,7 @@ class CenterlinePanel : public FilterPanel {
   void play(bool on);
   bool isPlaying() const { return timer_.isActive(); }
   int profilePoints() const;
+  const QImage& terrainImage() const { return terrainImage_; }
 
  signals:
   // The camera should stand at `eye` looking at `focal` (the slice views follow `eye`).
@@ -48,13 +53,17 @@ class CenterlinePanel : public FilterPanel {
   void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) override;
 
  private:
-  void buildProfile(vtkPolyData* centerline);
+  void buildProfile(vtkTable* profile);
+  void showTerrain(vtkImageData* terrain);
   void step();
 
   std::optional<std::array<double, 3>> seed_;
   QLabel* seedLabel_ = nullptr;
   QChartView* chart_ = nullptr;
-  QLineSeries* diameter_ = nullptr;
+  QLineSeries* minDiameter_ = nullptr;
+  QLineSeries* maxDiameter_ = nullptr;
+  QLabel* terrain_ = nullptr;
+  QImage terrainImage_;
   QLineSeries* marker_ = nullptr;
   QSlider* positionSlider_ = nullptr;
   QPushButton* playButton_ = nullptr;

@@ -4,8 +4,10 @@
 #include "TestPaths.h"
 
 #include <vtkImageData.h>
+#include <vtkPNGReader.h>
 #include <vtkSmartPointer.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -203,6 +205,37 @@ TEST(Cli, CenterlineOfAPhantomAndItsErrors) {
                                           "/z.vtp " + bad));
     EXPECT_EQ(usage.exitCode, 2) << bad << ": " << usage.err;
   }
+}
+
+TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
+  // The DICOM colon phantom: sections every 2 mm as CSV, the unfolded wall as PNG.
+  const std::string dir = scratchDir("cli-colon");
+  ASSERT_EQ(std::system((binaryDir() + "/bin/medial-make-colon-phantom " + dir + "/dicom > /dev/null").c_str()), 0);
+  auto r = runCommand(medialCommand("centerline " + dir + "/dicom -o " + dir + "/colon.vtp --threshold -1024:-600 " +
+                                    "--profile " + dir + "/profile.csv --terrain " + dir + "/terrain.png " +
+                                    "--section-spacing 2 --quiet"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream csv(dir + "/profile.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2");
+  int rows = 0, plausible = 0;
+  while (std::getline(csv, row)) {
+    ++rows;
+    double arc, low, high, perimeter, area;
+    if (std::sscanf(row.c_str(), "%lf,%lf,%lf,%lf,%lf", &arc, &low, &high, &perimeter, &area) == 5 && low <= high &&
+        low > 10 && high < 40)  // the phantom's colon is 16 to 24 mm wide, folds 18 % narrower
+      ++plausible;
+  }
+  EXPECT_GT(rows, 170) << "about 383 mm of centerline, a section every 2 mm";
+  EXPECT_GT(plausible, 0.8 * rows);
+  auto terrain = vtkSmartPointer<vtkPNGReader>::New();
+  terrain->SetFileName((dir + "/terrain.png").c_str());
+  terrain->Update();
+  EXPECT_EQ(terrain->GetOutput()->GetDimensions()[0], 72);
+  EXPECT_EQ(terrain->GetOutput()->GetDimensions()[1], rows);
+  auto usage = runCommand(medialCommand("centerline " + dir + "/dicom -o " + dir + "/x.vtp --terrain " + dir + "/t.jpg"));
+  EXPECT_EQ(usage.exitCode, 2) << usage.err;
 }
 
 TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {

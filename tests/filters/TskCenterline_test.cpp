@@ -11,6 +11,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkTable.h>
 
 #include <gtest/gtest.h>
 
@@ -126,3 +127,50 @@ TEST(TskCenterlineFilter, BadInputGivesErrorsAndEmptyOutput) {
 }
 
 }  // namespace
+
+TEST(TskCenterlineFilter, SectionsMeasureTheChangingRadius) {
+  // s-radius: an S whose radius goes from 3 to 7 mm; the sections' mean diameter at both ends.
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  reader->SetFileName(medial::test::dataPath("volumes/tubes/s-radius.nii.gz").c_str());
+  auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  filter->SetInputConnection(reader->GetOutputPort());
+  filter->SetLabel(1);
+  filter->ComputeSectionsOn();
+  filter->SetSectionSpacing(2.0);
+  filter->Update();
+  auto* profile = vtkTable::SafeDownCast(filter->GetOutputDataObject(1));
+  ASSERT_NE(profile, nullptr);
+  ASSERT_GT(profile->GetNumberOfRows(), 20);
+  auto* low = vtkDataArray::SafeDownCast(profile->GetColumnByName("MinDiameter"));
+  auto* high = vtkDataArray::SafeDownCast(profile->GetColumnByName("MaxDiameter"));
+  ASSERT_TRUE(low && high);
+  // The min diameter: where the S bends, the perpendicular plane cuts the tube obliquely and the max
+  // diameter jumps (up to 46 mm here), as it would on a real bend.
+  auto meanDiameter = [&](vtkIdType first, vtkIdType last) {
+    double sum = 0;
+    for (vtkIdType i = first; i < last; ++i) sum += low->GetComponent(i, 0);
+    return sum / double(last - first);
+  };
+  // Skip the rounded end caps: rows 3..7 from each end.
+  const vtkIdType rows = profile->GetNumberOfRows();
+  double a = meanDiameter(3, 8), b = meanDiameter(rows - 8, rows - 3);
+  if (a > b) std::swap(a, b);
+  // 6 to 16 mm in from the ends the radius is about 3.3 and 6.5 mm (it changes linearly along the S).
+  EXPECT_NEAR(a, 6.5, 1.0);
+  EXPECT_NEAR(b, 13.0, 1.0);
+  EXPECT_GT(high->GetComponent(rows / 2, 0), low->GetComponent(rows / 2, 0) - 1e-9);
+  // And the diameter follows the arc length almost linearly (|correlation| > 0.9).
+  double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  for (vtkIdType i = 3; i < rows - 3; ++i) {
+    const double x = double(i), y = low->GetComponent(i, 0);
+    sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y;
+  }
+  const double n = double(rows - 6);
+  const double correlation = (n * sxy - sx * sy) / std::sqrt((n * sxx - sx * sx) * (n * syy - sy * sy));
+  EXPECT_GT(std::fabs(correlation), 0.9);
+  auto* terrain = vtkImageData::SafeDownCast(filter->GetOutputDataObject(2));
+  ASSERT_NE(terrain, nullptr);
+  EXPECT_EQ(terrain->GetDimensions()[0], 72);
+  EXPECT_EQ(terrain->GetDimensions()[1], rows);
+  ASSERT_NE(terrain->GetPointData()->GetArray("WallDistance"), nullptr);
+}

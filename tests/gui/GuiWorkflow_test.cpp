@@ -217,7 +217,10 @@ TEST_F(GuiWorkflow, CenterlineFromClickedSeedAndFlyThrough) {
   SceneObject* line = object("u.nii.gz centerline");
   ASSERT_NE(line, nullptr);
   EXPECT_GT(line->polyData()->GetNumberOfPoints(), 20);
-  EXPECT_EQ(panel->profilePoints(), line->polyData()->GetNumberOfPoints());
+  // Sections every 1 mm along the ~99 mm axis, and the unfolded wall (sections x 72 angles).
+  EXPECT_GT(panel->profilePoints(), 80);
+  EXPECT_GT(panel->terrainImage().width(), 80);
+  EXPECT_EQ(panel->terrainImage().height(), 72);
 
   // Fly-through: the slider puts the camera on the centerline, looking along it.
   const FlyThrough& fly = panel->flyThrough();
@@ -396,6 +399,8 @@ TEST_F(GuiWorkflow, ColonPhantomDicomThresholdSeedCenterlineFlyThrough) {
   panel->setPosition(0.3 * panel->flyThrough().length());
   // Dark, distant wall counts as background for this measure; measured 0.22 when the view is right.
   EXPECT_GT(screenshot("colon-inside"), 0.1) << "inside the colon its wall fills the view";
+  EXPECT_FALSE(panel->terrainImage().isNull());
+  window->grab().save(QString::fromStdString(dir + "/colon-window.png"));  // the whole window, to look at
   EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
 }
 

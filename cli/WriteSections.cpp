@@ -1,0 +1,78 @@
+#include "WriteSections.h"
+
+#include "CommandLine.h"
+
+#include "MedialFileNames.h"
+#include "MedialTerrainImage.h"
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkTable.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cstdio>
+#include <fstream>
+
+namespace medial::cli {
+
+namespace {
+
+void commit(const std::string& temporary, const std::string& path) {
+  std::string error;
+  if (!medial::replaceFile(temporary, path, error)) throw Failure(path + ": " + error);
+}
+
+}  // namespace
+
+void writeProfileCsv(vtkTable* profile, const std::string& path) {
+  const char* columns[5] = {"ArcLength", "MinDiameter", "MaxDiameter", "Perimeter", "Area"};
+  vtkDataArray* arrays[5];
+  for (int c = 0; c < 5; ++c) {
+    arrays[c] = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName(columns[c]) : nullptr);
+    if (!arrays[c]) throw Failure(path + ": the centerline filter gave no profile");
+  }
+  const std::string temporary = medial::temporarySiblingName(path);
+  {
+    std::ofstream out(temporary);
+    if (!out) throw Failure(path + ": cannot create the file");
+    out << "arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2\n";
+    char line[256];
+    for (vtkIdType row = 0; row < arrays[0]->GetNumberOfTuples(); ++row) {
+      std::snprintf(line, sizeof line, "%.3f,%.3f,%.3f,%.3f,%.3f\n", arrays[0]->GetComponent(row, 0),
+                    arrays[1]->GetComponent(row, 0), arrays[2]->GetComponent(row, 0), arrays[3]->GetComponent(row, 0),
+                    arrays[4]->GetComponent(row, 0));
+      out << line;  // NaN (no wall on some ray) is written as "nan"
+    }
+    if (!out.flush()) throw Failure(path + ": cannot write the file");
+  }
+  commit(temporary, path);
+}
+
+void writeTerrainPng(vtkImageData* terrain, const std::string& path) {
+  const medial::TerrainGrey grey = medial::terrainGrey(terrain);
+  if (grey.pixels.empty()) throw Failure(path + ": no wall was found along the centerline");
+  // PNG rows go top-down and VTK's y goes up: flip, so that the start of the centerline is the top row.
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(grey.width, grey.height, 1);
+  auto pixels = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  pixels->SetNumberOfValues(vtkIdType(grey.width) * grey.height);
+  for (int y = 0; y < grey.height; ++y)
+    for (int x = 0; x < grey.width; ++x)
+      pixels->SetValue(vtkIdType(grey.height - 1 - y) * grey.width + x, grey.pixels[size_t(y) * grey.width + x]);
+  image->GetPointData()->SetScalars(pixels);
+  const std::string temporary = medial::temporarySiblingName(path);
+  auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+  writer->SetInputData(image);
+  writer->SetFileName(temporary.c_str());
+  writer->Write();
+  if (writer->GetErrorCode() != 0) {
+    std::remove(temporary.c_str());
+    throw Failure(path + ": cannot write the image");
+  }
+  commit(temporary, path);
+}
+
+}  // namespace medial::cli

@@ -1,0 +1,19 @@
+// Writing the TSK filter's sections: the profile table as CSV and the unfolded wall as a PNG.
+#pragma once
+
+#include <string>
+
+class vtkImageData;
+class vtkTable;
+
+namespace medial::cli {
+
+// CSV with a header (arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2), one row per
+// section, atomically; throws Failure when it cannot be written.
+void writeProfileCsv(vtkTable* profile, const std::string& path);
+
+// The `WallDistance` image as an 8-bit greyscale PNG (medial::terrainGrey; rows are arc length from the
+// top, columns the angle), atomically; throws Failure on error.
+void writeTerrainPng(vtkImageData* terrain, const std::string& path);
+
+}  // namespace medial::cli

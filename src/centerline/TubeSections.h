@@ -1,0 +1,40 @@
+// TubeSections: perpendicular sections of a segmented tube along its centerline, the measurements of the
+// TSK paper's section 4 (Fig. 14: sections along the axis, diameter and perimeter evolution) and its
+// "terrain" view of the inner wall (Fig. 15): at every k mm of arc length, rays in the plane
+// perpendicular to the axis find the wall (where the structure's mask, trilinearly interpolated, drops
+// below 1/2); each section gives min/max diameter, perimeter and area, and the wall distances over arc
+// length x angle form the unfolded wall image.
+#pragma once
+
+#include "BinaryVolume.h"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <vector>
+
+namespace medial {
+
+struct SectionParameters {
+  double spacing = 1.0;  // k: mm of arc length between sections
+  int rays = 72;         // angles per section (even; every 5 degrees by default)
+  double maxRadius = 0;  // farthest wall searched (mm); 0: 100 x the smallest voxel spacing
+};
+
+struct TubeSections {
+  int rays = 0;
+  std::vector<double> arcLength;              // mm, per section
+  std::vector<Eigen::Vector3d> center;        // on the axis
+  std::vector<Eigen::Vector3d> tangent;       // unit, along the axis
+  std::vector<Eigen::Vector3d> normal;        // unit, angle 0 of the rays (transported along the axis)
+  std::vector<std::vector<double>> wall;      // per section, per ray: distance axis-wall (mm); NaN: none
+  std::vector<double> minDiameter, maxDiameter, perimeter, area;  // mm, mm, mm, mm^2 (NaN if a ray failed)
+};
+
+// Sections of `volume`'s structure along the polyline `axis` (physical mm, at least two distinct points).
+// `keepGoing(fraction)` reports progress and returns false to abort (the result is then empty).
+TubeSections tubeSections(const BinaryVolume& volume, const std::vector<Eigen::Vector3d>& axis,
+                          const SectionParameters& parameters = {},
+                          const std::function<bool(double)>& keepGoing = nullptr);
+
+}  // namespace medial
