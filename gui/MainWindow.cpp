@@ -450,9 +450,18 @@ int MainWindow::objectCount() const { return objects_->count(); }
 vtkMedialScene* MainWindow::scene() const { return scene_; }
 
 void MainWindow::resetCamera() {
-  scene_->GetRenderer()->GetActiveCamera()->ParallelProjectionOff();
+  vtkCamera* camera = scene_->GetRenderer()->GetActiveCamera();
+  camera->ParallelProjectionOff();
   const double aspect = view_->height() > 0 ? static_cast<double>(view_->width()) / view_->height() : 4.0 / 3.0;
   scene_->ResetCamera(aspect);
+  if (!objects_->ofKind(SceneObject::Kind::Volume).empty()) {
+    // Medical volumes (LPS: anterior is -y, superior +z): the patient's front, head up, as in 3D Slicer.
+    const double* focal = camera->GetFocalPoint();
+    const double distance = camera->GetDistance();
+    camera->SetPosition(focal[0], focal[1] - distance, focal[2]);
+    camera->SetViewUp(0, 0, 1);
+    scene_->GetRenderer()->ResetCamera();
+  }
   for (int axis = 0; axis < 3; ++axis) slices_->view(axis)->resetCamera();
   render();
 }
