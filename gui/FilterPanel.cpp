@@ -90,6 +90,15 @@ vtkSmartPointer<vtkDataObject> FilterPanel::copyOf(SceneObject* object) {
   return copy;
 }
 
+void FilterPanel::runAgain() {
+  if (!isRunning()) {
+    run();
+    return;
+  }
+  runAgainPending_ = true;
+  runner_.cancel();
+}
+
 bool FilterPanel::run() {
   if (isRunning()) return false;
   SceneObject* object = input();
@@ -132,6 +141,10 @@ void FilterPanel::onFinished(vtkAlgorithm* filter, bool ok, const QString& text,
     emit failed(title_ + " failed", why);
   }
   emit completed(lastOk_);
+  if (runAgainPending_) {
+    runAgainPending_ = false;
+    run();
+  }
 }
 
 }  // namespace medial::gui

@@ -34,8 +34,14 @@ class FilterPanel : public QWidget {
   void setInput(SceneObject* object);
   // Starts the filter on the selected input; false (with an error) when there is none or one is running.
   bool run();
-  void cancel() { runner_.cancel(); }
+  // Stops the run under way (and a pending runAgain).
+  void cancel() {
+    runAgainPending_ = false;
+    runner_.cancel();
+  }
   bool isRunning() const { return runner_.isRunning(); }
+  // Runs now, or, when a run is under way, cancels it and runs again once it has stopped (live updates).
+  void runAgain();
   void wait() { runner_.wait(); }
   // Whether the last run ended well (false before any run).
   bool lastRunSucceeded() const { return lastOk_; }
@@ -73,6 +79,7 @@ class FilterPanel : public QWidget {
   QVBoxLayout* extra_ = nullptr;
   FilterRunner runner_;
   SceneObject* runningInput_ = nullptr;
+  bool runAgainPending_ = false;
   bool lastOk_ = false;
 };
 

@@ -77,25 +77,13 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
   extraLayout()->addLayout(rows);
   connect(form(), &ParameterForm::valueChanged, this, &SketchPanel::parameterChanged);
   connect(draw_, &QCheckBox::toggled, this, &SketchPanel::drawingToggled);
-  connect(this, &FilterPanel::completed, this, [this] {
-    if (rerun_) {
-      rerun_ = false;
-      run();
-    }
-  });
 }
 
 bool SketchPanel::isDrawing() const { return draw_->isChecked(); }
 void SketchPanel::setDrawing(bool on) { draw_->setChecked(on); }
 
 void SketchPanel::parameterChanged() {
-  if (!live_->isChecked() || !input() || !objects()->findByName(input()->name + " skeleton")) return;
-  if (isRunning()) {
-    rerun_ = true;
-    cancel();
-    return;
-  }
-  run();
+  if (live_->isChecked() && input() && objects()->findByName(input()->name + " skeleton")) runAgain();
 }
 
 bool SketchPanel::addStroke(const QVector<QPointF>& points) {
@@ -128,13 +116,8 @@ bool SketchPanel::addStroke(const QVector<QPointF>& points) {
   SceneObject* object = objects()->add(kDrawnSketch, sketch);
   if (!object) return false;
   setInput(object);
-  if (!live_->isChecked()) return true;
-  if (isRunning()) {
-    rerun_ = true;
-    cancel();
-    return true;
-  }
-  return run();
+  if (live_->isChecked()) runAgain();
+  return true;
 }
 
 vtkSmartPointer<vtkAlgorithm> SketchPanel::makeFilter(SceneObject* input, QString&) {

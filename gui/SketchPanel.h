@@ -40,7 +40,6 @@ class SketchPanel : public FilterPanel {
   QSlider* thresholds_[4] = {};
   QCheckBox* live_ = nullptr;
   QCheckBox* draw_ = nullptr;
-  bool rerun_ = false;
 };
 
 }  // namespace medial::gui

@@ -49,24 +49,12 @@ SqmPanel::SqmPanel(ObjectList* objects, QWidget* parent)
   extraLayout()->addLayout(rows);
   connect(subdivision_, &QSlider::valueChanged, this, &SqmPanel::parameterChanged);
   connect(form(), &ParameterForm::valueChanged, this, &SqmPanel::parameterChanged);
-  connect(this, &FilterPanel::completed, this, [this] {
-    if (rerun_) {
-      rerun_ = false;
-      run();
-    }
-  });
 }
 
 void SqmPanel::parameterChanged() {
   if (!live_->isChecked() || !input()) return;
   // Only re-run a skeleton that already has a mesh: the first run is the user's Run.
-  if (!objects()->findByName(input()->name + " SQM")) return;
-  if (isRunning()) {
-    rerun_ = true;
-    cancel();
-    return;
-  }
-  run();
+  if (objects()->findByName(input()->name + " SQM")) runAgain();
 }
 
 vtkSmartPointer<vtkAlgorithm> SqmPanel::makeFilter(SceneObject* input, QString&) {

@@ -25,7 +25,6 @@ class SqmPanel : public FilterPanel {
 
   QSlider* subdivision_ = nullptr;
   QCheckBox* live_ = nullptr;
-  bool rerun_ = false;  // a change came while running: run again when it ends
 };
 
 }  // namespace medial::gui
