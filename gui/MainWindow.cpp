@@ -6,6 +6,7 @@
 #include "SketchPanel.h"
 #include "SkeletonPanel.h"
 #include "SqmPanel.h"
+#include "VolumeRendering.h"
 #include "VtkView.h"
 
 #include "MedialErrorCollector.h"
@@ -14,6 +15,7 @@
 #include "vtkMedialScene.h"
 #include "vtkMedialSketchReader.h"
 
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
@@ -51,6 +53,7 @@
 #include <vtkProp3DCollection.h>
 #include <vtkRenderer.h>
 #include <vtkVersion.h>
+#include <vtkVolume.h>
 
 namespace medial::gui {
 
@@ -246,6 +249,17 @@ void MainWindow::buildMenus() {
   slices->setCheckable(true);
   connect(slices, &QAction::toggled, slices_, &QWidget::setVisible);
   connect(objects_, &ObjectList::objectsChanged, slices, [this, slices] { slices->setChecked(slices_->isVisible()); });
+  QMenu* rendering = view->addMenu("&Volume Rendering");
+  rendering->setToolTip("Ray-cast rendering of the volume shown in the slice views");
+  volumeRenderingActions_ = new QActionGroup(this);
+  QStringList names = volumePresetNames();
+  names.prepend("Off");
+  for (int i = 0; i < names.size(); ++i) {
+    QAction* action = rendering->addAction(names[i], this, [this, i] { setVolumeRendering(i - 1); });
+    action->setCheckable(true);
+    action->setChecked(i == 0);
+    volumeRenderingActions_->addAction(action);
+  }
   QMenu* help = menuBar()->addMenu("&Help");
   help->addAction("&About Medial", this, &MainWindow::about);
 }
@@ -332,6 +346,7 @@ void MainWindow::onObjectsChanged() {
   for (SceneObject* v : volumes) live = live || v == shownVolume_;
   if (!live) {
     shownVolume_ = nullptr;
+    if (volumeRendering_) setVolumeRendering(-1);
     if (volumes.empty()) {
       slices_->setVolume(nullptr, QString());
       slices_->hide();
@@ -341,8 +356,26 @@ void MainWindow::onObjectsChanged() {
   }
 }
 
+bool MainWindow::setVolumeRendering(int preset) {
+  if (volumeRendering_) {
+    scene_->GetRenderer()->RemoveVolume(volumeRendering_);
+    volumeRendering_ = nullptr;
+  }
+  const bool on = preset >= 0 && shownVolume_;
+  if (on) {
+    volumeRendering_ = makeVolumeRendering(vtkImageData::SafeDownCast(shownVolume_->data), VolumePreset(preset));
+    scene_->GetRenderer()->AddVolume(volumeRendering_);
+    objects_->setVisible(shownVolume_, false);  // its opaque slices would cut through the rendering
+    log(shownVolume_->name + ": volume rendering, " + volumePresetNames()[preset]);
+  }
+  volumeRenderingActions_->actions()[on ? preset + 1 : 0]->setChecked(true);
+  render();
+  return on || preset < 0;
+}
+
 void MainWindow::showVolume(SceneObject* volume) {
   if (volume == shownVolume_) return;
+  if (volumeRendering_) setVolumeRendering(-1);
   shownVolume_ = volume;
   slices_->show();
   slices_->setVolume(vtkImageData::SafeDownCast(volume->data), volume->name);

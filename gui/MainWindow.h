@@ -18,6 +18,8 @@ class QSlider;
 class QSplitter;
 class QTabWidget;
 class vtkMedialScene;
+class vtkVolume;
+class QActionGroup;
 
 namespace medial::gui {
 
@@ -63,6 +65,10 @@ class MainWindow : public QMainWindow {
   void setGhostMode(int mode);
   void setGhostOpacity(double opacity);
   QStringList recentFiles() const;
+  // Ray-cast rendering of the shown volume in 3-D with a preset (VolumePreset), or none (-1). False when
+  // no volume is shown.
+  bool setVolumeRendering(int preset);
+  bool hasVolumeRendering() const { return volumeRendering_ != nullptr; }
 
   // Replaces the error dialog (the --screenshot mode prints to stderr instead).
   void setErrorHandler(std::function<void(const QString& title, const QString& message)> handler);
@@ -114,6 +120,8 @@ class MainWindow : public QMainWindow {
   std::vector<FilterPanel*> panels_;
   vtkSmartPointer<vtkMedialScene> scene_;
   SceneObject* shownVolume_ = nullptr;
+  vtkSmartPointer<vtkVolume> volumeRendering_;  // of shownVolume_
+  QActionGroup* volumeRenderingActions_ = nullptr;
   bool shownOnce_ = false;
   std::function<void(const QString&, const QString&)> errorHandler_;
 };

@@ -440,3 +440,23 @@ TEST_F(GuiWorkflow, ClicksInThe3dViewPickBonesAndObjectsOfInterest) {
   QTest::mouseClick(view, Qt::LeftButton, Qt::ShiftModifier, at);
   EXPECT_TRUE(skeleton->interest);
 }
+
+TEST_F(GuiWorkflow, VolumeRenderingOfTheShownVolume) {
+  EXPECT_FALSE(window->setVolumeRendering(0)) << "no volume yet";
+  open(dataPath("volumes/tubes/u.nii.gz"));
+  ASSERT_TRUE(window->setVolumeRendering(2));  // full range: a label volume
+  EXPECT_TRUE(window->hasVolumeRendering());
+  EXPECT_FALSE(window->objects()->at(0)->prop->GetVisibility()) << "the slices make way";
+  window->resetCamera();
+  EXPECT_GT(screenshot("u-volume-rendering"), 0.03);
+  // Deleting the volume removes its rendering.
+  window->objects()->remove(window->objects()->at(0));
+  EXPECT_FALSE(window->hasVolumeRendering());
+  const std::string ct = medial::test::externalPath("invesalius/Cranium.inv3");
+  if (!std::filesystem::exists(ct)) return;
+  open(ct);
+  ASSERT_TRUE(window->setVolumeRendering(0));  // CT bone
+  window->resetCamera();
+  EXPECT_GT(screenshot("cranium-volume-rendering"), 0.05);
+  window->grab().save(QString::fromStdString(dir + "/cranium-window.png"));
+}

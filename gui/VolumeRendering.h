@@ -1,0 +1,22 @@
+// VolumeRendering: a ray-cast 3-D rendering of a volume (vtkSmartVolumeMapper: GPU ray casting, which
+// Mesa's llvmpipe also runs) with transfer-function presets for CT and for any other scalar volume.
+#pragma once
+
+#include <QStringList>
+
+#include <vtkSmartPointer.h>
+
+class vtkImageData;
+class vtkVolume;
+
+namespace medial::gui {
+
+enum class VolumePreset { CtBone = 0, CtSoftTissue = 1, FullRange = 2 };
+
+QStringList volumePresetNames();  // in VolumePreset order
+
+// A vtkVolume showing `image` with a preset's colour and opacity transfer functions (Hounsfield units for
+// the CT presets; FullRange ramps over the image's own range).
+vtkSmartPointer<vtkVolume> makeVolumeRendering(vtkImageData* image, VolumePreset preset);
+
+}  // namespace medial::gui
