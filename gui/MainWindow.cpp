@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "CenterlinePanel.h"
+#include "FilterRunner.h"
 #include "IsoSurfacePanel.h"
 #include "ObjectList.h"
 #include "SketchPanel.h"
@@ -9,7 +10,6 @@
 #include "VolumeRendering.h"
 #include "VtkView.h"
 
-#include "MedialErrorCollector.h"
 #include "vtkMedialGhostPass.h"
 #include "vtkMedialReader.h"
 #include "vtkMedialScene.h"
@@ -41,7 +41,6 @@
 #include <QToolBar>
 
 #include <vtkAssembly.h>
-#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellPicker.h>
 #include <vtkCommand.h>
@@ -130,6 +129,11 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  if (reading_) {  // openFile is waiting for the reader further up the stack
+    statusBar()->showMessage("A file is being read: close the window when it is done", 5000);
+    event->ignore();
+    return;
+  }
   for (FilterPanel* panel : panels_) panel->cancel();
   QMainWindow::closeEvent(event);
 }
@@ -296,28 +300,33 @@ bool MainWindow::openFile(const QString& path) {
     medialReader->SetFileName(name.constData());
     reader = medialReader;
   }
-  auto errors = medial::ErrorCollector::Watch(reader);
-
-  // Progress of the read, shown in the status bar (reading runs on the UI thread).
-  auto progress = vtkSmartPointer<vtkCallbackCommand>::New();
-  progress->SetClientData(progress_);
-  progress->SetCallback([](vtkObject*, unsigned long, void* bar, void* fraction) {
-    auto* progressBar = static_cast<QProgressBar*>(bar);
-    progressBar->setValue(static_cast<int>(*static_cast<double*>(fraction) * 100));
-    progressBar->repaint();
-  });
-  reader->AddObserver(vtkCommand::ProgressEvent, progress);
+  if (reading_) {
+    reportError("Cannot open file", path + ": another file is being read; open it when that one is done");
+    return false;
+  }
+  // The read runs on a worker thread (FilterRunner) while the window keeps painting; the status bar shows
+  // its progress. Our readers cannot be interrupted, so there is no Cancel.
+  reading_ = true;
+  FilterRunner runner;
+  connect(&runner, &FilterRunner::progressed, progress_, &QProgressBar::setValue);
   progress_->setValue(0);
   progress_->show();
   statusBar()->showMessage("Reading " + path);
   QApplication::setOverrideCursor(Qt::WaitCursor);
-  reader->Update();
+  QString readError;
+  connect(&runner, &FilterRunner::finished, this, [&readError](vtkAlgorithm*, bool ok, const QString& message, double) {
+    if (!ok) readError = message.isEmpty() ? QString("cannot be read") : message;
+  });
+  runner.start(reader, "read");
+  runner.wait();
   QApplication::restoreOverrideCursor();
   progress_->hide();
+  reading_ = false;
 
-  if (errors->HasErrors()) {
-    const QString message = sketch ? QString::fromStdString(errors->Joined())
-                                   : QString::fromLocal8Bit(vtkMedialReader::SafeDownCast(reader)->GetErrorMessage());
+  if (!readError.isEmpty()) {
+    QString message = readError;
+    if (auto* medialReader = vtkMedialReader::SafeDownCast(reader))
+      if (*medialReader->GetErrorMessage()) message = QString::fromLocal8Bit(medialReader->GetErrorMessage());
     reportError("Cannot open file", message.contains(path) ? message : path + ": " + message);
     return false;
   }

@@ -123,6 +123,7 @@ class MainWindow : public QMainWindow {
   vtkSmartPointer<vtkVolume> volumeRendering_;  // of shownVolume_
   QActionGroup* volumeRenderingActions_ = nullptr;
   bool shownOnce_ = false;
+  bool reading_ = false;  // a file is being read (openFile waits for it with the event loop running)
   std::function<void(const QString&, const QString&)> errorHandler_;
 };
 
