@@ -1,15 +1,18 @@
-// medial-make-colon-phantom OUTPUT_DIR: a CT-like colon phantom written as a DICOM series (one CT slice
-// per file, int16 Hounsfield units), for the TSK centerline and the GUI's virtual colonoscopy.
+// medial-make-colon-phantom OUTPUT_DIR [VOLUME.nii.gz]: a CT-like colon phantom written as a DICOM series
+// (one CT slice per file, int16 Hounsfield units) and, when named, as NIfTI too, for the TSK centerline
+// and the GUI's virtual colonoscopy.
 //
 // An elliptic body (soft tissue 40 HU, a 10 mm fat layer at -100 HU) in air (-1000 HU) holds an
 // air-filled colon (-1000 HU) that runs from the rectum up the sigmoid and the descending colon, across the
 // transverse colon and down the ascending colon to the cecum, 8 to 12 mm in radius with a haustral fold
-// every 30 mm; Gaussian noise (sigma 15 HU, fixed seed) over everything. 160 x 128 x 150 voxels of
-// 0.9 x 0.9 x 1.25 mm. The true axis goes to OUTPUT_DIR/axis.txt ("x y z radius" in mm per line), so a
-// test can measure a centerline against it. Threshold -1024..-600 HU with the border air dropped gives the
+// every 30 mm and four polyps (tissue spheres of radius 3 to 5 mm centred on the wall); Gaussian noise
+// (sigma 20 HU, fixed seed) over everything. 206 x 165 x 187 voxels of 0.7 x 0.7 x 1.0 mm. The true axis
+// goes to OUTPUT_DIR/axis.txt ("x y z radius" in mm per line) and the polyps to OUTPUT_DIR/polyps.txt
+// ("x y z radius"), so that tests can measure a centerline and find the polyps on the unfolded wall. Threshold -1024..-600 HU with the border air dropped gives the
 // colon alone (as in the TSK paper's CT data).
 #include <itkGDCMImageIO.h>
 #include <itkImage.h>
+#include <itkImageFileWriter.h>
 #include <itkImageSeriesWriter.h>
 #include <itkMetaDataObject.h>
 #include <itkNumericSeriesFileNames.h>
@@ -28,8 +31,8 @@
 namespace {
 
 using Point = std::array<double, 3>;
-constexpr int kSize[3] = {160, 128, 150};
-constexpr double kSpacing[3] = {0.9, 0.9, 1.25};
+constexpr int kSize[3] = {206, 165, 187};
+constexpr double kSpacing[3] = {0.7, 0.7, 1.0};
 
 // Control points of the colon's axis in mm, rectum first.
 // Control points of the colon's axis in mm, rectum first; non-adjacent loops keep >= 13 mm of tissue
@@ -79,8 +82,8 @@ std::string makeUid(std::mt19937_64& random) { return "2.25." + std::to_string(r
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: medial-make-colon-phantom OUTPUT_DIR\n");
+  if (argc != 2 && argc != 3) {
+    std::fprintf(stderr, "usage: medial-make-colon-phantom OUTPUT_DIR [VOLUME.nii.gz]\n");
     return 2;
   }
   const std::filesystem::path out = argv[1];
@@ -103,6 +106,29 @@ int main(int argc, char** argv) {
         }
   }
 
+  // Polyps: tissue spheres centred on the wall at a few places along the colon, on alternating sides.
+  std::vector<AxisPoint> polyps;
+  const double polypAt[4] = {0.2, 0.45, 0.65, 0.85}, polypRadius[4] = {3.0, 4.0, 5.0, 3.5};
+  for (int n = 0; n < 4; ++n) {
+    const size_t i = size_t(polypAt[n] * double(axis.size() - 1));
+    const Point& a = axis[i - 1].p;
+    const Point& b = axis[i + 1].p;
+    const double t[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    // A direction perpendicular to the tangent: tangent x (x axis), or x (y axis) when nearly parallel.
+    double side[3] = {0, t[2], -t[1]};
+    if (std::hypot(side[1], side[2]) < 0.3 * std::hypot(t[0], t[1], t[2])) side[0] = -t[2], side[1] = 0, side[2] = t[0];
+    const double norm = std::hypot(side[0], side[1], side[2]) * (n % 2 ? -1.0 : 1.0);
+    const Point centre = {axis[i].p[0] + axis[i].radius * side[0] / norm, axis[i].p[1] + axis[i].radius * side[1] / norm,
+                          axis[i].p[2] + axis[i].radius * side[2] / norm};
+    polyps.push_back({centre, polypRadius[n]});
+    const double r = polypRadius[n];
+    for (int z = std::max(0, int((centre[2] - r) / kSpacing[2])); z <= std::min(kSize[2] - 1, int((centre[2] + r) / kSpacing[2]) + 1); ++z)
+      for (int y = std::max(0, int((centre[1] - r) / kSpacing[1])); y <= std::min(kSize[1] - 1, int((centre[1] + r) / kSpacing[1]) + 1); ++y)
+        for (int x = std::max(0, int((centre[0] - r) / kSpacing[0])); x <= std::min(kSize[0] - 1, int((centre[0] + r) / kSpacing[0]) + 1); ++x)
+          if (std::hypot(x * kSpacing[0] - centre[0], y * kSpacing[1] - centre[1], z * kSpacing[2] - centre[2]) <= r)
+            colon[(size_t(z) * kSize[1] + y) * kSize[0] + x] = 0;
+  }
+
   using Volume = itk::Image<int16_t, 3>;
   auto volume = Volume::New();
   Volume::RegionType region;
@@ -112,7 +138,7 @@ int main(int argc, char** argv) {
   volume->SetSpacing(kSpacing);
   volume->Allocate();
   std::mt19937 random(20081);
-  std::normal_distribution<double> noise(0.0, 15.0);
+  std::normal_distribution<double> noise(0.0, 20.0);
   const double cx = 0.5 * (kSize[0] - 1) * kSpacing[0], cy = 0.5 * (kSize[1] - 1) * kSpacing[1];
   const double ax = 66.0, ay = 52.0;  // body semi-axes (mm)
   for (int z = 0; z < kSize[2]; ++z)
@@ -179,9 +205,24 @@ int main(int argc, char** argv) {
     return 1;
   }
 
+  if (argc == 3) {
+    auto nifti = itk::ImageFileWriter<Volume>::New();
+    nifti->SetInput(volume);
+    nifti->SetFileName(argv[2]);
+    try {
+      nifti->Update();
+    } catch (const itk::ExceptionObject& e) {
+      std::fprintf(stderr, "medial-make-colon-phantom: %s: %s\n", argv[2], e.GetDescription());
+      return 1;
+    }
+  }
+  std::ofstream polypFile(out / "polyps.txt");
+  polypFile << "# polyps: centre x y z and radius (mm)\n";
+  for (const AxisPoint& p : polyps) polypFile << p.p[0] << ' ' << p.p[1] << ' ' << p.p[2] << ' ' << p.radius << '\n';
   std::ofstream axisFile(out / "axis.txt");
   axisFile << "# true colon axis, rectum first: x y z radius (mm)\n";
   for (const AxisPoint& a : axis) axisFile << a.p[0] << ' ' << a.p[1] << ' ' << a.p[2] << ' ' << a.radius << '\n';
-  std::printf("wrote %d DICOM slices and axis.txt to %s\n", kSize[2], out.string().c_str());
+  std::printf("wrote %d DICOM slices, axis.txt and polyps.txt to %s%s%s\n", kSize[2], out.string().c_str(),
+              argc == 3 ? " and " : "", argc == 3 ? argv[2] : "");
   return 0;
 }

@@ -3,13 +3,20 @@
 #include "RunCommand.h"
 #include "TestPaths.h"
 
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataReader.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 namespace {
 
@@ -220,14 +227,49 @@ TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
   std::getline(csv, header);
   EXPECT_EQ(header, "arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2");
   int rows = 0, plausible = 0;
+  std::vector<double> arcs, minima;
   while (std::getline(csv, row)) {
     ++rows;
     double arc, low, high, perimeter, area;
-    if (std::sscanf(row.c_str(), "%lf,%lf,%lf,%lf,%lf", &arc, &low, &high, &perimeter, &area) == 5 && low <= high &&
-        low > 10 && high < 40)  // the phantom's colon is 16 to 24 mm wide, folds 18 % narrower
-      ++plausible;
+    if (std::sscanf(row.c_str(), "%lf,%lf,%lf,%lf,%lf", &arc, &low, &high, &perimeter, &area) != 5) continue;
+    arcs.push_back(arc);
+    minima.push_back(low);
+    if (low <= high && low > 10 && high < 40) ++plausible;  // the colon is 16 to 24 mm wide, folds 18 % narrower
   }
-  EXPECT_GT(rows, 170) << "about 383 mm of centerline, a section every 2 mm";
+  // Each polyp narrows the section at its place: the min diameter there is at least half the polyp's radius
+  // below the median of the sections within 12 mm.
+  auto line = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  line->SetFileName((dir + "/colon.vtp").c_str());
+  line->Update();
+  vtkDataArray* arcLength = line->GetOutput()->GetPointData()->GetArray("ArcLength");
+  ASSERT_NE(arcLength, nullptr);
+  std::ifstream polyps(dir + "/dicom/polyps.txt");
+  int polypCount = 0;
+  while (std::getline(polyps, row)) {
+    double p[3], radius;
+    if (row.empty() || row[0] == '#' || std::sscanf(row.c_str(), "%lf %lf %lf %lf", &p[0], &p[1], &p[2], &radius) != 4) continue;
+    ++polypCount;
+    vtkIdType nearest = 0;
+    double best = 1e300;
+    for (vtkIdType i = 0; i < line->GetOutput()->GetNumberOfPoints(); ++i) {
+      double q[3];
+      line->GetOutput()->GetPoint(i, q);
+      const double d = std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
+      if (d < best) best = d, nearest = i;
+    }
+    const double at = arcLength->GetComponent(nearest, 0);
+    std::vector<double> around;
+    double narrowest = 1e300;
+    for (size_t k = 0; k < arcs.size(); ++k) {
+      if (std::fabs(arcs[k] - at) <= 12 && std::isfinite(minima[k])) around.push_back(minima[k]);
+      if (std::fabs(arcs[k] - at) <= 3 && std::isfinite(minima[k])) narrowest = std::min(narrowest, minima[k]);
+    }
+    ASSERT_FALSE(around.empty());
+    std::nth_element(around.begin(), around.begin() + long(around.size() / 2), around.end());
+    EXPECT_LT(narrowest, around[around.size() / 2] - 0.5 * radius) << "polyp at arc length " << at << " mm";
+  }
+  EXPECT_EQ(polypCount, 4);
+  EXPECT_GT(rows, 170) << "about 389 mm of centerline, a section every 2 mm";
   EXPECT_GT(plausible, 0.8 * rows);
   auto terrain = vtkSmartPointer<vtkPNGReader>::New();
   terrain->SetFileName((dir + "/terrain.png").c_str());
