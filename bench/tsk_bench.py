@@ -5,12 +5,18 @@ Peers: scikit-image's 3-D skeletonize (Lee et al. thinning), and a distance-map 
 26-connected voxels, step cost length / distance-to-wall^2) between the same end points as Medial's axis.
 Per phantom: median seconds of each (over --repeat runs), mean and max distance to the true axis (mm,
 voxels and % of the axis length as in the paper's Table 2), leaving out one radius at each end.
+"colon" is the CT-like colon phantom (build/bin/medial-make-colon-phantom, made in a temporary folder and
+read as its DICOM series): Medial thresholds -1024..-600 HU itself; the peers get the same structure (the
+threshold, parts touching the border dropped, the largest 26-connected component).
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 bench/tsk_bench.py [--repeat N] [NAME...]
 """
 import argparse
 import math
 import os
+import shutil
 import statistics
+import subprocess
+import tempfile
 import time
 
 import numpy as np
@@ -25,7 +31,8 @@ import medial
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TUBES = os.path.join(HERE, "..", "data", "volumes", "tubes")
-RADIUS = {"u": 5, "s-plane": 5, "s-3d": 5, "s-radius": 5, "helix": 4, "helix-tight": 3.5}
+RADIUS = {"u": 5, "s-plane": 5, "s-3d": 5, "s-radius": 5, "helix": 4, "helix-tight": 3.5, "colon": 12}
+PHANTOM_TOOL = os.path.join(HERE, "..", "build", "bin", "medial-make-colon-phantom")
 
 
 def read_volume(name):
@@ -36,6 +43,24 @@ def read_volume(name):
     dims = image.GetDimensions()
     array = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars()).reshape(dims[::-1]).transpose(2, 1, 0)
     return image, array > 0, np.array(image.GetSpacing()), np.array(image.GetOrigin())
+
+
+def read_colon(folder):
+    """The colon phantom's DICOM series, its structure as the peers get it, and its true axis."""
+    subprocess.run([PHANTOM_TOOL, folder], check=True, stdout=subprocess.DEVNULL)
+    reader = medial.vtkMedialReader()
+    reader.SetFileName(folder)
+    reader.Update()
+    image = reader.GetOutputDataObject(0)
+    dims = image.GetDimensions()
+    hu = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars()).reshape(dims[::-1]).transpose(2, 1, 0)
+    labels, _ = scipy.ndimage.label(hu <= -600, structure=np.ones((3, 3, 3)))
+    border = np.unique(np.concatenate([labels[[0, -1]].ravel(), labels[:, [0, -1]].ravel(), labels[:, :, [0, -1]].ravel()]))
+    sizes = np.bincount(labels.ravel())
+    sizes[border] = 0
+    inside = labels == np.argmax(sizes)
+    axis = np.loadtxt(os.path.join(folder, "axis.txt"))[:, :3]
+    return image, inside, np.array(image.GetSpacing()), np.array(image.GetOrigin()), axis
 
 
 def read_axis(name):
@@ -65,10 +90,13 @@ def errors(points, axis, radius, spacing):
     return d.mean(), d.max(), d.mean() / voxel, 100 * d.mean() / length
 
 
-def medial_centerline(image):
+def medial_centerline(image, threshold=None):
     f = medial.vtkMedialTskCenterline()
     f.SetInputData(image)
-    f.SetLabel(1)
+    if threshold:
+        f.SetThreshold(*threshold)
+    else:
+        f.SetLabel(1)
     f.Update()
     line = f.GetOutput()
     return np.array([line.GetPoint(i) for i in range(line.GetNumberOfPoints())])
@@ -126,10 +154,21 @@ def main():
     print("TSK centerline (Medial) vs skimage skeletonize_3d vs distance-map minimal path; median of %d runs" % args.repeat)
     print("%-12s | %-34s | %-34s | %-34s" % ("phantom", "Medial: s, mean/max mm, vox, %", "skeletonize", "minimal path"))
     for name in args.names:
-        image, inside, spacing, origin = read_volume(name)
-        axis, radius = read_axis(name), RADIUS[name]
+        threshold = None
+        if name == "colon":
+            if not os.path.exists(PHANTOM_TOOL):
+                print("%-12s | skipped: build medial-make-colon-phantom first" % name)
+                continue
+            folder = tempfile.mkdtemp(prefix="medial-colon-")
+            image, inside, spacing, origin, axis = read_colon(folder)
+            shutil.rmtree(folder)
+            threshold = (-1024, -600)
+        else:
+            image, inside, spacing, origin = read_volume(name)
+            axis = read_axis(name)
+        radius = RADIUS[name]
         row = []
-        t, ours = timed(args.repeat, lambda: medial_centerline(image))
+        t, ours = timed(args.repeat, lambda: medial_centerline(image, threshold))
         row.append((t, errors(ours, axis, radius, spacing)))
         t, skel = timed(args.repeat, lambda: skeleton_points(inside, spacing, origin))
         row.append((t, errors(skel, axis, radius, spacing)))
