@@ -3,7 +3,8 @@
 // refinement; no inflation) beside CGAL's interior straight skeleton alone on the same polygon: the stroke
 // as drawn (when it is simple) and the stroke resampled (what a user would feed CGAL to avoid jitter).
 //
-// usage: medial_bench_sketch [--repeat N] SKETCH.txt...
+// usage: medial_bench_sketch [--repeat N] [--medial-only] SKETCH.txt...   (--medial-only: no CGAL columns,
+// for profiling Medial's chain alone)
 #include "MedianSeconds.h"
 
 #include "sketch/SketchSkeleton.h"
@@ -46,14 +47,16 @@ std::vector<medial::Polygon2> readStrokes(const std::string& path) {
 
 int main(int argc, char** argv) {
   int repeat = 21;
+  bool medialOnly = false;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
+    else if (arg == "--medial-only") medialOnly = true;
     else files.push_back(arg);
   }
   if (files.empty()) {
-    std::fprintf(stderr, "usage: medial_bench_sketch [--repeat N] SKETCH.txt...\n");
+    std::fprintf(stderr, "usage: medial_bench_sketch [--repeat N] [--medial-only] SKETCH.txt...\n");
     return 2;
   }
   std::printf("%-14s %4s %6s %6s %11s %11s %11s %9s %9s\n", "sketch", "part", "points", "polygon", "medial ms",
@@ -74,6 +77,11 @@ int main(int argc, char** argv) {
         return 1;
       }
       medialTimes.push_back(medial);
+      if (medialOnly) {
+        std::printf("%-14s %4zu %6zu %6zu %11.3f\n", name.c_str(), k + 1, strokes[k].size(),
+                    result.parts[0].stroke.polygon.size(), 1e3 * medial);
+        continue;
+      }
       medial::Polygon2 raw = strokes[k];
       if (medial::signedArea(raw) < 0) std::reverse(raw.begin(), raw.end());
       const bool rawSimple = medial::findSelfIntersection(raw).first < 0;
