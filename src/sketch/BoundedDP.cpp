@@ -21,19 +21,30 @@ Eigen::Vector2d catmullRom(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1,
   return (t2 - u) / (t2 - t1) * b1 + (u - t1) / (t2 - t1) * b2;
 }
 
-// Distance along direction `d` from p to the polygon boundary (first hit), or 0 when nothing is hit.
-double rayToBoundary(const Polygon2& polygon, const Eigen::Vector2d& p, const Eigen::Vector2d& d) {
-  double best = std::numeric_limits<double>::infinity();
-  for (size_t i = 0, n = polygon.size(); i < n; ++i) {
+// One pass over the polygon's edges for a slice at p with unit normal n: the inscribed radius (distance
+// to the boundary) and the first boundary hits along +n and -n (0 when nothing is hit). One loop instead
+// of three, and squared distances with one square root: this runs every 2 px along every branch.
+struct SliceWidths {
+  double radius, plus, minus;
+};
+
+SliceWidths sliceWidths(const Polygon2& polygon, const Eigen::Vector2d& p, const Eigen::Vector2d& n) {
+  double nearest = std::numeric_limits<double>::infinity();
+  double plus = std::numeric_limits<double>::infinity(), minus = plus;
+  for (size_t i = 0, count = polygon.size(); i < count; ++i) {
     const Eigen::Vector2d& a = polygon[i];
-    const Eigen::Vector2d e = polygon[(i + 1) % n] - a;
-    const double denominator = cross2(d, e);
+    const Eigen::Vector2d& b = polygon[(i + 1) % count];
+    nearest = std::min(nearest, squaredDistanceToSegment(p, a, b));
+    const Eigen::Vector2d e = b - a;
+    const double denominator = cross2(n, e);
     if (std::abs(denominator) < 1e-300) continue;
-    const double s = cross2(a - p, e) / denominator;  // along the ray
-    const double u = cross2(a - p, d) / denominator;  // along the edge
-    if (s > 0 && u >= 0 && u <= 1) best = std::min(best, s);
+    const double s = cross2(a - p, e) / denominator;  // along the normal line through p
+    const double u = cross2(a - p, n) / denominator;  // along the edge
+    if (u < 0 || u > 1) continue;
+    if (s > 0) plus = std::min(plus, s);
+    if (s < 0) minus = std::min(minus, -s);
   }
-  return std::isfinite(best) ? best : 0.0;
+  return {std::sqrt(nearest), std::isfinite(plus) ? plus : 0.0, std::isfinite(minus) ? minus : 0.0};
 }
 
 struct Slices {
@@ -52,9 +63,10 @@ Slices slice(const std::vector<Eigen::Vector2d>& samples, const Polygon2& polygo
     const Eigen::Vector2d normal(-tangent.y(), tangent.x());
     // Where the axis bends sharply, a perpendicular can run along the tube instead of across it; no
     // half-width of a general cylinder exceeds twice its inscribed radius, so longer hits are capped.
-    const double cap = 2 * distanceToBoundary(polygon, samples[i]);
-    const double plus = std::min(cap, rayToBoundary(polygon, samples[i], normal));
-    const double minus = std::min(cap, rayToBoundary(polygon, samples[i], -normal));
+    const SliceWidths widths = sliceWidths(polygon, samples[i], normal);
+    const double cap = 2 * widths.radius;
+    const double plus = std::min(cap, widths.plus);
+    const double minus = std::min(cap, widths.minus);
     s.arc.push_back(travelled);
     s.widthLeft.push_back(plus > 0 ? plus : cap / 2);
     s.widthRight.push_back(minus > 0 ? minus : cap / 2);

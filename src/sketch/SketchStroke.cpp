@@ -9,10 +9,7 @@ namespace medial {
 namespace {
 
 double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
+  return std::sqrt(squaredDistanceToSegment(p, a, b));
 }
 
 // Classic Douglas-Peucker [9] on the open chain points[first..last]: marks the kept points.
@@ -179,12 +176,19 @@ bool isInside(const Polygon2& polygon, const Eigen::Vector2d& p) {
   return inside;
 }
 
+double squaredDistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).squaredNorm();
+}
+
 double distanceToBoundary(const Polygon2& polygon, const Eigen::Vector2d& p, bool* inside) {
-  double best = std::numeric_limits<double>::infinity();
+  double best = std::numeric_limits<double>::infinity();  // squared: one square root at the end
   for (size_t i = 0, n = polygon.size(); i < n; ++i)
-    best = std::min(best, distanceToSegment(p, polygon[i], polygon[(i + 1) % n]));
+    best = std::min(best, squaredDistanceToSegment(p, polygon[i], polygon[(i + 1) % n]));
   if (inside) *inside = isInside(polygon, p);
-  return best;
+  return std::sqrt(best);
 }
 
 PreparedStroke prepareStroke(const Polygon2& stroke, const StrokeParameters& parameters) {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+
 #include <Eigen/Geometry>
 
 #include <string>
@@ -48,6 +49,8 @@ Polygon2 simplifyClosed(const Polygon2& polygon, double tolerance);
 std::pair<int, int> findSelfIntersection(const Polygon2& polygon);
 // Distance from p to the closed polygon's boundary; `inside` tells whether p is strictly inside.
 double distanceToBoundary(const Polygon2& polygon, const Eigen::Vector2d& p, bool* inside = nullptr);
+// Squared distance from p to the segment ab.
+double squaredDistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 bool isInside(const Polygon2& polygon, const Eigen::Vector2d& p);
 // Whether the open segments ab and cd intersect (touching counts).
 bool segmentsIntersect(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
