@@ -3,6 +3,7 @@
 #include "CenterlinePanel.h"
 #include "FilterRunner.h"
 #include "IsoSurfacePanel.h"
+#include "PlacedStrokes.h"
 #include "ObjectList.h"
 #include "SketchPanel.h"
 #include "SkeletonPanel.h"
@@ -49,6 +50,7 @@
 #include <vtkImageProperty.h>
 #include <vtkImageSlice.h>
 #include <vtkImageSliceMapper.h>
+#include <vtkMath.h>
 #include <vtkProp3DCollection.h>
 #include <vtkRenderer.h>
 #include <vtkVersion.h>
@@ -177,17 +179,8 @@ void MainWindow::buildPanels() {
   });
   connect(sketch_, &SketchPanel::drawingToggled, this, [this](bool on) {
     view_->setDrawingMode(on);
-    if (on) {
-      // Draw on the z = 0 plane seen from the front, keeping the focal point and the zoom.
-      vtkCamera* camera = scene_->GetRenderer()->GetActiveCamera();
-      const double* focal = camera->GetFocalPoint();
-      camera->SetFocalPoint(focal[0], focal[1], 0);
-      camera->SetPosition(focal[0], focal[1], camera->GetDistance());
-      camera->SetViewUp(0, 1, 0);
-      scene_->GetRenderer()->ResetCameraClippingRange();
-      render();
-    }
-    log(on ? "Sketch: drawing on (left-drag draws a closed stroke)" : "Sketch: drawing off");
+    log(on ? "Sketch: drawing on (left-drag draws a closed stroke on the view plane through the focal point)"
+           : "Sketch: drawing off");
   });
   auto* dock = new QDockWidget("Filters", this);
   dock->setObjectName("filtersDock");
@@ -448,32 +441,50 @@ void MainWindow::onViewClicked(const QPointF& position, Qt::KeyboardModifiers mo
   }
 }
 
-bool MainWindow::planePoint(const QPointF& position, double point[3]) const {
+bool MainWindow::viewPlanePoint(const QPointF& position, const double origin[3], const double normal[3],
+                                double point[3]) const {
   vtkRenderer* renderer = scene_->GetRenderer();
   const qreal ratio = view_->devicePixelRatioF();
   const double x = position.x() * ratio, y = (view_->height() - position.y()) * ratio;
   double ends[2][4];
-  for (int i = 0; i < 2; ++i) {
+  for (int i = 0; i < 2; ++i) {  // the pointer's ray: from the near to the far plane
     renderer->SetDisplayPoint(x, y, i);
     renderer->DisplayToWorld();
     renderer->GetWorldPoint(ends[i]);
     if (ends[i][3] == 0) return false;
     for (int c = 0; c < 3; ++c) ends[i][c] /= ends[i][3];
   }
-  const double dz = ends[1][2] - ends[0][2];
-  if (std::fabs(dz) < 1e-12) return false;  // looking along the plane
-  const double t = -ends[0][2] / dz;
-  for (int c = 0; c < 3; ++c) point[c] = ends[0][c] + t * (ends[1][c] - ends[0][c]);
+  double along[3], toOrigin[3];
+  for (int c = 0; c < 3; ++c) along[c] = ends[1][c] - ends[0][c], toOrigin[c] = origin[c] - ends[0][c];
+  const double denominator = vtkMath::Dot(along, normal);
+  if (std::fabs(denominator) < 1e-12) return false;  // the ray runs along the plane
+  const double t = vtkMath::Dot(toOrigin, normal) / denominator;
+  for (int c = 0; c < 3; ++c) point[c] = ends[0][c] + t * along[c];
   return true;
 }
 
 void MainWindow::onStrokeDrawn(const QVector<QPointF>& positions) {
+  // The stroke lies in the plane facing the viewer through the focal point: its 2-D coordinates are along
+  // the view's right (u) and up (v) axes, and its Placement maps (x, y, 0) back to 3-D: o + x u + y v.
+  vtkCamera* camera = scene_->GetRenderer()->GetActiveCamera();
+  camera->OrthogonalizeViewUp();
+  double o[3], v[3], n[3], u[3], w[3];
+  camera->GetFocalPoint(o);
+  camera->GetViewUp(v);
+  camera->GetDirectionOfProjection(n);
+  vtkMath::Cross(n, v, u);  // right = direction of projection x up
+  vtkMath::Normalize(u);
+  vtkMath::Normalize(v);
+  vtkMath::Cross(u, v, w);  // towards the viewer: a right-handed frame
   QVector<QPointF> stroke;
   for (const QPointF& position : positions) {
     double p[3];
-    if (planePoint(position, p)) stroke.append(QPointF(p[0], p[1]));
+    if (!viewPlanePoint(position, o, n, p)) continue;
+    const double d[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
+    stroke.append(QPointF(vtkMath::Dot(d, u), vtkMath::Dot(d, v)));
   }
-  if (!sketch_->addStroke(stroke)) log("Sketch: the stroke needs at least 3 points on the drawing plane");
+  const Placement placement = {u[0], v[0], w[0], o[0], u[1], v[1], w[1], o[1], u[2], v[2], w[2], o[2], 0, 0, 0, 1};
+  if (!sketch_->addStroke(stroke, placement)) log("Sketch: the stroke needs at least 3 points on the drawing plane");
 }
 
 void MainWindow::onFlyTo(const std::array<double, 3>& eye, const std::array<double, 3>& /*focal*/,

@@ -98,8 +98,8 @@ class MainWindow : public QMainWindow {
   void onStrokeDrawn(const QVector<QPointF>& positions);
   void onFlyTo(const std::array<double, 3>& eye, const std::array<double, 3>& focal, const std::array<double, 3>& up);
   void showVolume(SceneObject* volume);
-  // The world point on the z = 0 plane under a position of the 3-D view.
-  bool planePoint(const QPointF& position, double point[3]) const;
+  // The world point under a position of the 3-D view on the plane through `origin` with `normal`.
+  bool viewPlanePoint(const QPointF& position, const double origin[3], const double normal[3], double point[3]) const;
   void render();
 
   VtkView* view_ = nullptr;

@@ -1,5 +1,7 @@
 #include "ObjectList.h"
 
+#include "PlacedStrokes.h"
+
 #include "MedialErrorCollector.h"
 #include "vtkMedialPolyDataWriter.h"
 #include "vtkMedialRigWriter.h"
@@ -103,7 +105,10 @@ SceneObject* ObjectList::add(const QString& name, vtkDataObject* data, const QSt
   auto errors = medial::ErrorCollector::Watch(scene_);
   const double sceneScale = scene_->GetSkeletonRadiusScale();
   scene_->SetSkeletonRadiusScale(radiusScale);
-  vtkProp3D* prop = data ? scene_->AddData(data) : nullptr;
+  // A sketch is drawn where its strokes lie in 3-D (their Placement), not in their own planes' coordinates.
+  vtkSmartPointer<vtkDataObject> shown = data;
+  if (data && kindOf(data) == SceneObject::Kind::Sketch) shown = placedStrokes(vtkPolyData::SafeDownCast(data));
+  vtkProp3D* prop = shown ? scene_->AddData(shown) : nullptr;
   scene_->SetSkeletonRadiusScale(sceneScale);
   scene_->RemoveObserver(errors);
   if (!prop) {

@@ -70,7 +70,8 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
   live_->setChecked(true);
   draw_ = new QCheckBox("Draw strokes in the 3-D view", this);
   draw_->setObjectName("draw");
-  draw_->setToolTip("Left-drag draws a closed stroke on the view plane; each stroke is a new part.\n"
+  draw_->setToolTip("Left-drag draws a closed stroke on the plane facing you through the focal point; each\n"
+                    "stroke is a new part (rotate the view between strokes to draw parts in other planes).\n"
                     "Turn off to rotate the view again.");
   rows->addRow(live_);
   rows->addRow(draw_);
@@ -86,31 +87,30 @@ void SketchPanel::parameterChanged() {
   if (live_->isChecked() && input() && objects()->findByName(input()->name + " skeleton")) runAgain();
 }
 
-bool SketchPanel::addStroke(const QVector<QPointF>& points) {
+bool SketchPanel::addStroke(const QVector<QPointF>& points, const Placement& placement) {
   if (points.size() < 3) return false;
-  // The drawn sketch is rebuilt with one more closed polyline (its first point repeated at the end), and
-  // an identity `Placement` per stroke: the strokes lie in the z = 0 plane.
+  // The drawn sketch is rebuilt with one more closed polyline (its first point repeated at the end) and
+  // its `Placement`.
   auto sketch = vtkSmartPointer<vtkPolyData>::New();
   auto coordinates = vtkSmartPointer<vtkPoints>::New();
   auto lines = vtkSmartPointer<vtkCellArray>::New();
-  auto placement = vtkSmartPointer<vtkDoubleArray>::New();
-  placement->SetName("Placement");
-  placement->SetNumberOfComponents(16);
+  auto placements = vtkSmartPointer<vtkDoubleArray>::New();
+  placements->SetName("Placement");
+  placements->SetNumberOfComponents(16);
   SceneObject* previous = objects()->findByName(kDrawnSketch);
   if (previous) {
     coordinates->DeepCopy(previous->polyData()->GetPoints());
     lines->DeepCopy(previous->polyData()->GetLines());
-    placement->DeepCopy(previous->polyData()->GetCellData()->GetArray("Placement"));
+    placements->DeepCopy(previous->polyData()->GetCellData()->GetArray("Placement"));
   }
   const vtkIdType first = coordinates->GetNumberOfPoints();
   lines->InsertNextCell(points.size() + 1);
   for (const QPointF& p : points) lines->InsertCellPoint(coordinates->InsertNextPoint(p.x(), p.y(), 0.0));
   lines->InsertCellPoint(first);
-  const double identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  placement->InsertNextTuple(identity);
+  placements->InsertNextTuple(placement.data());
   sketch->SetPoints(coordinates);
   sketch->SetLines(lines);
-  sketch->GetCellData()->AddArray(placement);
+  sketch->GetCellData()->AddArray(placements);
 
   if (previous) objects()->remove(previous);
   SceneObject* object = objects()->add(kDrawnSketch, sketch);

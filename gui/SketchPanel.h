@@ -4,6 +4,7 @@
 #pragma once
 
 #include "FilterPanel.h"
+#include "PlacedStrokes.h"
 
 #include <QPointF>
 #include <QVector>
@@ -21,9 +22,11 @@ class SketchPanel : public FilterPanel {
 
   // The four thresholds of §3.1 and §3.3 in sketch pixels (ES, EM, ET, EC).
   QSlider* thresholdSlider(int index) const { return thresholds_[index]; }
-  // Adds a closed stroke (points in the z = 0 plane of world space) to the drawn sketch, creating it if
-  // needed, and runs the filter. False when the stroke has fewer than 3 points.
-  bool addStroke(const QVector<QPointF>& points);
+  // Adds a closed stroke to the drawn sketch (creating it if needed) and runs the filter: `points` in the
+  // stroke's own plane, which `placement` (row-major 4x4; default the z = 0 plane) puts in 3-D. False when
+  // the stroke has fewer than 3 points.
+  bool addStroke(const QVector<QPointF>& points,
+                 const Placement& placement = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
   bool isDrawing() const;
   void setDrawing(bool on);
 

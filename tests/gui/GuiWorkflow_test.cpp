@@ -29,6 +29,8 @@
 #include <vtkMath.h>
 #include <vtkRendererCollection.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
@@ -253,23 +255,45 @@ TEST_F(GuiWorkflow, SketchFileAndDrawnStrokes) {
   ASSERT_NE(skeleton, nullptr);
   EXPECT_LT(skeleton->polyData()->GetNumberOfPoints(), fine);
 
-  // Drawing: a left drag in the 3-D view draws a closed stroke; skeleton and mesh appear.
+  // Drawing: a left drag in the 3-D view draws a closed stroke on the view plane; skeleton and mesh appear.
   panel->setDrawing(true);
   VtkView* view = window->view();
   const QPoint centre = view->rect().center();
-  QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(150, 0));
-  for (int step = 1; step < 48; ++step) {
-    const double angle = 2 * M_PI * step / 48;
-    const QPoint at = centre + QPoint(static_cast<int>(150 * std::cos(angle)), static_cast<int>(60 * std::sin(angle)));
-    QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
-    QApplication::sendEvent(view, &move);
-  }
-  QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(150, -5));
+  auto drawEllipse = [&](int rx, int ry) {
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(rx, 0));
+    for (int step = 1; step < 48; ++step) {
+      const double angle = 2 * M_PI * step / 48;
+      const QPoint at = centre + QPoint(static_cast<int>(rx * std::cos(angle)), static_cast<int>(ry * std::sin(angle)));
+      QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+      QApplication::sendEvent(view, &move);
+    }
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(rx, -5));
+  };
+  drawEllipse(150, 60);
   ASSERT_NE(object("drawn sketch"), nullptr);
   panel->wait();
   SceneObject* drawn = object("drawn sketch skeleton");
   ASSERT_NE(drawn, nullptr) << errors.join("\n").toStdString();
   EXPECT_GE(drawn->polyData()->GetNumberOfPoints(), 2);
+  // Turn the view by 90 degrees and draw a second part: it lies in the new view plane, across the first.
+  window->scene()->GetRenderer()->GetActiveCamera()->Azimuth(90);
+  window->scene()->GetRenderer()->ResetCameraClippingRange();
+  drawEllipse(40, 120);
+  panel->wait();
+  vtkPolyData* strokes = object("drawn sketch")->polyData();
+  ASSERT_EQ(strokes->GetNumberOfLines(), 2);
+  vtkDataArray* placement = strokes->GetCellData()->GetArray("Placement");
+  ASSERT_NE(placement, nullptr);
+  double first[16], second[16];
+  placement->GetTuple(0, first);
+  placement->GetTuple(1, second);
+  // The planes' normals (third columns) are perpendicular.
+  EXPECT_NEAR(first[2] * second[2] + first[6] * second[6] + first[10] * second[10], 0.0, 1e-6);
+  drawn = object("drawn sketch skeleton");
+  ASSERT_NE(drawn, nullptr) << errors.join("\n").toStdString();
+  vtkDataArray* part = drawn->polyData()->GetPointData()->GetArray("Part");
+  ASSERT_NE(part, nullptr);
+  EXPECT_EQ(part->GetRange()[1], 1.0) << "two parts";
   panel->setDrawing(false);
   EXPECT_GT(screenshot("drawn-sketch"), 0.02);
 }
