@@ -4,6 +4,7 @@
 #include "vtkMedialSketchSkeleton.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QSlider>
@@ -50,6 +51,11 @@ constexpr Threshold kThresholds[4] = {
 SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
     : FilterPanel("Sketch", SceneObject::Kind::Sketch, sketchParameters(), objects, parent) {
   auto* rows = new QFormLayout;
+  scope_ = new QComboBox(this);
+  scope_->setObjectName("thresholdScope");
+  scope_->setToolTip("Part-level control (§3.3): the sliders set the global thresholds, or those of one part");
+  rows->addRow("Thresholds of", scope_);
+  connect(scope_, &QComboBox::currentIndexChanged, this, &SketchPanel::showScope);
   for (int i = 0; i < 4; ++i) {
     auto* slider = new QSlider(Qt::Horizontal, this);
     slider->setObjectName(kThresholds[i].name);
@@ -65,6 +71,7 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
     row->addWidget(value);
     rows->addRow(kThresholds[i].label, row);
     thresholds_[i] = slider;
+    values_[i] = value;
   }
   live_ = new QCheckBox("Update live", this);
   live_->setChecked(true);
@@ -84,7 +91,39 @@ bool SketchPanel::isDrawing() const { return draw_->isChecked(); }
 void SketchPanel::setDrawing(bool on) { draw_->setChecked(on); }
 
 void SketchPanel::parameterChanged() {
+  const int part = scope_->currentIndex() - 1;  // -1: all parts (the global thresholds)
+  const Thresholds values = {double(thresholds_[0]->value()), double(thresholds_[1]->value()),
+                             double(thresholds_[2]->value()), double(thresholds_[3]->value())};
+  if (part < 0)
+    global_ = values;
+  else
+    partThresholds_[part] = values;
   if (live_->isChecked() && input() && objects()->findByName(input()->name + " skeleton")) runAgain();
+}
+
+void SketchPanel::inputChanged(SceneObject* input) {
+  // A new sketch: one scope entry per part; part-level thresholds belong to the previous sketch.
+  // (The drawn sketch is rebuilt with each stroke under the same name: its parts keep their thresholds.)
+  if (input->name != scopeName_) partThresholds_.clear();
+  scopeName_ = input->name;
+  const QSignalBlocker block(scope_);
+  scope_->clear();
+  scope_->addItem("all parts");
+  for (vtkIdType k = 0; k < input->polyData()->GetNumberOfLines(); ++k) scope_->addItem(QString("part %1").arg(k + 1));
+  showScope(0);
+}
+
+void SketchPanel::setThresholdScope(int part) { scope_->setCurrentIndex(part + 1); }
+
+void SketchPanel::showScope(int index) {
+  // The sliders show the chosen scope's values without re-running.
+  const auto custom = partThresholds_.find(index - 1);
+  const Thresholds& values = index > 0 && custom != partThresholds_.end() ? custom->second : global_;
+  for (int i = 0; i < 4; ++i) {
+    const QSignalBlocker block(thresholds_[i]);
+    thresholds_[i]->setValue(int(values[size_t(i)]));
+  }
+  for (int i = 0; i < 4; ++i) values_[i]->setNum(thresholds_[i]->value());
 }
 
 bool SketchPanel::addStroke(const QVector<QPointF>& points, const Placement& placement) {
@@ -123,10 +162,11 @@ bool SketchPanel::addStroke(const QVector<QPointF>& points, const Placement& pla
 vtkSmartPointer<vtkAlgorithm> SketchPanel::makeFilter(SceneObject* input, QString&) {
   auto filter = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
   filter->SetInputData(copyOf(input));
-  filter->SetSimplificationThreshold(thresholds_[0]->value());
-  filter->SetMergingThreshold(thresholds_[1]->value());
-  filter->SetPruningThreshold(thresholds_[2]->value());
-  filter->SetCollapsingThreshold(thresholds_[3]->value());
+  filter->SetSimplificationThreshold(global_[0]);
+  filter->SetMergingThreshold(global_[1]);
+  filter->SetPruningThreshold(global_[2]);
+  filter->SetCollapsingThreshold(global_[3]);
+  for (const auto& [part, t] : partThresholds_) filter->SetPartThresholds(part, t[0], t[1], t[2], t[3]);
   filter->SetThickness(form()->value("Thickness"));
   filter->SetInflate(form()->isOn("Inflate"));
   return filter;

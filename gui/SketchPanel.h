@@ -9,7 +9,12 @@
 #include <QPointF>
 #include <QVector>
 
+#include <array>
+#include <map>
+
 class QCheckBox;
+class QComboBox;
+class QLabel;
 class QSlider;
 
 namespace medial::gui {
@@ -28,6 +33,8 @@ class SketchPanel : public FilterPanel {
   bool addStroke(const QVector<QPointF>& points,
                  const Placement& placement = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
   bool isDrawing() const;
+  // Which thresholds the sliders set: -1 the global ones, k those of part k (0-based).
+  void setThresholdScope(int part);
   void setDrawing(bool on);
 
  signals:
@@ -36,11 +43,20 @@ class SketchPanel : public FilterPanel {
  protected:
   vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) override;
   void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) override;
+  void inputChanged(SceneObject* input) override;
 
  private:
+  using Thresholds = std::array<double, 4>;  // ES, EM, ET, EC in sketch pixels
+
   void parameterChanged();
+  void showScope(int index);
 
   QSlider* thresholds_[4] = {};
+  QComboBox* scope_ = nullptr;
+  Thresholds global_ = {5, 30, 30, 10};
+  std::map<int, Thresholds> partThresholds_;
+  QLabel* values_[4] = {};
+  QString scopeName_;
   QCheckBox* live_ = nullptr;
   QCheckBox* draw_ = nullptr;
 };

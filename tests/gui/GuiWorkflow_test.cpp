@@ -40,6 +40,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -483,4 +484,28 @@ TEST_F(GuiWorkflow, VolumeRenderingOfTheShownVolume) {
   window->resetCamera();
   EXPECT_GT(screenshot("cranium-volume-rendering"), 0.05);
   window->grab().save(QString::fromStdString(dir + "/cranium-window.png"));
+}
+
+TEST_F(GuiWorkflow, SketchThresholdsPerPart) {
+  open(dataPath("sketches/bird.txt"));  // body, then two wings
+  SketchPanel* panel = window->sketchPanel();
+  ASSERT_TRUE(runThroughUi(panel)) << errors.join("\n").toStdString();
+  auto nodesPerPart = [this] {
+    std::map<int, int> count;
+    vtkDataArray* part = object("bird.txt skeleton")->polyData()->GetPointData()->GetArray("Part");
+    for (vtkIdType i = 0; i < part->GetNumberOfTuples(); ++i) ++count[int(part->GetComponent(i, 0))];
+    return count;
+  };
+  const auto before = nodesPerPart();
+  ASSERT_EQ(before.size(), 3u);
+  // Collapse edges hard in the first wing only (part 1): the body and the other wing keep their nodes.
+  panel->setThresholdScope(1);
+  panel->thresholdSlider(3)->setValue(100);
+  panel->wait();
+  const auto after = nodesPerPart();
+  EXPECT_LT(after.at(1), before.at(1));
+  EXPECT_EQ(after.at(2), before.at(2));
+  // Back to the global scope: the sliders show the global values again.
+  panel->setThresholdScope(-1);
+  EXPECT_EQ(panel->thresholdSlider(3)->value(), 10);
 }
