@@ -24,7 +24,7 @@ namespace medial::cli {
 int runCenterline(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args, {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain", "--section-spacing",
-              "--section-rays", "--antecedent-width"},
+              "--section-rays", "--antecedent-width", "--centering"},
              {"--fill-holes", "--keep-border-parts", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("centerline needs exactly one VOLUME (file or DICOM folder)");
   const std::string input = parsed.positional[0];
@@ -58,6 +58,12 @@ int runCenterline(const std::vector<std::string>& args) {
     const double width = parseNumbers(parsed.value("--antecedent-width"), 1, "--antecedent-width")[0];
     if (!(width > 0)) throw UsageError("--antecedent-width must be positive");
     filter->SetAntecedentWidth(width);
+  }
+  if (parsed.has("--centering")) {
+    const double passes = parseNumbers(parsed.value("--centering"), 1, "--centering")[0];
+    if (!(passes >= 0 && passes <= 20 && passes == double(int(passes))))
+      throw UsageError("--centering must be a whole number in 0..20");
+    filter->SetCenteringIterations(int(passes));
   }
   const std::string profile = parsed.value("--profile"), terrain = parsed.value("--terrain");
   if (parsed.has("--profile") && profile.empty()) throw UsageError("--profile needs a file name");

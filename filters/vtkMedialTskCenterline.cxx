@@ -151,6 +151,7 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   medial::TskParameters p;
   p.antecedentWidth = this->AntecedentWidth;
   p.sampleSpacing = this->SampleSpacing;
+  p.centeringIterations = this->CenteringIterations;
   const medial::Centerline centerline = medial::tskAxis(volume, clusters, p);
   if (centerline.points.size() < 2) {
     vtkErrorMacro(<< "the structure is too small for a centerline");

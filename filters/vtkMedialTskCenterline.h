@@ -58,6 +58,10 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   /// Width of the TSK antecedent Gaussians relative to their cluster (default 0.3).
   vtkSetMacro(AntecedentWidth, double);
   vtkGetMacro(AntecedentWidth, double);
+  /// Passes that move the TSK curve towards the centre of its perpendicular sections (the paper's
+  /// centricity criterion, §2, enforced after its two phases; default 2, 0 = the paper's curve as is).
+  vtkSetClampMacro(CenteringIterations, int, 0, 20);
+  vtkGetMacro(CenteringIterations, int);
   /// Distance between output points in mm (0: the smallest voxel spacing).
   vtkSetMacro(SampleSpacing, double);
   vtkGetMacro(SampleSpacing, double);
@@ -100,6 +104,7 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   double Seed[3] = {0, 0, 0};
   double AntecedentWidth = 0.3;
   double SampleSpacing = 0;
+  int CenteringIterations = 2;
   bool ComputeSections = false;
   double SectionSpacing = 1.0;
   int SectionRays = 72;

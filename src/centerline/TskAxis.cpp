@@ -1,4 +1,5 @@
 #include "centerline/TskAxis.h"
+#include "centerline/TubeSections.h"
 
 #include <algorithm>
 #include <cmath>
@@ -169,6 +170,12 @@ Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, 
   for (int s = 0; s <= dense; ++s) {
     curve.push_back(model(first + (last - first) * double(s) / dense));
     if (s > 0) length.push_back(length.back() + (curve[size_t(s)] - curve[size_t(s) - 1]).norm());
+  }
+  // Beyond the paper's two phases: the centricity criterion of its §2 enforced on the TSK curve (each point
+  // moved towards the centre of its perpendicular section, the moves smoothed along the curve).
+  if (p.centeringIterations > 0) {
+    curve = centerInSections(volume, curve, 36, p.centeringIterations);
+    for (size_t k = 1; k < curve.size(); ++k) length[k] = length[k - 1] + (curve[k] - curve[k - 1]).norm();
   }
   const double step = p.sampleSpacing > 0 ? p.sampleSpacing : volume.spacing.minCoeff();
   const double total = length.back();

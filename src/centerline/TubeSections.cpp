@@ -125,4 +125,77 @@ TubeSections tubeSections(const BinaryVolume& volume, const std::vector<Eigen::V
   return result;
 }
 
+std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::vector<Eigen::Vector3d> axis,
+                                              int rays, int iterations, double smoothing) {
+  const size_t n = axis.size();
+  if (n < 3 || rays < 8) return axis;
+  const double smallest = volume.spacing.minCoeff();
+  const double step = 0.2 * smallest, limit = 100.0 * smallest;
+  const Eigen::Matrix3d toIndex = volume.spacing.cwiseInverse().asDiagonal() * volume.direction.inverse();
+  for (int iteration = 0; iteration < iterations; ++iteration) {
+    std::vector<Eigen::Vector3d> offset(n, Eigen::Vector3d::Zero());
+    std::vector<double> radii;  // median ray length of every section used
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    for (size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3d tangent = (axis[std::min(i + 1, n - 1)] - axis[i > 0 ? i - 1 : 0]).normalized();
+      if (i == 0) normal = tangent.unitOrthogonal();
+      normal = (normal - normal.dot(tangent) * tangent).normalized();
+      const Eigen::Vector3d binormal = tangent.cross(normal);
+      // The wall polygon in the section's (normal, binormal) coordinates, and its area centroid.
+      std::vector<Eigen::Vector2d> wall;
+      for (int r = 0; r < rays; ++r) {
+        const double angle = 2 * M_PI * r / rays;
+        const double d = wallDistance(volume, toIndex, axis[i], std::cos(angle) * normal + std::sin(angle) * binormal, step, limit);
+        if (std::isnan(d)) break;
+        wall.emplace_back(d * std::cos(angle), d * std::sin(angle));
+      }
+      if (int(wall.size()) < rays) continue;
+      // Where the plane cuts a bend obliquely, or reaches another loop, a few rays run far: such a section
+      // says little about the centre. Rays longer than 1.5 x the median are clipped, and a section with
+      // more than a quarter of them clipped is skipped.
+      std::vector<double> lengths;
+      for (const auto& w : wall) lengths.push_back(w.norm());
+      std::nth_element(lengths.begin(), lengths.begin() + rays / 2, lengths.end());
+      const double median = lengths[size_t(rays / 2)], cap = 1.5 * median;
+      int clipped = 0;
+      for (auto& w : wall)
+        if (w.norm() > cap) w *= cap / w.norm(), ++clipped;
+      if (clipped > rays / 4) continue;
+      radii.push_back(median);
+      double area = 0;
+      Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+      for (int r = 0; r < rays; ++r) {
+        const Eigen::Vector2d& a = wall[size_t(r)];
+        const Eigen::Vector2d& b = wall[size_t((r + 1) % rays)];
+        const double cross = a.x() * b.y() - a.y() * b.x();
+        area += cross;
+        centroid += cross * (a + b);
+      }
+      if (std::abs(area) < 1e-12) continue;
+      centroid /= 3 * area;
+      if (centroid.norm() > 0.5 * median) centroid *= 0.5 * median / centroid.norm();  // small steps
+      offset[i] = centroid.x() * normal + centroid.y() * binormal;
+    }
+    if (radii.empty()) break;
+    // Within a radius of either end the sections cut the end caps: the moves fade out towards the ends.
+    std::vector<double> arc(n, 0.0);
+    for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + (axis[i] - axis[i - 1]).norm();
+    std::nth_element(radii.begin(), radii.begin() + long(radii.size() / 2), radii.end());
+    const double typical = std::max(radii[radii.size() / 2], 1e-9);
+    for (size_t i = 0; i < n; ++i) offset[i] *= std::clamp(std::min(arc[i], arc.back() - arc[i]) / typical, 0.0, 1.0);
+    // Moving average of the moves over +-smoothing mm of arc length.
+    std::vector<Eigen::Vector3d> moved(axis);
+    size_t lo = 0, hi = 0;
+    for (size_t i = 0; i < n; ++i) {
+      while (arc[i] - arc[lo] > smoothing) ++lo;
+      while (hi + 1 < n && arc[hi + 1] - arc[i] <= smoothing) ++hi;
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (size_t k = lo; k <= hi; ++k) sum += offset[k];
+      moved[i] = axis[i] + sum / double(hi - lo + 1);
+    }
+    axis = std::move(moved);
+  }
+  return axis;
+}
+
 }  // namespace medial

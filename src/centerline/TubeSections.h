@@ -37,4 +37,11 @@ TubeSections tubeSections(const BinaryVolume& volume, const std::vector<Eigen::V
                           const SectionParameters& parameters = {},
                           const std::function<bool(double)>& keepGoing = nullptr);
 
+// Centricity (the paper's §2: in the section perpendicular to the axis, the axis point should be as far
+// as possible from the wall): moves every point of `axis` towards the centroid of its section's wall
+// polygon (`rays` rays), the moves smoothed along the axis over +-`smoothing` mm so that the line stays
+// smooth, `iterations` times. Points whose section has no closed wall stay. Returns the moved points.
+std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::vector<Eigen::Vector3d> axis,
+                                              int rays = 36, int iterations = 3, double smoothing = 2.0);
+
 }  // namespace medial

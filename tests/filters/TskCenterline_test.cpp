@@ -82,13 +82,37 @@ TEST_P(TubePhantoms, CenterlineFollowsTheTrueAxis) {
               static_cast<long long>(centerline->GetNumberOfPoints()), arc->GetTuple1(arc->GetNumberOfTuples() - 1),
               mean, worst);
   EXPECT_LT(mean, GetParam().maxMeanError);
-  EXPECT_LT(worst, 2.0);
+  EXPECT_LT(worst, 1.6);
+}
+
+TEST(TskCenterlineFilter, CenteringBringsTheAxisCloserThanThePapersCurve) {
+  const std::string folder = medial::test::dataPath("volumes/tubes/");
+  const auto imageData = read(folder + "s-3d.nii.gz");
+  const auto axisData = read(folder + "s-3d-axis.vtp");
+  auto meanError = [&](int iterations) {
+    auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+    filter->SetInputData(imageData);
+    filter->SetLabel(1);
+    filter->SetCenteringIterations(iterations);
+    filter->Update();
+    vtkPolyData* line = filter->GetOutput();
+    double sum = 0;
+    for (vtkIdType i = 0; i < line->GetNumberOfPoints(); ++i) {
+      double p[3];
+      line->GetPoint(i, p);
+      sum += distanceToLine(p, vtkPolyData::SafeDownCast(axisData));
+    }
+    return sum / double(std::max<vtkIdType>(line->GetNumberOfPoints(), 1));
+  };
+  const double paper = meanError(0), centred = meanError(2);
+  EXPECT_LT(centred, 0.5 * paper) << "paper's curve " << paper << " mm, centred " << centred << " mm";
 }
 
 INSTANTIATE_TEST_SUITE_P(Paper, TubePhantoms,
-                         ::testing::Values(Phantom{"u", 0.4}, Phantom{"s-plane", 0.55}, Phantom{"s-3d", 0.55},
-                                           Phantom{"s-radius", 0.65}, Phantom{"helix", 0.35},
-                                           Phantom{"helix-tight", 0.35}),
+                         // Mean bounds with the default centering (2 passes); measured 0.06-0.15 mm.
+                         ::testing::Values(Phantom{"u", 0.15}, Phantom{"s-plane", 0.2}, Phantom{"s-3d", 0.2},
+                                           Phantom{"s-radius", 0.25}, Phantom{"helix", 0.15},
+                                           Phantom{"helix-tight", 0.15}),
                          [](const ::testing::TestParamInfo<Phantom>& info) {
                            std::string name = info.param.name;
                            std::replace(name.begin(), name.end(), '-', '_');
