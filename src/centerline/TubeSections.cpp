@@ -134,7 +134,8 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
   const Eigen::Matrix3d toIndex = volume.spacing.cwiseInverse().asDiagonal() * volume.direction.inverse();
   for (int iteration = 0; iteration < iterations; ++iteration) {
     std::vector<Eigen::Vector3d> offset(n, Eigen::Vector3d::Zero());
-    std::vector<double> radii;  // median ray length of every section used
+    std::vector<char> measured(n, 0);  // the section gave a centre
+    std::vector<double> radii;         // median ray length of every section used
     Eigen::Vector3d normal = Eigen::Vector3d::Zero();
     for (size_t i = 0; i < n; ++i) {
       const Eigen::Vector3d tangent = (axis[std::min(i + 1, n - 1)] - axis[i > 0 ? i - 1 : 0]).normalized();
@@ -161,6 +162,11 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
       for (auto& w : wall)
         if (w.norm() > cap) w *= cap / w.norm(), ++clipped;
       if (clipped > rays / 4) continue;
+      // An elongated section (an oblique cut through a bend, or a polyp reaching in) does not locate the
+      // centre either: skip it when the longest ray exceeds the shortest by more than 1.8 times.
+      double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+      for (const auto& w : wall) shortest = std::min(shortest, w.norm()), longest = std::max(longest, w.norm());
+      if (longest > 1.8 * shortest) continue;
       radii.push_back(median);
       double area = 0;
       Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
@@ -175,11 +181,30 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
       centroid /= 3 * area;
       if (centroid.norm() > 0.5 * median) centroid *= 0.5 * median / centroid.norm();  // small steps
       offset[i] = centroid.x() * normal + centroid.y() * binormal;
+      measured[i] = 1;
     }
     if (radii.empty()) break;
-    // Within a radius of either end the sections cut the end caps: the moves fade out towards the ends.
     std::vector<double> arc(n, 0.0);
     for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + (axis[i] - axis[i - 1]).norm();
+    // Skipped sections (oblique cuts at sharp bends) take the move interpolated between their measured
+    // neighbours: a zero move among moved neighbours would put a kink in the line.
+    size_t previous = n;  // last measured index
+    for (size_t i = 0; i <= n; ++i) {
+      if (i < n && !measured[i]) continue;
+      const size_t first = previous == n ? 0 : previous + 1;
+      for (size_t k = first; k < i; ++k) {
+        if (previous == n && i == n) break;  // nothing measured at all
+        if (previous == n) offset[k] = offset[i];
+        else if (i == n) offset[k] = offset[previous];
+        else {
+          const double span = arc[i] - arc[previous];
+          const double t = span > 0 ? (arc[k] - arc[previous]) / span : 0.0;
+          offset[k] = (1 - t) * offset[previous] + t * offset[i];
+        }
+      }
+      previous = i;
+    }
+    // Within a radius of either end the sections cut the end caps: the moves fade out towards the ends.
     std::nth_element(radii.begin(), radii.begin() + long(radii.size() / 2), radii.end());
     const double typical = std::max(radii[radii.size() / 2], 1e-9);
     for (size_t i = 0; i < n; ++i) offset[i] *= std::clamp(std::min(arc[i], arc.back() - arc[i]) / typical, 0.0, 1.0);
@@ -195,7 +220,22 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
     }
     axis = std::move(moved);
   }
-  return axis;
+  // Sections that disagree from one point to the next (a bend cut obliquely) leave sub-voxel wiggles:
+  // one moving average of the positions over +-1 voxel smooths them without flattening the bends.
+  std::vector<double> arc(n, 0.0);
+  for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + (axis[i] - axis[i - 1]).norm();
+  std::vector<Eigen::Vector3d> smooth(axis);
+  const double window = volume.spacing.maxCoeff();
+  size_t lo = 0, hi = 0;
+  for (size_t i = 0; i < n; ++i) {
+    while (arc[i] - arc[lo] > window) ++lo;
+    while (hi + 1 < n && arc[hi + 1] - arc[i] <= window) ++hi;
+    const size_t reach = std::min(i - lo, hi - i);  // symmetric, so the ends stay where they are
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (size_t k = i - reach; k <= i + reach; ++k) sum += axis[k];
+    smooth[i] = sum / double(2 * reach + 1);
+  }
+  return smooth;
 }
 
 }  // namespace medial
