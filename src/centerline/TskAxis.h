@@ -30,7 +30,7 @@ struct TskParameters {
   double antecedentWidth = 0.3;  // sigma_j as a fraction of cluster j's span in t (see the header)
   double sampleSpacing = 0;      // mm between output points; 0: the smallest voxel spacing
   // Passes of centerInSections (TubeSections.h) over the TSK curve; 0 keeps the paper's curve. 2 by
-  // default: on the tube phantoms the mean distance to the true axis drops from 0.28-0.54 mm to 0.05-0.13.
+  // default: on the tube phantoms the mean distance to the true axis drops from 0.28-0.54 mm to 0.05-0.10.
   int centeringIterations = 2;
 };
 
