@@ -25,7 +25,7 @@ int runCenterline(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args, {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain", "--section-spacing",
               "--section-rays", "--antecedent-width", "--centering"},
-             {"--fill-holes", "--keep-border-parts", "--quiet", "--timings"}});
+             {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("centerline needs exactly one VOLUME (file or DICOM folder)");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -59,6 +59,7 @@ int runCenterline(const std::vector<std::string>& args) {
     if (!(width > 0)) throw UsageError("--antecedent-width must be positive");
     filter->SetAntecedentWidth(width);
   }
+  filter->SetDetectBranches(parsed.has("--branches"));
   if (parsed.has("--centering")) {
     const double passes = parseNumbers(parsed.value("--centering"), 1, "--centering")[0];
     if (!(passes >= 0 && passes <= 20 && passes == double(int(passes))))

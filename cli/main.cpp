@@ -42,7 +42,7 @@ const std::vector<Command>& commands() {
        runSkeleton},
       {"centerline", "TSK centerline of a tubular structure in a CT or label volume",
        "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z]\n"
-       "                         [--fill-holes] [--keep-border-parts] [--antecedent-width W] [--centering N]\n"
+       "                         [--fill-holes] [--keep-border-parts] [--branches] [--antecedent-width W] [--centering N]\n"
        "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] [--quiet]\n"
        "                         [--timings]\n\n"
        "Follows a tube (colon, vessel) in VOLUME (.nii .nii.gz .mha .mhd .nrrd .inr .vti or a DICOM folder) by\n"
@@ -56,6 +56,8 @@ const std::vector<Command>& commands() {
        "  --fill-holes              fill cavities of the structure first\n"
        "  --keep-border-parts       keep thresholded parts that touch the volume's border\n"
        "  --antecedent-width W      TSK Gaussian width relative to a cluster (default 0.3)\n"
+       "  --branches                a branching structure (vessels, airways): one polyline per branch,\n"
+       "                            cell data Branch and ParentBranch (sections follow the first one)\n"
        "  --centering N             passes moving the axis to the centre of its sections (the paper's\n"
        "                            centricity criterion; default 2, 0 = the TSK curve as is)\n"
        "  --profile PROFILE.csv     perpendicular sections every K mm: arc length, min/max diameter,\n"

@@ -9,6 +9,9 @@ analytic axes as VTP polylines (NAME-axis.vtp, points in mm):
     s-radius.nii.gz   an S whose radius changes from 3 to 7 along it
     helix.nii.gz      a helix of two turns
     helix-tight.nii.gz  a tighter helix of three turns, anisotropic spacing 0.7 x 0.7 x 1.0 mm
+and a branching tree (issue 5) with one polyline per branch in its axis file:
+    tree.nii.gz       a trunk (radius 5) splitting into two branches (radius 4), one of which splits again
+                      (radius 3): five branches
 """
 import math
 import os
@@ -51,13 +54,17 @@ def write_nifti(inside, spacing, path):
 
 
 def write_axis(axis, path):
+    write_axes([axis], path)
+
+
+def write_axes(axes, path):
+    """One polyline per axis (a branch), in mm."""
     points = vtk.vtkPoints()
-    for p in axis:
-        points.InsertNextPoint(*p)
     line = vtk.vtkCellArray()
-    line.InsertNextCell(len(axis))
-    for i in range(len(axis)):
-        line.InsertCellPoint(i)
+    for axis in axes:
+        line.InsertNextCell(len(axis))
+        for p in axis:
+            line.InsertCellPoint(points.InsertNextPoint(*p))
     polydata = vtk.vtkPolyData()
     polydata.SetPoints(points)
     polydata.SetLines(line)
@@ -91,6 +98,33 @@ PHANTOMS = [
      lambda t: 3.5, (69, 69, 62), (0.7, 0.7, 1.0)),
 ]
 
+def bezier(p0, p1, p2):
+    """A quadratic Bezier branch from p0 (its junction) through the pull of p1 to p2."""
+    return lambda t: tuple((1 - t) ** 2 * a + 2 * (1 - t) * t * b + t * t * c for a, b, c in zip(p0, p1, p2))
+
+
+# The tree: (curve, radius) per branch; every branch starts on its parent's end (a junction).
+TREE = [
+    (bezier((40, 30, 6), (40, 30, 25), (40, 30, 42)), 5.0),     # trunk
+    (bezier((40, 30, 42), (40, 30, 55), (18, 30, 78)), 4.0),    # left branch
+    (bezier((40, 30, 42), (40, 30, 55), (62, 30, 70)), 4.0),    # right branch, which splits again:
+    (bezier((62, 30, 70), (68, 30, 80), (68, 44, 100)), 3.0),
+    (bezier((62, 30, 70), (68, 30, 80), (70, 16, 100)), 3.0),
+]
+
+
+def make_tree(folder):
+    size, spacing = (84, 60, 108), (1.0, 1.0, 1.0)
+    inside, axes = None, []
+    for curve, r in TREE:
+        part, axis = voxelize(curve, lambda t, r=r: r, size, spacing, samples=300)
+        inside = part if inside is None else np.maximum(inside, part)
+        axes.append(axis)
+    write_nifti(inside, spacing, os.path.join(folder, "tree.nii.gz"))
+    write_axes(axes, os.path.join(folder, "tree-axis.vtp"))
+    print("%-12s %s voxels, %d inside, %d branches" % ("tree", "x".join(map(str, size)), int(inside.sum()), len(axes)))
+
+
 if __name__ == "__main__":
     folder = os.path.join(HERE, "volumes", "tubes")
     os.makedirs(folder, exist_ok=True)
@@ -99,3 +133,4 @@ if __name__ == "__main__":
         write_nifti(inside, spacing, os.path.join(folder, name + ".nii.gz"))
         write_axis(axis, os.path.join(folder, name + "-axis.vtp"))
         print("%-12s %s voxels, %d inside" % (name, "x".join(map(str, size)), int(inside.sum())))
+    make_tree(folder)

@@ -1,11 +1,14 @@
 #include "vtkMedialTskCenterline.h"
 
+#include "centerline/Branches.h"
 #include "centerline/TskAxis.h"
 #include "centerline/TubeSections.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -18,6 +21,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkTable.h>
 
+#include <algorithm>
 #include <cmath>
 
 vtkStandardNewMacro(vtkMedialTskCenterline);
@@ -139,46 +143,127 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
     }
     seed = volume.index(i, j, k);
   }
-  const medial::TubularClusters clusters = medial::structureTube(volume, seed, [this](double f) {
-    this->UpdateProgress(0.1 + 0.7 * f);
-    return !this->GetAbortExecute();
-  });
-  if (!clusters.ok()) {
-    vtkErrorMacro(<< clusters.error);
-    return 0;
-  }
-  this->PrimitiveCenterlinePoints = int(clusters.primitive.size());
   medial::TskParameters p;
   p.antecedentWidth = this->AntecedentWidth;
   p.sampleSpacing = this->SampleSpacing;
   p.centeringIterations = this->CenteringIterations;
-  const medial::Centerline centerline = medial::tskAxis(volume, clusters, p);
-  if (centerline.points.size() < 2) {
-    vtkErrorMacro(<< "the structure is too small for a centerline");
+  std::vector<medial::Centerline> branches;
+  std::vector<int> parents;
+  if (!(this->DetectBranches ? this->FollowBranches(volume, seed, p, branches, parents)
+                             : this->FollowTube(volume, seed, p, branches, parents)))
     return 0;
-  }
 
+  // One polyline per branch; a branch starts at the point of its parent nearest to its own first point
+  // (the junction, shared).
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   auto radius = vtkSmartPointer<vtkDoubleArray>::New();
   radius->SetName("Radius");
   auto arcLength = vtkSmartPointer<vtkDoubleArray>::New();
   arcLength->SetName("ArcLength");
-  auto line = vtkSmartPointer<vtkCellArray>::New();
-  line->InsertNextCell(vtkIdType(centerline.points.size()));
-  for (size_t k = 0; k < centerline.points.size(); ++k) {
-    const auto& q = centerline.points[k];
-    line->InsertCellPoint(points->InsertNextPoint(q.x(), q.y(), q.z()));
-    radius->InsertNextValue(centerline.radius[k]);
-    arcLength->InsertNextValue(centerline.arcLength[k]);
+  auto branchId = vtkSmartPointer<vtkIntArray>::New();
+  branchId->SetName("Branch");
+  auto parentId = vtkSmartPointer<vtkIntArray>::New();
+  parentId->SetName("ParentBranch");
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  std::vector<vtkIdType> firstId(branches.size());
+  for (size_t b = 0; b < branches.size(); ++b) {
+    const medial::Centerline& centerline = branches[b];
+    firstId[b] = points->GetNumberOfPoints();
+    vtkIdType junction = -1;
+    if (parents[b] >= 0) {
+      const medial::Centerline& parent = branches[size_t(parents[b])];
+      size_t nearest = 0;
+      for (size_t k = 1; k < parent.points.size(); ++k)
+        if ((parent.points[k] - centerline.points[0]).squaredNorm() < (parent.points[nearest] - centerline.points[0]).squaredNorm())
+          nearest = k;
+      junction = firstId[size_t(parents[b])] + vtkIdType(nearest);
+    }
+    lines->InsertNextCell(vtkIdType(centerline.points.size()) + (junction >= 0 ? 1 : 0));
+    if (junction >= 0) lines->InsertCellPoint(junction);
+    for (size_t k = 0; k < centerline.points.size(); ++k) {
+      const auto& q = centerline.points[k];
+      lines->InsertCellPoint(points->InsertNextPoint(q.x(), q.y(), q.z()));
+      radius->InsertNextValue(centerline.radius[k]);
+      arcLength->InsertNextValue(centerline.arcLength[k]);
+    }
+    branchId->InsertNextValue(int(b));
+    parentId->InsertNextValue(parents[b]);
   }
   output->SetPoints(points);
-  output->SetLines(line);
+  output->SetLines(lines);
   output->GetPointData()->AddArray(radius);
   output->GetPointData()->AddArray(arcLength);
+  if (this->DetectBranches) {
+    output->GetCellData()->AddArray(branchId);
+    output->GetCellData()->AddArray(parentId);
+  }
+  const medial::Centerline& centerline = branches.front();
   if (this->ComputeSections && !this->WriteSections(volume, centerline.points, outputVector)) return 0;
   this->UpdateProgress(1.0);
   return 1;
+}
+
+bool vtkMedialTskCenterline::FollowTube(const medial::BinaryVolume& volume, int64_t seed, const medial::TskParameters& p,
+                                        std::vector<medial::Centerline>& branches, std::vector<int>& parents) {
+  const medial::TubularClusters clusters = medial::structureTube(volume, seed, [this](double f) {
+    this->UpdateProgress(0.1 + 0.7 * f);
+    return !this->GetAbortExecute();
+  });
+  if (!clusters.ok()) {
+    vtkErrorMacro(<< clusters.error);
+    return false;
+  }
+  this->PrimitiveCenterlinePoints = int(clusters.primitive.size());
+  branches = {medial::tskAxis(volume, clusters, p)};
+  parents = {-1};
+  if (branches.front().points.size() < 2) {
+    vtkErrorMacro(<< "the structure is too small for a centerline");
+    return false;
+  }
+  return true;
+}
+
+bool vtkMedialTskCenterline::FollowBranches(const medial::BinaryVolume& volume, int64_t seed,
+                                            const medial::TskParameters& p, std::vector<medial::Centerline>& branches,
+                                            std::vector<int>& parents) {
+  // Side branches shorter than MinimumBranchLength (default: twice the structure's largest inscribed
+  // radius) stay part of the branch they leave.
+  double minimum = this->MinimumBranchLength;
+  if (!(minimum > 0)) {
+    const std::vector<float> distance = medial::distanceToOutside(volume);
+    minimum = 2.0 * double(*std::max_element(distance.begin(), distance.end()));
+  }
+  const medial::BranchVolumes split =
+      medial::splitBranches(volume, seed, std::max(2, int(std::ceil(minimum / volume.spacing.minCoeff()))));
+  if (!split.ok()) {
+    vtkErrorMacro(<< split.error);
+    return false;
+  }
+  this->PrimitiveCenterlinePoints = 0;
+  std::vector<int> index(split.voxels.size(), -1);  // split branch -> output branch
+  for (size_t b = 0; b < split.voxels.size(); ++b) {
+    this->UpdateProgress(0.1 + 0.8 * double(b) / double(split.voxels.size()));
+    if (this->GetAbortExecute()) return false;
+    medial::BinaryVolume part = volume;
+    std::fill(part.inside.begin(), part.inside.end(), 0);
+    for (int64_t voxel : split.voxels[b]) part.inside[size_t(voxel)] = 1;
+    const medial::TubularClusters clusters = medial::structureTube(part, split.start[b]);
+    if (!clusters.ok()) continue;  // a branch too small to follow: its parent's line covers it
+    medial::Centerline line = medial::tskAxis(part, clusters, p);
+    if (line.points.size() < 2) continue;
+    const int parent = split.parent[b] >= 0 ? index[size_t(split.parent[b])] : -1;
+    if (split.parent[b] >= 0 && parent < 0) continue;  // its parent was dropped
+    this->PrimitiveCenterlinePoints += int(clusters.primitive.size());
+    index[b] = int(branches.size());
+    branches.push_back(std::move(line));
+    parents.push_back(parent);
+  }
+  if (branches.empty()) {
+    vtkErrorMacro(<< "the structure is too small for a centerline");
+    return false;
+  }
+  return true;
 }
 
 bool vtkMedialTskCenterline::WriteSections(const medial::BinaryVolume& volume,

@@ -46,6 +46,8 @@ std::vector<Parameter> centerlineParameters() {
       P::toggle("FillHoles", "Fill holes", false, "Fill cavities of the structure before the distance field"),
       P::real("AntecedentWidth", "Antecedent width", 0.3, 0.01, 10, 3,
               "Width of the TSK antecedent Gaussians relative to their cluster (§3, default 0.3)"),
+      P::toggle("DetectBranches", "Branching structure", false,
+                "Vessels, airways: one centerline per branch, joined at the junctions (beyond the paper)"),
       P::integer("CenteringIterations", "Centering passes", 2, 0, 20,
                  "Moves the TSK curve to the centre of its perpendicular sections (centricity, §2); 0: the paper's curve"),
       P::real("SampleSpacing", "Output spacing (mm)", 0, 0, 100, 2, "Distance between output points; 0: smallest voxel"),
@@ -150,6 +152,7 @@ vtkSmartPointer<vtkAlgorithm> CenterlinePanel::makeFilter(SceneObject* input, QS
   filter->SetAntecedentWidth(form()->value("AntecedentWidth"));
   filter->SetSampleSpacing(form()->value("SampleSpacing"));
   filter->SetCenteringIterations(static_cast<int>(form()->value("CenteringIterations")));
+  filter->SetDetectBranches(form()->isOn("DetectBranches"));
   if (seed_) filter->SetSeed((*seed_)[0], (*seed_)[1], (*seed_)[2]);
   filter->ComputeSectionsOn();
   filter->SetSectionSpacing(form()->value("SectionSpacing"));

@@ -44,9 +44,9 @@ std::vector<float> sixDirectionBorderDistance(const BinaryVolume& v) {
   return distance;
 }
 
-// Manhattan layers grown inside the structure from `seed` (6-connected breadth-first); returns the
-// voxels of each layer and fills `layer` (-1 where unreached).
-std::vector<std::vector<int64_t>> growLayers(const BinaryVolume& v, int64_t seed, std::vector<int>& layer) {
+}  // namespace
+
+std::vector<std::vector<int64_t>> manhattanLayers(const BinaryVolume& v, int64_t seed, std::vector<int>& layer) {
   layer.assign(size_t(v.voxelCount()), -1);
   std::vector<std::vector<int64_t>> layers;
   std::deque<int64_t> queue{seed};
@@ -72,6 +72,12 @@ std::vector<std::vector<int64_t>> growLayers(const BinaryVolume& v, int64_t seed
   return layers;
 }
 
+namespace {
+
+std::vector<std::vector<int64_t>> growLayers(const BinaryVolume& v, int64_t seed, std::vector<int>& layer) {
+  return manhattanLayers(v, seed, layer);
+}
+
 // The lowest voxel of the last layer: an end of the structure as seen from `from`.
 int64_t farEnd(const BinaryVolume& v, int64_t from, int& distance) {
   std::vector<int> layer;
@@ -81,6 +87,8 @@ int64_t farEnd(const BinaryVolume& v, int64_t from, int& distance) {
   return *std::min_element(last.begin(), last.end(),
                            [&](int64_t a, int64_t b) { return v.physical(a).z() < v.physical(b).z(); });
 }
+
+}  // namespace
 
 int64_t lowestVoxel(const BinaryVolume& v) {
   int64_t best = -1;
@@ -95,8 +103,6 @@ int64_t lowestVoxel(const BinaryVolume& v) {
     }
   return best;
 }
-
-}  // namespace
 
 TubularClusters structureTube(const BinaryVolume& v, int64_t seed, const std::function<bool(double)>& progress) {
   TubularClusters r;

@@ -45,4 +45,11 @@ struct TubularClusters {
 TubularClusters structureTube(const BinaryVolume& volume, int64_t seed = -1,
                               const std::function<bool(double)>& progress = {});
 
+// Step 2a on its own: the Manhattan layers from `seed` (6-connected breadth-first steps inside the
+// structure): the voxels of each layer; `layer` gets every voxel's layer (-1 where unreached).
+std::vector<std::vector<int64_t>> manhattanLayers(const BinaryVolume& volume, int64_t seed, std::vector<int>& layer);
+
+// The structure's voxel of lowest physical z (-1 when it is empty).
+int64_t lowestVoxel(const BinaryVolume& volume);
+
 }  // namespace medial

@@ -6,7 +6,10 @@
 #include "vtkMedialReader.h"
 #include "vtkMedialTskCenterline.h"
 
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkIdList.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -17,6 +20,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <vector>
 
 namespace {
 
@@ -28,23 +33,27 @@ vtkSmartPointer<vtkDataObject> read(const std::string& path) {
 }
 
 double distanceToLine(const double p[3], vtkPolyData* line) {
+  // Over the segments of every polyline cell (an axis file may hold several branches).
   double best = INFINITY;
-  for (vtkIdType k = 0; k + 1 < line->GetNumberOfPoints(); ++k) {
-    double a[3], b[3];
-    line->GetPoint(k, a);
-    line->GetPoint(k + 1, b);
-    double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ap[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-    const double length2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
-    const double t = std::clamp((ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / std::max(length2, 1e-300), 0.0, 1.0);
-    const double d[3] = {a[0] + t * ab[0] - p[0], a[1] + t * ab[1] - p[1], a[2] + t * ab[2] - p[2]};
-    best = std::min(best, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  for (line->GetLines()->InitTraversal(); line->GetLines()->GetNextCell(ids);) {
+    for (vtkIdType k = 0; k + 1 < ids->GetNumberOfIds(); ++k) {
+      double a[3], b[3];
+      line->GetPoint(ids->GetId(k), a);
+      line->GetPoint(ids->GetId(k + 1), b);
+      double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ap[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+      const double length2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
+      const double t = std::clamp((ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / std::max(length2, 1e-300), 0.0, 1.0);
+      const double d[3] = {a[0] + t * ab[0] - p[0], a[1] + t * ab[1] - p[1], a[2] + t * ab[2] - p[2]};
+      best = std::min(best, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+    }
   }
   return best;
 }
 
 struct Phantom {
   const char* name;
-  double maxMeanError;  // mm, measured + margin (the goal, 0.25 voxel, is not met yet)
+  double maxMeanError;  // mm, measured + margin
 };
 
 std::ostream& operator<<(std::ostream& os, const Phantom& p) { return os << p.name; }
@@ -197,4 +206,56 @@ TEST(TskCenterlineFilter, SectionsMeasureTheChangingRadius) {
   EXPECT_EQ(terrain->GetDimensions()[0], 72);
   EXPECT_EQ(terrain->GetDimensions()[1], rows);
   ASSERT_NE(terrain->GetPointData()->GetArray("WallDistance"), nullptr);
+}
+
+TEST(TskCenterlineFilter, BranchingTreeGivesOnePolylinePerBranch) {
+  // tree.nii.gz: a trunk splitting into two branches, the right one splitting again (5 true branches).
+  const std::string folder = medial::test::dataPath("volumes/tubes/");
+  const auto imageData = read(folder + "tree.nii.gz");
+  const auto axisData = read(folder + "tree-axis.vtp");
+  auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  auto errors = medial::ErrorCollector::Watch(filter);
+  filter->SetInputData(imageData);
+  filter->SetLabel(1);
+  filter->DetectBranchesOn();
+  filter->Update();
+  ASSERT_FALSE(errors->HasErrors()) << errors->Joined();
+  vtkPolyData* tree = filter->GetOutput();
+  ASSERT_EQ(tree->GetNumberOfLines(), 5);
+  vtkDataArray* parent = tree->GetCellData()->GetArray("ParentBranch");
+  ASSERT_NE(parent, nullptr);
+  // The topology: the root, two children of the root, two children of one of those.
+  std::map<int, int> children;
+  for (vtkIdType c = 0; c < 5; ++c) ++children[int(parent->GetComponent(c, 0))];
+  EXPECT_EQ(children[-1], 1);
+  EXPECT_EQ(children[0], 2);
+  int grandParents = 0;
+  for (const auto& [p, n] : children) grandParents += p > 0 && n == 2;
+  EXPECT_EQ(grandParents, 1);
+  // Every point lies near the true tree, and each child starts on its parent (a shared junction point).
+  double sum = 0, worst = 0;
+  for (vtkIdType i = 0; i < tree->GetNumberOfPoints(); ++i) {
+    double p[3];
+    tree->GetPoint(i, p);
+    const double d = distanceToLine(p, vtkPolyData::SafeDownCast(axisData));
+    sum += d;
+    worst = std::max(worst, d);
+  }
+  EXPECT_LT(sum / double(tree->GetNumberOfPoints()), 0.5);
+  EXPECT_LT(worst, 2.5);
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  std::vector<std::vector<vtkIdType>> cells;
+  for (tree->GetLines()->InitTraversal(); tree->GetLines()->GetNextCell(ids);)
+    cells.emplace_back(ids->begin(), ids->end());
+  for (size_t c = 0; c < cells.size(); ++c) {
+    const int p = int(parent->GetComponent(vtkIdType(c), 0));
+    if (p < 0) continue;
+    const auto& own = cells[c];
+    const auto& theirs = cells[size_t(p)];
+    EXPECT_NE(std::find(theirs.begin(), theirs.end(), own.front()), theirs.end()) << "branch " << c;
+  }
+  // Without DetectBranches: one polyline, as in the paper.
+  filter->DetectBranchesOff();
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfLines(), 1);
 }
