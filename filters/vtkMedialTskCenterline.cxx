@@ -229,13 +229,11 @@ bool vtkMedialTskCenterline::FollowBranches(const medial::BinaryVolume& volume, 
                                             std::vector<int>& parents) {
   // Side branches shorter than MinimumBranchLength (default: twice the structure's largest inscribed
   // radius) stay part of the branch they leave.
+  const std::vector<float> distance = medial::distanceToOutside(volume);
   double minimum = this->MinimumBranchLength;
-  if (!(minimum > 0)) {
-    const std::vector<float> distance = medial::distanceToOutside(volume);
-    minimum = 2.0 * double(*std::max_element(distance.begin(), distance.end()));
-  }
-  const medial::BranchVolumes split =
-      medial::splitBranches(volume, seed, std::max(2, int(std::ceil(minimum / volume.spacing.minCoeff()))));
+  if (!(minimum > 0)) minimum = 2.0 * double(*std::max_element(distance.begin(), distance.end()));
+  const medial::BranchVolumes split = medial::splitBranches(
+      volume, seed, std::max(2, int(std::ceil(minimum / volume.spacing.minCoeff()))), &distance);
   if (!split.ok()) {
     vtkErrorMacro(<< split.error);
     return false;

@@ -23,7 +23,7 @@ void forNeighbours(const BinaryVolume& v, int64_t voxel, Visit visit) {
 
 }  // namespace
 
-BranchVolumes splitBranches(const BinaryVolume& v, int64_t seed, int minimumLength) {
+BranchVolumes splitBranches(const BinaryVolume& v, int64_t seed, int minimumLength, const std::vector<float>* centrality) {
   BranchVolumes result;
   if (seed < 0) seed = lowestVoxel(v);
   if (seed < 0 || seed >= v.voxelCount() || !v.inside[size_t(seed)]) {
@@ -91,7 +91,16 @@ BranchVolumes splitBranches(const BinaryVolume& v, int64_t seed, int minimumLeng
     for (int c : children[size_t(p)]) significant += height[size_t(c)] >= minimumLength;
     for (int c : children[size_t(p)]) {
       const bool split = significant >= 2 && height[size_t(c)] >= minimumLength;
-      branchOf[size_t(c)] = split ? newBranch(b, pieceVoxels[size_t(c)].front()) : b;
+      if (!split) {
+        branchOf[size_t(c)] = b;
+        continue;
+      }
+      const auto& first = pieceVoxels[size_t(c)];
+      int64_t start = first.front();
+      if (centrality)
+        start = *std::max_element(first.begin(), first.end(),
+                                  [&](int64_t x, int64_t y) { return (*centrality)[size_t(x)] < (*centrality)[size_t(y)]; });
+      branchOf[size_t(c)] = newBranch(b, start);
     }
   }
   for (int p = 0; p < count; ++p)

@@ -22,7 +22,10 @@ struct BranchVolumes {
   bool ok() const { return error.empty(); }
 };
 
-// `seed`: P0 (a voxel inside), or -1 for the structure's lowest voxel.
-BranchVolumes splitBranches(const BinaryVolume& volume, int64_t seed, int minimumLength);
+// `seed`: P0 (a voxel inside), or -1 for the structure's lowest voxel. `centrality` (optional, per voxel,
+// e.g. the distance to the outside): a branch starts at the voxel of its first layer that maximizes it, so
+// that its layers grow from the middle of the junction and not from its wall.
+BranchVolumes splitBranches(const BinaryVolume& volume, int64_t seed, int minimumLength,
+                            const std::vector<float>* centrality = nullptr);
 
 }  // namespace medial
