@@ -79,10 +79,13 @@ std::vector<float> distanceToOutside(const BinaryVolume& volume) {
     line.resize(size_t(volume.size[size_t(axis)]));
     for (c[size_t(a2)] = 0; c[size_t(a2)] < volume.size[size_t(a2)]; ++c[size_t(a2)])
       for (c[size_t(a1)] = 0; c[size_t(a1)] < volume.size[size_t(a1)]; ++c[size_t(a1)]) {
+        bool any = false;  // a line with no inside voxel (most of a CT around a colon) stays all zero
         for (int p = 0; p < volume.size[size_t(axis)]; ++p) {
           c[size_t(axis)] = p;
           line[size_t(p)] = squared[size_t(volume.index(c[0], c[1], c[2]))];
+          any = any || line[size_t(p)] != 0;
         }
+        if (!any) continue;
         distanceTransform1d(line, volume.spacing[axis], out, v, z);
         for (int p = 0; p < volume.size[size_t(axis)]; ++p) {
           c[size_t(axis)] = p;
