@@ -53,6 +53,8 @@
 #include <vtkMath.h>
 #include <vtkProp3DCollection.h>
 #include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkScalarsToColors.h>
 #include <vtkVersion.h>
 #include <vtkVolume.h>
 
@@ -173,6 +175,23 @@ void MainWindow::buildPanels() {
     connect(panel, &FilterPanel::failed, this, &MainWindow::reportError);
   }
   connect(skeleton_, &SkeletonPanel::sceneChanged, this, &MainWindow::render);
+  legend_ = vtkSmartPointer<vtkScalarBarActor>::New();
+  legend_->SetNumberOfLabels(5);
+  legend_->SetLabelFormat("%.2f");
+  legend_->SetPosition(0.86, 0.15);
+  legend_->SetWidth(0.12);
+  legend_->SetHeight(0.6);
+  legend_->SetMaximumWidthInPixels(110);
+  legend_->VisibilityOff();
+  scene_->GetRenderer()->AddViewProp(legend_);
+  connect(skeleton_, &SkeletonPanel::legendChanged, this, [this](vtkScalarsToColors* table, const QString& title) {
+    legend_->SetVisibility(table != nullptr);
+    if (table) {
+      legend_->SetLookupTable(table);
+      legend_->SetTitle(title.toUtf8().constData());
+    }
+    render();
+  });
   connect(centerline_, &CenterlinePanel::flyTo, this, &MainWindow::onFlyTo);
   connect(slices_, &SliceViews::pointClicked, this, [this](const SliceViews::Point& p) {
     if (tabs_->currentWidget() && tabs_->currentWidget()->isAncestorOf(centerline_)) centerline_->setSeed(p);
@@ -277,6 +296,8 @@ void MainWindow::reportError(const QString& title, const QString& message) {
 void MainWindow::log(const QString& text) {
   log_->appendPlainText(QDateTime::currentDateTime().toString("hh:mm:ss  ") + text);
 }
+
+bool MainWindow::legendShown() const { return legend_->GetVisibility() != 0; }
 
 QString MainWindow::logText() const { return log_->toPlainText(); }
 

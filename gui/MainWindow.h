@@ -19,6 +19,7 @@ class QSplitter;
 class QTabWidget;
 class vtkMedialScene;
 class vtkVolume;
+class vtkScalarBarActor;
 class QActionGroup;
 
 namespace medial::gui {
@@ -69,6 +70,7 @@ class MainWindow : public QMainWindow {
   // no volume is shown.
   bool setVolumeRendering(int preset);
   bool hasVolumeRendering() const { return volumeRendering_ != nullptr; }
+  bool legendShown() const;
 
   // Replaces the error dialog (the --screenshot mode prints to stderr instead).
   void setErrorHandler(std::function<void(const QString& title, const QString& message)> handler);
@@ -121,6 +123,7 @@ class MainWindow : public QMainWindow {
   vtkSmartPointer<vtkMedialScene> scene_;
   SceneObject* shownVolume_ = nullptr;
   vtkSmartPointer<vtkVolume> volumeRendering_;  // of shownVolume_
+  vtkSmartPointer<vtkScalarBarActor> legend_;   // the colour scale of a mesh coloured by bone weights
   QActionGroup* volumeRenderingActions_ = nullptr;
   bool shownOnce_ = false;
   bool reading_ = false;  // a file is being read (openFile waits for it with the event loop running)

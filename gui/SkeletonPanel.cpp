@@ -168,6 +168,7 @@ bool SkeletonPanel::selectBone(SceneObject* skeleton, int bone) {
     bone_->setValue(bone);
   }
   emit message(bone < 0 ? QString("Mesh coloured by SkeletonNode") : QString("Mesh coloured by the weight of bone %1").arg(bone));
+  emit legendChanged(bone < 0 ? nullptr : mapper->GetLookupTable(), QString("bone %1").arg(bone));
   emit sceneChanged();
   return true;
 }

@@ -6,6 +6,7 @@
 #include "FilterPanel.h"
 
 class QSpinBox;
+class vtkScalarsToColors;
 
 namespace medial::gui {
 
@@ -25,6 +26,8 @@ class SkeletonPanel : public FilterPanel {
 
  signals:
   void sceneChanged();
+  // The mesh is coloured by a bone's weight with `table` (a legend is due), or by segments (table null).
+  void legendChanged(vtkScalarsToColors* table, const QString& title);
 
  protected:
   vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) override;

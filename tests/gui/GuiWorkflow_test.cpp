@@ -171,6 +171,7 @@ TEST_F(GuiWorkflow, SkeletonGhostViewSqmAndRig) {
 
   // Colour by bone 0's weight; ghost view and cutaway both draw something.
   EXPECT_TRUE(window->skeletonPanel()->selectBone(skeleton, 0));
+  EXPECT_TRUE(window->legendShown()) << "a colour scale for the weights";
   window->setGhostMode(vtkMedialGhostPass::Ghost);
   EXPECT_GT(screenshot("torus-ghost"), 0.05);
   EXPECT_EQ(window->scene()->GetGhostPass()->GetLastInterestCount(), 1);
