@@ -43,7 +43,9 @@
 
 #include <vtkAssembly.h>
 #include <vtkCamera.h>
+#include <vtkCellData.h>
 #include <vtkCellPicker.h>
+#include <vtkDataArray.h>
 #include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageData.h>
@@ -457,6 +459,17 @@ void MainWindow::onViewClicked(const QPointF& position, Qt::KeyboardModifiers mo
       double point[3];
       picker->GetPickPosition(point);
       skeleton_->selectBone(object, SkeletonPanel::nearestBone(object, point));
+    } else if (object->kind == SceneObject::Kind::Skeleton && object->polyData()->GetCellData()->GetArray("Branch")) {
+      // A sketch's skeleton: the clicked bone's branch gets its own epsilon_s (branch-level control).
+      double point[3];
+      picker->GetPickPosition(point);
+      const int bone = SkeletonPanel::nearestBone(object, point);
+      vtkDataArray* part = object->polyData()->GetCellData()->GetArray("Part");
+      vtkDataArray* branch = object->polyData()->GetCellData()->GetArray("Branch");
+      if (bone >= 0 && part && branch->GetComponent(bone, 0) >= 0) {
+        sketch_->selectBranch(int(part->GetComponent(bone, 0)), int(branch->GetComponent(bone, 0)));
+        log(QString("Sketch: ε_s of part %1, branch %2").arg(int(part->GetComponent(bone, 0)) + 1).arg(int(branch->GetComponent(bone, 0))));
+      }
     }
     return;
   }

@@ -53,7 +53,8 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
   auto* rows = new QFormLayout;
   scope_ = new QComboBox(this);
   scope_->setObjectName("thresholdScope");
-  scope_->setToolTip("Part-level control (§3.3): the sliders set the global thresholds, or those of one part");
+  scope_->setToolTip("Multi-level control (§3.3): the sliders set the global thresholds, those of one part, or\n"
+                     "ε_s of one branch (click a bone of the sketch's skeleton in the 3-D view)");
   rows->addRow("Thresholds of", scope_);
   connect(scope_, &QComboBox::currentIndexChanged, this, &SketchPanel::showScope);
   for (int i = 0; i < 4; ++i) {
@@ -91,37 +92,52 @@ bool SketchPanel::isDrawing() const { return draw_->isChecked(); }
 void SketchPanel::setDrawing(bool on) { draw_->setChecked(on); }
 
 void SketchPanel::parameterChanged() {
-  const int part = scope_->currentIndex() - 1;  // -1: all parts (the global thresholds)
+  const QPoint scope = scope_->currentData().toPoint();  // (part, branch); part -1: all parts
   const Thresholds values = {double(thresholds_[0]->value()), double(thresholds_[1]->value()),
                              double(thresholds_[2]->value()), double(thresholds_[3]->value())};
-  if (part < 0)
+  if (scope.y() >= 0)
+    branchSimplification_[{scope.x(), scope.y()}] = values[0];  // branch level: epsilon_s only
+  else if (scope.x() < 0)
     global_ = values;
   else
-    partThresholds_[part] = values;
+    partThresholds_[scope.x()] = values;
   if (live_->isChecked() && input() && objects()->findByName(input()->name + " skeleton")) runAgain();
 }
 
 void SketchPanel::inputChanged(SceneObject* input) {
   // A new sketch: one scope entry per part; part-level thresholds belong to the previous sketch.
   // (The drawn sketch is rebuilt with each stroke under the same name: its parts keep their thresholds.)
-  if (input->name != scopeName_) partThresholds_.clear();
+  if (input->name != scopeName_) partThresholds_.clear(), branchSimplification_.clear();
   scopeName_ = input->name;
   const QSignalBlocker block(scope_);
   scope_->clear();
-  scope_->addItem("all parts");
-  for (vtkIdType k = 0; k < input->polyData()->GetNumberOfLines(); ++k) scope_->addItem(QString("part %1").arg(k + 1));
+  scope_->addItem("all parts", QPoint(-1, -1));
+  for (vtkIdType k = 0; k < input->polyData()->GetNumberOfLines(); ++k)
+    scope_->addItem(QString("part %1").arg(k + 1), QPoint(int(k), -1));
   showScope(0);
 }
 
 void SketchPanel::setThresholdScope(int part) { scope_->setCurrentIndex(part + 1); }
 
+void SketchPanel::selectBranch(int part, int branch) {
+  // One entry at the end of the scope list for the branch last picked (branch level: epsilon_s only).
+  const int last = scope_->count() - 1;
+  if (last > 0 && scope_->itemData(last).toPoint().y() >= 0) scope_->removeItem(last);
+  scope_->addItem(QString("part %1, branch %2 (ε_s)").arg(part + 1).arg(branch), QPoint(part, branch));
+  scope_->setCurrentIndex(scope_->count() - 1);
+}
+
 void SketchPanel::showScope(int index) {
-  // The sliders show the chosen scope's values without re-running.
-  const auto custom = partThresholds_.find(index - 1);
-  const Thresholds& values = index > 0 && custom != partThresholds_.end() ? custom->second : global_;
+  // The sliders show the chosen scope's values without re-running; a branch scope sets epsilon_s only.
+  const QPoint scope = scope_->itemData(index).toPoint();
+  const auto custom = partThresholds_.find(scope.x());
+  Thresholds values = scope.x() >= 0 && custom != partThresholds_.end() ? custom->second : global_;
+  const auto branch = branchSimplification_.find({scope.x(), scope.y()});
+  if (scope.y() >= 0 && branch != branchSimplification_.end()) values[0] = branch->second;
   for (int i = 0; i < 4; ++i) {
     const QSignalBlocker block(thresholds_[i]);
     thresholds_[i]->setValue(int(values[size_t(i)]));
+    thresholds_[i]->setEnabled(i == 0 || scope.y() < 0);
   }
   for (int i = 0; i < 4; ++i) values_[i]->setNum(thresholds_[i]->value());
 }
@@ -167,6 +183,7 @@ vtkSmartPointer<vtkAlgorithm> SketchPanel::makeFilter(SceneObject* input, QStrin
   filter->SetPruningThreshold(global_[2]);
   filter->SetCollapsingThreshold(global_[3]);
   for (const auto& [part, t] : partThresholds_) filter->SetPartThresholds(part, t[0], t[1], t[2], t[3]);
+  for (const auto& [key, epsilon] : branchSimplification_) filter->SetBranchSimplification(key.first, key.second, epsilon);
   filter->SetThickness(form()->value("Thickness"));
   filter->SetInflate(form()->isOn("Inflate"));
   return filter;

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <map>
+#include <utility>
 
 class QCheckBox;
 class QComboBox;
@@ -35,6 +36,8 @@ class SketchPanel : public FilterPanel {
   bool isDrawing() const;
   // Which thresholds the sliders set: -1 the global ones, k those of part k (0-based).
   void setThresholdScope(int part);
+  // Makes the simplification slider set epsilon_s of one branch (the `Branch` cell value) of one part.
+  void selectBranch(int part, int branch);
   void setDrawing(bool on);
 
  signals:
@@ -55,6 +58,7 @@ class SketchPanel : public FilterPanel {
   QComboBox* scope_ = nullptr;
   Thresholds global_ = {5, 30, 30, 10};
   std::map<int, Thresholds> partThresholds_;
+  std::map<std::pair<int, int>, double> branchSimplification_;  // (part, branch) -> epsilon_s
   QLabel* values_[4] = {};
   QString scopeName_;
   QCheckBox* live_ = nullptr;

@@ -26,6 +26,7 @@
 
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkIdList.h>
 #include <vtkMath.h>
 #include <vtkRendererCollection.h>
 #include <vtkCellArray.h>
@@ -509,4 +510,50 @@ TEST_F(GuiWorkflow, SketchThresholdsPerPart) {
   // Back to the global scope: the sliders show the global values again.
   panel->setThresholdScope(-1);
   EXPECT_EQ(panel->thresholdSlider(3)->value(), 10);
+
+  // Branch level: the body's longest branch simplified hard; only epsilon_s applies there.
+  vtkPolyData* skeleton = object("bird.txt skeleton")->polyData();
+  vtkDataArray* part = skeleton->GetCellData()->GetArray("Part");
+  vtkDataArray* branch = skeleton->GetCellData()->GetArray("Branch");
+  ASSERT_TRUE(part && branch);
+  std::map<int, int> bonesOfBranch;
+  for (vtkIdType c = 0; c < skeleton->GetNumberOfCells(); ++c)
+    if (part->GetComponent(c, 0) == 0 && branch->GetComponent(c, 0) >= 0) ++bonesOfBranch[int(branch->GetComponent(c, 0))];
+  ASSERT_FALSE(bonesOfBranch.empty());
+  const auto longest = std::max_element(bonesOfBranch.begin(), bonesOfBranch.end(),
+                                        [](const auto& a, const auto& b) { return a.second < b.second; });
+  ASSERT_GT(longest->second, 1) << "the body needs a branch with several bones";
+  const auto beforeBranch = nodesPerPart();
+  panel->selectBranch(0, longest->first);
+  EXPECT_FALSE(panel->thresholdSlider(1)->isEnabled()) << "a branch has epsilon_s only";
+  panel->thresholdSlider(0)->setValue(50);
+  panel->wait();
+  const auto afterBranch = nodesPerPart();
+  EXPECT_LT(afterBranch.at(0), beforeBranch.at(0));
+  EXPECT_EQ(afterBranch.at(2), beforeBranch.at(2));
+
+  // The same from the 3-D view: a click on a bone of the body picks its branch.
+  window->resetCamera();
+  QTest::qWait(50);
+  skeleton = object("bird.txt skeleton")->polyData();
+  part = skeleton->GetCellData()->GetArray("Part");
+  branch = skeleton->GetCellData()->GetArray("Branch");
+  vtkIdType bone = -1;
+  for (vtkIdType c = 0; c < skeleton->GetNumberOfCells() && bone < 0; ++c)
+    if (part->GetComponent(c, 0) == 0 && branch->GetComponent(c, 0) >= 0) bone = c;
+  ASSERT_GE(bone, 0);
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  skeleton->GetCellPoints(bone, ids);
+  double a[3], b[3], display[3];
+  skeleton->GetPoint(ids->GetId(0), a);
+  skeleton->GetPoint(ids->GetId(1), b);
+  vtkRenderer* renderer = window->scene()->GetRenderer();
+  renderer->SetWorldPoint(0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]), 1.0);
+  renderer->WorldToDisplay();
+  renderer->GetDisplayPoint(display);
+  VtkView* view = window->view();
+  const qreal ratio = view->devicePixelRatioF();
+  QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier,
+                    QPoint(static_cast<int>(display[0] / ratio), static_cast<int>(view->height() - display[1] / ratio)));
+  EXPECT_TRUE(window->logText().contains("Sketch: ε_s of part 1, branch")) << window->logText().toStdString();
 }
