@@ -9,7 +9,10 @@
 #include "vtkMedialOFFReader.h"
 #include "vtkMedialSWCReader.h"
 
+#include <vtkBYUReader.h>
+#include <vtkCompositeDataGeometryFilter.h>
 #include <vtkDataObject.h>
+#include <vtkGLTFReader.h>
 #include <vtkGenericDataObjectReader.h>
 #include <vtkGeometryFilter.h>
 #include <vtkImageData.h>
@@ -35,7 +38,8 @@ vtkStandardNewMacro(vtkMedialReader);
 
 namespace {
 
-const std::set<std::string> kMeshExtensions = {".vtp", ".vtk", ".vtu", ".obj", ".ply", ".stl", ".off", ".swc"};
+const std::set<std::string> kMeshExtensions = {".vtp", ".vtk", ".vtu", ".obj", ".ply", ".stl", ".off",
+                                               ".g",   ".byu", ".gltf", ".glb", ".swc"};
 const std::set<std::string> kVolumeExtensions = {".nii", ".nii.gz", ".mha", ".mhd", ".nrrd", ".nhdr", ".gipl",
                                                  ".dcm", ".inr", ".inr.gz", ".vti", ".inv3"};
 
@@ -93,7 +97,9 @@ bool vtkMedialReader::CanReadFile(const char* fileName) {
   return kMeshExtensions.count(extension) || kVolumeExtensions.count(extension) || isDirectory(fileName);
 }
 
-const char* vtkMedialReader::GetMeshExtensions() { return "*.vtp *.vtk *.vtu *.obj *.ply *.stl *.off *.swc"; }
+const char* vtkMedialReader::GetMeshExtensions() {
+  return "*.vtp *.vtk *.vtu *.obj *.ply *.stl *.off *.g *.byu *.gltf *.glb *.swc";
+}
 
 const char* vtkMedialReader::GetVolumeExtensions() {
   return "*.nii *.nii.gz *.mha *.mhd *.nrrd *.nhdr *.gipl *.dcm *.inr *.inr.gz *.vti *.inv3";
@@ -212,6 +218,17 @@ vtkSmartPointer<vtkDataObject> vtkMedialReader::ReadPolyData(const std::string& 
     auto r = vtkSmartPointer<vtkMedialOFFReader>::New();
     r->SetFileName(path.c_str());
     reader = r;
+  } else if (extension == ".g" || extension == ".byu") {
+    auto r = vtkSmartPointer<vtkBYUReader>::New();
+    r->SetGeometryFileName(path.c_str());
+    reader = r;
+  } else if (extension == ".gltf" || extension == ".glb") {
+    // A glTF scene (e.g. a rig exported by Medial or Blender): its meshes, node transforms applied, merged.
+    auto r = vtkSmartPointer<vtkGLTFReader>::New();
+    r->SetFileName(path.c_str());
+    auto merge = vtkSmartPointer<vtkCompositeDataGeometryFilter>::New();
+    merge->SetInputConnection(r->GetOutputPort());
+    reader = merge;
   } else {  // .swc
     auto r = vtkSmartPointer<vtkMedialSWCReader>::New();
     r->SetFileName(path.c_str());

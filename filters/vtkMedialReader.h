@@ -2,8 +2,9 @@
  * @class vtkMedialReader
  * @brief The one place that opens any input Medial supports, chosen by extension.
  *
- * Meshes and skeletons (output vtkPolyData): .vtp .vtk .vtu (its surface) .obj .ply .stl through VTK's
- * readers, .off (OFF/COFF/NOFF...) through OpenMesh (vtkMedialOFFReader), .swc (vtkMedialSWCReader).
+ * Meshes and skeletons (output vtkPolyData): .vtp .vtk .vtu (its surface) .obj .ply .stl .g/.byu and
+ * .gltf/.glb (the scene's meshes merged, node transforms applied) through VTK's readers, .off
+ * (OFF/COFF/NOFF...) through OpenMesh (vtkMedialOFFReader), .swc (vtkMedialSWCReader).
  * Volumes (output vtkImageData, physical coordinates kept): .nii .nii.gz .mha .mhd .nrrd .nhdr .gipl .dcm
  * and DICOM series directories through ITK (vtkMedialITKImageReader), .inr .inr.gz through CGAL
  * (vtkMedialINRReader), .vti through VTK, .inv3 InVesalius projects (vtkMedialInVesaliusReader).

@@ -6,6 +6,7 @@
 #include "vtkMedialMeshTopology.h"
 #include "vtkMedialReader.h"
 
+#include <vtkBYUWriter.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
@@ -254,6 +255,23 @@ TEST(Readers, InVesaliusHeadCt) {
   image->GetScalarRange(range);
   EXPECT_EQ(range[0], -1024);  // Hounsfield units
   EXPECT_GT(range[1], 2000);   // dental metal
+}
+
+TEST(Readers, ByuMesh) {
+  // The capsule written by VTK's BYU writer comes back with its points and triangles (glTF: the GUI test
+  // reopens an exported rig).
+  const ReadResult capsule = readFile(medial::test::dataPath("meshes/capsule.vtp"));
+  auto* mesh = vtkPolyData::SafeDownCast(capsule.data);
+  ASSERT_NE(mesh, nullptr);
+  const std::string dir = scratchDir("readers-byu-gltf");
+  auto byu = vtkSmartPointer<vtkBYUWriter>::New();
+  byu->SetInputData(mesh);
+  byu->SetGeometryFileName((dir + "/capsule.g").c_str());
+  byu->Write();
+  const ReadResult fromByu = readFile(dir + "/capsule.g");
+  ASSERT_TRUE(fromByu.error.empty()) << fromByu.error;
+  EXPECT_EQ(vtkPolyData::SafeDownCast(fromByu.data)->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+  EXPECT_EQ(vtkPolyData::SafeDownCast(fromByu.data)->GetNumberOfPolys(), mesh->GetNumberOfPolys());
 }
 
 TEST(Readers, ClearErrorsOnBadFiles) {

@@ -182,6 +182,13 @@ TEST_F(GuiWorkflow, SkeletonGhostViewSqmAndRig) {
   // Rig export (GLB) and Save As of the skeleton (SWC).
   ASSERT_TRUE(window->objects()->exportRig(skeleton, QString::fromStdString(dir + "/torus-rig.glb")));
   EXPECT_GT(std::filesystem::file_size(dir + "/torus-rig.glb"), 1000u);
+  // The rig opens again (glTF through VTK's reader): the torus's mesh.
+  const int before = window->objectCount();
+  open(dir + "/torus-rig.glb");
+  ASSERT_EQ(window->objectCount(), before + 1);
+  EXPECT_EQ(window->objects()->at(before)->kind, SceneObject::Kind::Mesh);
+  EXPECT_GT(window->objects()->at(before)->polyData()->GetNumberOfPolys(), 1000);
+  window->objects()->remove(window->objects()->at(before));
   ASSERT_TRUE(window->objects()->save(skeleton, QString::fromStdString(dir + "/torus-skeleton.vtp")));
   // SWC holds trees only: the torus's cycle is refused with a message.
   EXPECT_FALSE(window->objects()->save(skeleton, QString::fromStdString(dir + "/torus-skeleton.swc")));
