@@ -18,11 +18,17 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QElapsedTimer>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QUrl>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QSlider>
 #include <QTabWidget>
 #include <QTest>
+#include <QTimer>
 
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -563,4 +569,37 @@ TEST_F(GuiWorkflow, SketchThresholdsPerPart) {
   QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier,
                     QPoint(static_cast<int>(display[0] / ratio), static_cast<int>(view->height() - display[1] / ratio)));
   EXPECT_TRUE(window->logText().contains("Sketch: ε_s of part 1, branch")) << window->logText().toStdString();
+}
+
+TEST(GuiDialogs, UnreadableFileShowsAnErrorDialog) {
+  if (!medial::test::hasDisplay()) GTEST_SKIP() << "no X display: run the tests under xvfb-run -a";
+  MainWindow window;  // no error handler: errors go to a QMessageBox
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  QString shown;
+  QTimer::singleShot(200, [&shown] {
+    if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+      shown = box->text();
+      box->accept();
+    }
+  });
+  EXPECT_FALSE(window.openFile("/nonexistent/ct.nii.gz"));
+  EXPECT_TRUE(shown.contains("/nonexistent/ct.nii.gz")) << "dialog text: " << shown.toStdString();
+  // The window still works afterwards.
+  EXPECT_TRUE(window.openFile(QString::fromStdString(dataPath("meshes/torus.off"))));
+  EXPECT_EQ(window.objectCount(), 1);
+}
+
+TEST_F(GuiWorkflow, DroppedFilesOpen) {
+  QMimeData mime;
+  mime.setUrls({QUrl::fromLocalFile(QString::fromStdString(dataPath("meshes/capsule.vtp"))),
+                QUrl::fromLocalFile(QString::fromStdString(dataPath("skeletons/hand.swc")))});
+  const QPoint at = window->rect().center();
+  QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(window.get(), &enter);
+  EXPECT_TRUE(enter.isAccepted());
+  QDropEvent drop(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(window.get(), &drop);
+  EXPECT_EQ(window->objectCount(), 2);
+  EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
 }
