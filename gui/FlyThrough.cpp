@@ -76,11 +76,12 @@ Point FlyThrough::at(double s) const {
           points_[a][2] + t * (points_[i][2] - points_[a][2])};
 }
 
-double FlyThrough::radiusAt(double s) const {
+size_t FlyThrough::indexAt(double s) const {
   s = std::clamp(s, 0.0, length());
-  const size_t i = std::min<size_t>(std::lower_bound(arc_.begin(), arc_.end(), s) - arc_.begin(), arc_.size() - 1);
-  return radius_[i];
+  return std::min<size_t>(std::lower_bound(arc_.begin(), arc_.end(), s) - arc_.begin(), arc_.size() - 1);
 }
+
+double FlyThrough::radiusAt(double s) const { return radius_[indexAt(s)]; }
 
 Point FlyThrough::eye(double s) const { return at(s); }
 
@@ -95,9 +96,7 @@ Point FlyThrough::focal(double s) const {
 }
 
 Point FlyThrough::up(double s) const {
-  s = std::clamp(s, 0.0, length());
-  const size_t i = std::min<size_t>(std::lower_bound(arc_.begin(), arc_.end(), s) - arc_.begin(), arc_.size() - 1);
-  return perpendicular(ups_[i], normalized(minus(focal(s), eye(s))));
+  return perpendicular(ups_[indexAt(s)], normalized(minus(focal(s), eye(s))));
 }
 
 void FlyThrough::apply(vtkCamera* camera, double s) const {

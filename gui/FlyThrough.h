@@ -33,6 +33,7 @@ class FlyThrough {
  private:
   Point at(double s) const;
   double radiusAt(double s) const;
+  size_t indexAt(double s) const;  // the first path point at or beyond arc length s
 
   std::vector<Point> points_;
   std::vector<double> arc_;

@@ -406,29 +406,31 @@ void MainWindow::showVolume(SceneObject* volume) {
   slices_->setVolume(vtkImageData::SafeDownCast(volume->data), volume->name);
 }
 
-void MainWindow::onCursorChanged(const SliceViews::Point&) {
-  // The 3-D view's three slices of the shown volume follow the cursor.
+std::vector<vtkImageSlice*> MainWindow::shownVolumeSlices() const {
+  // The three slices vtkMedialScene draws for the shown volume (parts of its assembly).
+  std::vector<vtkImageSlice*> slices;
   auto* assembly = shownVolume_ ? vtkAssembly::SafeDownCast(shownVolume_->prop) : nullptr;
-  if (!assembly) return;
+  if (!assembly) return slices;
   vtkProp3DCollection* parts = assembly->GetParts();
   parts->InitTraversal();
   while (vtkProp3D* part = parts->GetNextProp3D())
-    if (auto* slice = vtkImageSlice::SafeDownCast(part))
-      if (auto* mapper = vtkImageSliceMapper::SafeDownCast(slice->GetMapper()))
-        mapper->SetSliceNumber(slices_->view(mapper->GetOrientation())->sliceIndex());
+    if (auto* slice = vtkImageSlice::SafeDownCast(part)) slices.push_back(slice);
+  return slices;
+}
+
+void MainWindow::onCursorChanged(const SliceViews::Point&) {
+  // The 3-D view's three slices of the shown volume follow the cursor.
+  for (vtkImageSlice* slice : shownVolumeSlices())
+    if (auto* mapper = vtkImageSliceMapper::SafeDownCast(slice->GetMapper()))
+      mapper->SetSliceNumber(slices_->view(mapper->GetOrientation())->sliceIndex());
   render();
 }
 
 void MainWindow::onWindowLevelChanged(double window, double level) {
-  auto* assembly = shownVolume_ ? vtkAssembly::SafeDownCast(shownVolume_->prop) : nullptr;
-  if (!assembly) return;
-  vtkProp3DCollection* parts = assembly->GetParts();
-  parts->InitTraversal();
-  while (vtkProp3D* part = parts->GetNextProp3D())
-    if (auto* slice = vtkImageSlice::SafeDownCast(part)) {
-      slice->GetProperty()->SetColorWindow(window);
-      slice->GetProperty()->SetColorLevel(level);
-    }
+  for (vtkImageSlice* slice : shownVolumeSlices()) {
+    slice->GetProperty()->SetColorWindow(window);
+    slice->GetProperty()->SetColorLevel(level);
+  }
   render();
 }
 

@@ -9,6 +9,7 @@
 #include <vtkSmartPointer.h>
 
 #include <functional>
+#include <vector>
 
 class QComboBox;
 class QMenu;
@@ -18,6 +19,7 @@ class QSlider;
 class QSplitter;
 class QTabWidget;
 class vtkMedialScene;
+class vtkImageSlice;
 class vtkVolume;
 class vtkScalarBarActor;
 class QActionGroup;
@@ -100,6 +102,7 @@ class MainWindow : public QMainWindow {
   void onStrokeDrawn(const QVector<QPointF>& positions);
   void onFlyTo(const std::array<double, 3>& eye, const std::array<double, 3>& focal, const std::array<double, 3>& up);
   void showVolume(SceneObject* volume);
+  std::vector<vtkImageSlice*> shownVolumeSlices() const;
   // The world point under a position of the 3-D view on the plane through `origin` with `normal`.
   bool viewPlanePoint(const QPointF& position, const double origin[3], const double normal[3], double point[3]) const;
   void render();

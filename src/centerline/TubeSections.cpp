@@ -42,6 +42,43 @@ double wallDistance(const BinaryVolume& volume, const Eigen::Matrix3d& toIndex, 
   return kNaN;
 }
 
+// Rays cast in sections of the structure: the wall distance along each of `rays` directions, evenly spaced
+// in angle from `normal` towards `binormal` (NaN where no wall lies within the limit).
+struct SectionRays {
+  SectionRays(const BinaryVolume& volume, double maxRadius)
+      : volume(volume),
+        toIndex(volume.spacing.cwiseInverse().asDiagonal() * volume.direction.inverse()),
+        step(0.2 * volume.spacing.minCoeff()),
+        limit(maxRadius > 0 ? maxRadius : 100.0 * volume.spacing.minCoeff()) {}
+
+  std::vector<double> walls(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, const Eigen::Vector3d& binormal,
+                            int rays) const {
+    std::vector<double> wall(static_cast<size_t>(rays));
+    for (int r = 0; r < rays; ++r) {
+      const double angle = 2 * M_PI * r / rays;
+      wall[size_t(r)] = wallDistance(volume, toIndex, centre, std::cos(angle) * normal + std::sin(angle) * binormal, step, limit);
+    }
+    return wall;
+  }
+
+  const BinaryVolume& volume;
+  const Eigen::Matrix3d toIndex;
+  const double step, limit;
+};
+
+// Angle 0 of the sections transported along the axis: the previous normal without its tangential part (a
+// rotation-minimizing frame for fine spacing), so that sections and the unfolded image do not twist.
+Eigen::Vector3d transportNormal(const Eigen::Vector3d& previous, const Eigen::Vector3d& tangent, bool first) {
+  const Eigen::Vector3d normal = first ? tangent.unitOrthogonal() : previous;
+  return (normal - normal.dot(tangent) * tangent).normalized();
+}
+
+std::vector<double> arcLengths(const std::vector<Eigen::Vector3d>& points) {
+  std::vector<double> arc(points.size(), 0.0);
+  for (size_t i = 1; i < points.size(); ++i) arc[i] = arc[i - 1] + (points[i] - points[i - 1]).norm();
+  return arc;
+}
+
 // The point at arc length s of the polyline, and the unit tangent of its segment.
 void pointAt(const std::vector<Eigen::Vector3d>& axis, const std::vector<double>& arc, double s,
              Eigen::Vector3d& point, Eigen::Vector3d& tangent) {
@@ -61,16 +98,12 @@ TubeSections tubeSections(const BinaryVolume& volume, const std::vector<Eigen::V
                           const SectionParameters& parameters, const std::function<bool(double)>& keepGoing) {
   TubeSections result;
   if (axis.size() < 2 || parameters.spacing <= 0 || parameters.rays < 4) return result;
-  std::vector<double> arc(axis.size(), 0.0);
-  for (size_t i = 1; i < axis.size(); ++i) arc[i] = arc[i - 1] + (axis[i] - axis[i - 1]).norm();
+  const std::vector<double> arc = arcLengths(axis);
   if (arc.back() <= 0) return result;
 
   const int rays = parameters.rays + parameters.rays % 2;  // even: opposite rays pair into diameters
   result.rays = rays;
-  const double smallest = volume.spacing.minCoeff();
-  const double step = 0.2 * smallest;
-  const double limit = parameters.maxRadius > 0 ? parameters.maxRadius : 100.0 * smallest;
-  const Eigen::Matrix3d toIndex = volume.spacing.cwiseInverse().asDiagonal() * volume.direction.inverse();
+  const SectionRays caster(volume, parameters.maxRadius);
 
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   const int sections = int(std::floor(arc.back() / parameters.spacing)) + 1;
@@ -79,17 +112,8 @@ TubeSections tubeSections(const BinaryVolume& volume, const std::vector<Eigen::V
     const double s = n * parameters.spacing;
     Eigen::Vector3d center, tangent;
     pointAt(axis, arc, s, center, tangent);
-    // Angle 0 transported along the axis: the previous normal without its tangential part (a
-    // rotation-minimizing frame for fine spacing), so the unfolded image does not twist.
-    if (n == 0) normal = tangent.unitOrthogonal();
-    normal = (normal - normal.dot(tangent) * tangent).normalized();
-    const Eigen::Vector3d binormal = tangent.cross(normal);
-
-    std::vector<double> wall(size_t(rays), kNaN);
-    for (int r = 0; r < rays; ++r) {
-      const double angle = 2 * M_PI * r / rays;
-      wall[size_t(r)] = wallDistance(volume, toIndex, center, std::cos(angle) * normal + std::sin(angle) * binormal, step, limit);
-    }
+    normal = transportNormal(normal, tangent, n == 0);
+    std::vector<double> wall = caster.walls(center, normal, tangent.cross(normal), rays);
     // The perimeter is measured on the wall distances smoothed over the angle ([1 2 1] / 4, circular): the
     // voxel staircase makes consecutive rays jitter by a fraction of a voxel, and chords through that
     // jitter overestimate the length by several per cent. Diameters and area use the raw distances.
@@ -129,9 +153,7 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
                                               int rays, int iterations, double smoothing) {
   const size_t n = axis.size();
   if (n < 3 || rays < 8) return axis;
-  const double smallest = volume.spacing.minCoeff();
-  const double step = 0.2 * smallest, limit = 100.0 * smallest;
-  const Eigen::Matrix3d toIndex = volume.spacing.cwiseInverse().asDiagonal() * volume.direction.inverse();
+  const SectionRays caster(volume, 0.0);
   for (int iteration = 0; iteration < iterations; ++iteration) {
     std::vector<Eigen::Vector3d> offset(n, Eigen::Vector3d::Zero());
     std::vector<char> measured(n, 0);  // the section gave a centre
@@ -139,18 +161,16 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
     Eigen::Vector3d normal = Eigen::Vector3d::Zero();
     for (size_t i = 0; i < n; ++i) {
       const Eigen::Vector3d tangent = (axis[std::min(i + 1, n - 1)] - axis[i > 0 ? i - 1 : 0]).normalized();
-      if (i == 0) normal = tangent.unitOrthogonal();
-      normal = (normal - normal.dot(tangent) * tangent).normalized();
+      normal = transportNormal(normal, tangent, i == 0);
       const Eigen::Vector3d binormal = tangent.cross(normal);
       // The wall polygon in the section's (normal, binormal) coordinates, and its area centroid.
+      const std::vector<double> distances = caster.walls(axis[i], normal, binormal, rays);
+      if (std::any_of(distances.begin(), distances.end(), [](double d) { return std::isnan(d); })) continue;
       std::vector<Eigen::Vector2d> wall;
       for (int r = 0; r < rays; ++r) {
         const double angle = 2 * M_PI * r / rays;
-        const double d = wallDistance(volume, toIndex, axis[i], std::cos(angle) * normal + std::sin(angle) * binormal, step, limit);
-        if (std::isnan(d)) break;
-        wall.emplace_back(d * std::cos(angle), d * std::sin(angle));
+        wall.emplace_back(distances[size_t(r)] * std::cos(angle), distances[size_t(r)] * std::sin(angle));
       }
-      if (int(wall.size()) < rays) continue;
       // Where the plane cuts a bend obliquely, or reaches another loop, a few rays run far: such a section
       // says little about the centre. Rays longer than 1.5 x the median are clipped, and a section with
       // more than a quarter of them clipped is skipped.
@@ -184,8 +204,7 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
       measured[i] = 1;
     }
     if (radii.empty()) break;
-    std::vector<double> arc(n, 0.0);
-    for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + (axis[i] - axis[i - 1]).norm();
+    const std::vector<double> arc = arcLengths(axis);
     // Skipped sections (oblique cuts at sharp bends) take the move interpolated between their measured
     // neighbours: a zero move among moved neighbours would put a kink in the line.
     size_t previous = n;  // last measured index
@@ -222,8 +241,7 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
   }
   // Sections that disagree from one point to the next (a bend cut obliquely) leave sub-voxel wiggles:
   // one moving average of the positions over +-1 voxel smooths them without flattening the bends.
-  std::vector<double> arc(n, 0.0);
-  for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + (axis[i] - axis[i - 1]).norm();
+  const std::vector<double> arc = arcLengths(axis);
   std::vector<Eigen::Vector3d> smooth(axis);
   const double window = volume.spacing.maxCoeff();
   size_t lo = 0, hi = 0;
