@@ -1,5 +1,5 @@
 // `medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig RIG.glb|RIG.fbx]
-//                  [--weights] [--solver NAME] [--iterations N] [--no-refine]`
+//                  [--weights] [--solver NAME] [--iterations N] [--contraction-vertices N] [--no-refine]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "Progress.h"
@@ -21,7 +21,8 @@ namespace medial::cli {
 
 int runSkeleton(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
-      args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations"},
+      args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations",
+              "--contraction-vertices"},
              {"--no-refine", "--weights", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("skeleton needs exactly one MESH file");
   const std::string input = parsed.positional[0];
@@ -39,6 +40,12 @@ int runSkeleton(const std::vector<std::string>& args) {
     const double nodes = parseNumbers(parsed.value("--nodes"), 1, "--nodes")[0];
     if (!(nodes >= 0) || nodes != int(nodes)) throw UsageError("--nodes must be a whole number >= 0");
     filter->SetTargetNodes(int(nodes));
+  }
+  if (parsed.has("--contraction-vertices")) {
+    const double vertices = parseNumbers(parsed.value("--contraction-vertices"), 1, "--contraction-vertices")[0];
+    if (!(vertices >= 0) || vertices != int(vertices))
+      throw UsageError("--contraction-vertices must be a whole number >= 0");
+    filter->SetContractionVertices(int(vertices));
   }
   if (parsed.has("--iterations")) {
     const double iterations = parseNumbers(parsed.value("--iterations"), 1, "--iterations")[0];
@@ -63,6 +70,8 @@ int runSkeleton(const std::vector<std::string>& args) {
 
   timings.start("skeleton");
   runFilter(filter, mesh, input, "skeleton of " + input, progress);
+  for (const char* stage : {"decimation", "contraction", "factorization", "surgery", "refinement", "selection", "radii", "weights"})
+    timings.detail("skeleton", stage, filter->GetStageSeconds(stage));
 
   timings.start("write");
   writePolyData(filter->GetOutput(0), output);

@@ -23,15 +23,23 @@ void Timings::stop() {
   current_.clear();
 }
 
+void Timings::detail(const std::string& stage, const std::string& part, double seconds) {
+  details_.emplace_back(stage + "." + part, seconds);
+}
+
 std::string Timings::json() const {
   std::string out = "{";
   double total = 0;
-  for (const auto& [name, seconds] : stages_) {
+  auto add = [&out](const std::string& name, double seconds) {
     char number[64];
     std::snprintf(number, sizeof number, "%.6f", seconds);
     out += "\"" + name + "\": " + number + ", ";
+  };
+  for (const auto& [name, seconds] : stages_) {
+    add(name, seconds);
     total += seconds;
   }
+  for (const auto& [name, seconds] : details_) add(name, seconds);
   char number[64];
   std::snprintf(number, sizeof number, "%.6f", total);
   return out + "\"total\": " + number + "}";

@@ -22,7 +22,8 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> all = {
       {"skeleton", "curve skeleton of a surface mesh by mesh contraction",
        "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig RIG.glb|RIG.fbx]\n"
-       "                       [--weights] [--solver NAME] [--iterations N] [--no-refine] [--quiet]\n"
+       "                       [--weights] [--solver NAME] [--iterations N] [--contraction-vertices N]\n"
+       "                       [--no-refine] [--quiet]\n"
        "                       [--timings]\n\n"
        "Contracts MESH (.off .obj .ply .stl .vtp .vtk; polygons are triangulated) by constrained Laplacian\n"
        "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, III.A-D);\n"
@@ -34,6 +35,9 @@ const std::vector<Command>& commands() {
        "  --solver NAME             cholmod-metis (default), cholmod-amd, llt-amd, ldlt-amd, llt-metis,\n"
        "                            ldlt-metis, lu-colamd, lu-amd, lu-metis, qr-colamd, cg\n"
        "  --iterations N            maximum contraction iterations (default 40)\n"
+       "  --contraction-vertices N  a mesh with more vertices is decimated to N (quadric error, topology\n"
+       "                            kept) before the contraction; the outputs still cover every input\n"
+       "                            vertex (default 4000; 0 contracts the mesh as it is)\n"
        "  --no-refine               keep the nodes where the contraction put them (no III.C refinement)\n"
        "  --rig RIG.glb|RIG.fbx     the skinned mesh and its bones (one per skeleton edge) as glTF 2.0 or FBX\n"
        "  --weights                 compute the skinning weights without writing a rig\n"

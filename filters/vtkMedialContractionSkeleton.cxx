@@ -19,9 +19,9 @@
 vtkStandardNewMacro(vtkMedialContractionSkeleton);
 
 namespace {
-const int kStageCount = 7;
-const char* const kStages[kStageCount] = {"contraction", "factorization", "surgery", "refinement",
-                                          "selection",   "radii",         "weights"};
+const int kStageCount = 8;
+const char* const kStages[kStageCount] = {"decimation", "contraction", "factorization", "surgery",
+                                          "refinement", "selection",   "radii",         "weights"};
 }
 
 vtkMedialContractionSkeleton::vtkMedialContractionSkeleton() { this->SetNumberOfOutputPorts(2); }
@@ -47,6 +47,7 @@ double vtkMedialContractionSkeleton::GetStageSeconds(const std::string& stage) c
 void vtkMedialContractionSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "TargetNodes: " << this->TargetNodes << "\n";
+  os << indent << "ContractionVertices: " << this->ContractionVertices << "\n";
   os << indent << "InitialContractionFactor: " << this->InitialContractionFactor << "\n";
   os << indent << "ContractionScale: " << this->ContractionScale << "\n";
   os << indent << "MaxContractionWeight: " << this->MaxContractionWeight << "\n";
@@ -81,6 +82,7 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
 
   medial::SkeletonByContractionParameters p;
   p.targetNodes = this->TargetNodes;
+  p.contractionVertices = this->ContractionVertices;
   p.refineEmbedding = this->RefineEmbedding;
   p.contraction.initialContractionFactor = this->InitialContractionFactor;
   p.contraction.contractionScale = this->ContractionScale;
@@ -100,7 +102,8 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   });
   this->ContractionIterations = result.contractionIterations;
   this->CurveSkeletonNodes = result.curveSkeletonNodes;
-  const double seconds[kStageCount] = {result.contractionSeconds, result.factorizationSeconds,
+  this->ContractedVertices = result.contractedVertices;
+  const double seconds[kStageCount] = {result.decimationSeconds, result.contractionSeconds, result.factorizationSeconds,
                                       result.surgerySeconds,     result.refinementSeconds,
                                       result.selectionSeconds,   result.radiiSeconds,
                                       result.weightsSeconds};

@@ -31,6 +31,11 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   /// Number of skeleton nodes the selection stage aims at (default 30; 0 keeps the full curve skeleton).
   vtkSetClampMacro(TargetNodes, int, 0, VTK_INT_MAX);
   vtkGetMacro(TargetNodes, int);
+  /// Meshes with more vertices are decimated to this many (quadric error, topology kept) before the
+  /// contraction; the segmentation, radii and weights still use every input vertex (default 4000; 0
+  /// contracts the input itself).
+  vtkSetClampMacro(ContractionVertices, int, 0, VTK_INT_MAX);
+  vtkGetMacro(ContractionVertices, int);
   /// W_L0 = factor * sqrt(mean face area) in the normalized frame (default 1e-3).
   vtkSetMacro(InitialContractionFactor, double);
   vtkGetMacro(InitialContractionFactor, double);
@@ -67,6 +72,10 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   /// Figures of the last update.
   vtkGetMacro(ContractionIterations, int);
   vtkGetMacro(CurveSkeletonNodes, int);
+  /// Vertices of the mesh that was contracted (fewer than the input's when it was decimated).
+  vtkGetMacro(ContractedVertices, int);
+  /// Seconds of a stage of the last update: decimation, contraction, factorization (part of the
+  /// contraction), surgery, refinement, selection, radii, weights.
   double GetStageSeconds(const std::string& stage) const;
 
  protected:
@@ -79,6 +88,7 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   void operator=(const vtkMedialContractionSkeleton&) = delete;
 
   int TargetNodes = 30;
+  int ContractionVertices = 4000;
   double InitialContractionFactor = 1e-3;
   double ContractionScale = 2.0;
   double MaxContractionWeight = 2048.0;
@@ -92,5 +102,6 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   std::string Solver = "cholmod-metis";
   int ContractionIterations = 0;
   int CurveSkeletonNodes = 0;
-  double Seconds[7] = {0, 0, 0, 0, 0, 0, 0};
+  int ContractedVertices = 0;
+  double Seconds[8] = {0, 0, 0, 0, 0, 0, 0, 0};
 };

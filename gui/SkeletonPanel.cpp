@@ -27,6 +27,9 @@ std::vector<Parameter> contractionParameters() {
   return {
       P::integer("TargetNodes", "Skeleton nodes", 30, 0, 100000,
                  "Nodes kept by node selection (§III.D); 0 keeps the whole curve skeleton"),
+      P::integer("ContractionVertices", "Contracted vertices", 4000, 0, 10000000,
+                 "Larger meshes are decimated to this many vertices before the contraction (topology kept); "
+                 "0 contracts the mesh as it is"),
       P::real("InitialContractionFactor", "W_L0 factor", 1e-3, 1e-6, 10, 6,
               "W_L0 = factor · sqrt(mean face area) (§III.A, default 1e-3)"),
       P::real("ContractionScale", "s_L", 2.0, 1.01, 10, 2, "Growth of W_L per iteration (§III.A, default 2)"),
@@ -95,6 +98,7 @@ vtkSmartPointer<vtkAlgorithm> SkeletonPanel::makeFilter(SceneObject* input, QStr
   const ParameterForm* f = form();
   filter->SetInputData(copyOf(input));
   filter->SetTargetNodes(static_cast<int>(f->value("TargetNodes")));
+  filter->SetContractionVertices(static_cast<int>(f->value("ContractionVertices")));
   filter->SetInitialContractionFactor(f->value("InitialContractionFactor"));
   filter->SetContractionScale(f->value("ContractionScale"));
   filter->SetMaxContractionWeight(f->value("MaxContractionWeight"));

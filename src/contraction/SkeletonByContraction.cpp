@@ -4,6 +4,7 @@
 #include "contraction/NodeRadii.h"
 #include "contraction/NodeSelection.h"
 #include "mesh/InsideTest.h"
+#include "mesh/MeshDecimation.h"
 
 #include <chrono>
 #include <cmath>
@@ -57,10 +58,20 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
     return [&progress, from, to](double f) { return !progress || progress(from + (to - from) * f); };
   };
 
-  // III.A geometry contraction.
+  // The mesh that is contracted: the input, or its decimation to the vertex budget.
   auto start = Clock::now();
+  const DecimatedMesh coarse = decimateMesh(mesh, p.contractionVertices);
+  result.decimationSeconds = secondsSince(start);
+  result.contractedVertices = int(coarse.mesh.vertices.rows());
+  if (progress && !progress(0.02)) {
+    result.error = "aborted";
+    return result;
+  }
+
+  // III.A geometry contraction.
+  start = Clock::now();
   const double contractionEnd = p.computeWeights ? 0.6 : 0.75, surgeryEnd = p.computeWeights ? 0.7 : 0.9;
-  ContractionResult contraction = contractMesh(mesh, p.contraction, report(0.0, contractionEnd));
+  ContractionResult contraction = contractMesh(coarse.mesh, p.contraction, report(0.02, contractionEnd));
   result.contractionSeconds = secondsSince(start);
   result.factorizationSeconds = contraction.analyzeSeconds + contraction.factorizeSeconds;
   result.contractionIterations = contraction.iterations;
@@ -73,7 +84,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
 
   // III.B connectivity surgery.
   start = Clock::now();
-  CurveSkeleton curve = collapseToCurveSkeleton(contraction.contracted, mesh.faces, p.surgery,
+  CurveSkeleton curve = collapseToCurveSkeleton(contraction.contracted, coarse.mesh.faces, p.surgery,
                                                   report(contractionEnd, surgeryEnd));
   result.surgerySeconds = secondsSince(start);
   if (curve.nodes.rows() == 0) {
@@ -81,7 +92,16 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
     return result;
   }
   result.curveSkeletonNodes = int(curve.nodes.rows());
-  result.contracted = std::move(contraction.contracted);
+  // Back to the input's vertices: each one goes with the coarse vertex that absorbed it.
+  result.contracted = mesh.vertices;
+  std::vector<int> vertexToNode(coarse.representative.size(), -1);
+  for (size_t v = 0; v < coarse.representative.size(); ++v) {
+    const int r = coarse.representative[v];
+    if (r < 0) continue;
+    vertexToNode[v] = curve.vertexToNode[size_t(r)];
+    result.contracted.row(Eigen::Index(v)) = contraction.contracted.row(r);
+  }
+  curve.vertexToNode = std::move(vertexToNode);
 
   // III.C refinement, III.D selection, radii.
   start = Clock::now();

@@ -1,5 +1,5 @@
 // SkeletonByContraction: the whole skeleton pipeline of the contraction paper (section III, stages 1-4)
-// plus node radii: contraction (III.A), connectivity surgery (III.B), embedding refinement (III.C), node
+// plus node radii: optional decimation to a vertex budget, contraction (III.A), connectivity surgery (III.B), embedding refinement (III.C), node
 // selection (III.D), radii, and on request the heat-diffusion skinning weights (III.E). Input: a triangle mesh (any number of components, open or closed). Output: a
 // Skeleton (GUIDE §2) with radii and a root, and the skeleton-mesh mapping (vertex -> node).
 #pragma once
@@ -16,6 +16,10 @@
 namespace medial {
 
 struct SkeletonByContractionParameters {
+  // Meshes with more vertices are first decimated to this many (quadric error metric, topology kept;
+  // src/mesh/MeshDecimation.h) and the coarse mesh is contracted and collapsed; refinement, radii, the
+  // segmentation and the weights use the input mesh. 0 contracts the input itself.
+  int contractionVertices = 4000;
   ContractionParameters contraction;
   SurgeryParameters surgery;
   bool refineEmbedding = true;
@@ -30,13 +34,14 @@ struct SkeletonByContractionResult {
   Vertices contracted;            // the contracted mesh positions (same faces as the input)
   Eigen::MatrixXd weights;        // with computeWeights: (vertices x bones), rows summing to 1
   int invisibleVertices = 0;      // vertices no nearest bone sees (HeatWeightResult)
+  int contractedVertices = 0;  // vertices of the mesh that was contracted (the coarse mesh, if decimated)
   int contractionIterations = 0;
   double contractionVolumeRatio = 1.0;
   std::string contractionStop;
   int curveSkeletonNodes = 0;  // before selection
   int refinedNodes = 0;        // nodes the refinement moved
   // Seconds per stage, and the share of the contraction spent factorizing.
-  double contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0, refinementSeconds = 0,
+  double decimationSeconds = 0, contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0, refinementSeconds = 0,
          selectionSeconds = 0, radiiSeconds = 0, weightsSeconds = 0;
   std::string error;
   bool ok() const { return error.empty(); }

@@ -51,9 +51,9 @@ inline TriangleMesh tubeMesh(double length, double r, int rings = 40, int sides 
       mesh.faces.row(f++) << a, d, c;
     }
   for (int j = 0; j < sides; ++j) {
-    mesh.faces.row(f++) << left, j, (j + 1) % sides;
+    mesh.faces.row(f++) << left, (j + 1) % sides, j;  // oriented as the side faces
     const int last = (rings - 1) * sides;
-    mesh.faces.row(f++) << right, last + (j + 1) % sides, last + j;
+    mesh.faces.row(f++) << right, last + j, last + (j + 1) % sides;
   }
   return mesh;
 }

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <numeric>
@@ -97,6 +99,68 @@ TEST(SkeletonByContraction, ScaleDoesNotChangeTheSkeleton) {
     // Collapse ties on a symmetric torus may break differently after rounding, so compare shapes: same
     // cycle count, and every node lies on the reference skeleton (within 2% of the torus size, 5).
     EXPECT_EQ(countGraph(r.skeleton).cycles, countGraph(reference.skeleton).cycles);
+    for (const auto& node : r.skeleton.nodes)
+      EXPECT_LT(distanceToSkeleton(node / scale, reference.skeleton), 0.1) << node.transpose() / scale;
+  }
+}
+
+// A fine torus whose vertices are moved a little at random (fixed seed): no two collapses tie, so results
+// at different scales can be compared node by node.
+medial::TriangleMesh jitteredTorus() {
+  medial::TriangleMesh torus = torusMesh(2, 0.5, 96, 32);  // 3072 vertices
+  std::srand(7);
+  for (Eigen::Index v = 0; v < torus.vertices.rows(); ++v)
+    for (int c = 0; c < 3; ++c) torus.vertices(v, c) += 0.01 * (std::rand() / double(RAND_MAX) - 0.5);
+  return torus;
+}
+
+TEST(SkeletonByContraction, ADecimatedMeshGivesTheSameSkeletonForEveryVertex) {
+  // 3072 vertices over a budget of 600: the coarse mesh is contracted, the input's vertices come back.
+  const medial::TriangleMesh torus = jitteredTorus();
+  medial::SkeletonByContractionParameters p;
+  p.contractionVertices = 600;
+  p.computeWeights = true;
+  const auto r = medial::skeletonByContraction(torus, p);
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_LE(r.contractedVertices, 610);
+  EXPECT_EQ(countGraph(r.skeleton).cycles, 1);
+  const medial::InsideTest inside(torus);
+  for (const auto& node : r.skeleton.nodes) {
+    EXPECT_TRUE(inside.contains(node)) << node.transpose();
+    EXPECT_NEAR(std::hypot(node.x(), node.y()), 2.0, 0.25);
+  }
+  for (double radius : r.skeleton.radii) EXPECT_NEAR(radius, 0.5, 0.2);
+  ASSERT_EQ(r.vertexToNode.size(), size_t(torus.vertices.rows()));
+  ASSERT_EQ(r.weights.rows(), torus.vertices.rows());
+  for (Eigen::Index v = 0; v < torus.vertices.rows(); ++v) {
+    const int node = r.vertexToNode[size_t(v)];
+    ASSERT_GE(node, 0);
+    // A vertex belongs to a node on its own side of the torus (within a quarter turn).
+    const Eigen::Vector3d n = r.skeleton.nodes[size_t(node)];
+    EXPECT_GT(n.head<2>().normalized().dot(torus.vertices.row(v).head<2>().normalized()), 0.7);
+    EXPECT_NEAR(r.weights.row(v).sum(), 1.0, 1e-9);
+  }
+
+  // Without the budget the whole mesh is contracted; the skeleton lies on the same circle.
+  p.contractionVertices = 0;
+  const auto full = medial::skeletonByContraction(torus, p);
+  ASSERT_TRUE(full.ok()) << full.error;
+  EXPECT_EQ(full.contractedVertices, torus.vertices.rows());
+  for (const auto& node : r.skeleton.nodes) EXPECT_LT(distanceToSkeleton(node, full.skeleton), 0.15);
+}
+
+TEST(SkeletonByContraction, DecimationDoesNotDependOnTheScale) {
+  const medial::TriangleMesh torus = jitteredTorus();
+  medial::SkeletonByContractionParameters p;
+  p.contractionVertices = 600;
+  const auto reference = medial::skeletonByContraction(torus, p);
+  ASSERT_TRUE(reference.ok());
+  for (double scale : {1e-3, 1e3}) {
+    medial::TriangleMesh scaled = torus;
+    scaled.vertices *= scale;
+    const auto r = medial::skeletonByContraction(scaled, p);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(countGraph(r.skeleton).cycles, 1);
     for (const auto& node : r.skeleton.nodes)
       EXPECT_LT(distanceToSkeleton(node / scale, reference.skeleton), 0.1) << node.transpose() / scale;
   }

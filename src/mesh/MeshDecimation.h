@@ -1,0 +1,37 @@
+// MeshDecimation: quadric-error edge-collapse decimation (Garland & Heckbert 1997, CGAL's
+// Surface_mesh_simplification with its Garland-Heckbert plane policies) down to a vertex budget, with the record of which coarse vertex absorbed each input vertex.
+//
+// The skeleton pipeline contracts this coarse mesh instead of the input when the input has more vertices
+// than the budget (SkeletonByContractionParameters::contractionVertices): the cost of the contraction
+// grows with the vertex count (each iteration factorizes an n x n matrix with the two-ring pattern),
+// while the skeleton only needs the mesh's shape. The input vertices come back afterwards through
+// `representative`: refinement (III.C), radii, the segmentation and the weights use the input mesh.
+//
+// CGAL refuses collapses that break the link condition, so the topology (components, genus, boundaries)
+// is kept. CGAL was chosen over OpenMesh's Decimater (ModQuadric): twice as fast here (armadillo, 26k ->
+// 4k vertices: 0.31 s vs 0.88 s with a normal-flip module; a bounded-normal-change placement added 30 %
+// and changed no skeleton for the better). A mesh a halfedge structure cannot hold (faces oriented against
+// their neighbours, non-manifold edges or vertices) is decimated from a copy that CGAL's soup orientation
+// made orientable and manifold (faces flipped, vertices duplicated where needed). Faces that repeat a
+// vertex are left out; a vertex only they use gets no representative.
+#pragma once
+
+#include "mesh/TriangleMesh.h"
+
+#include <string>
+#include <vector>
+
+namespace medial {
+
+struct DecimatedMesh {
+  TriangleMesh mesh;
+  // For every input vertex, the vertex of `mesh` that absorbed it (itself when it survived); -1 for input
+  // vertices no face uses.
+  std::vector<int> representative;
+  bool decimated = false;
+  std::string note;  // why the mesh was left as it was
+};
+
+DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices);
+
+}  // namespace medial
