@@ -111,9 +111,11 @@ TEST(Cli, SkeletonOfTorusWritesSkeletonAndSegmentation) {
   const std::string dir = scratchDir("cli-skeleton");
   const std::string skeleton = dir + "/torus-skeleton.vtp", segmentation = dir + "/torus-segmentation.vtp";
   auto r = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + skeleton +
-                                    " --segmentation " + segmentation + " --nodes 12 --timings --quiet"));
+                                    " --segmentation " + segmentation +
+                                    " --nodes 12 --contraction-vertices 300 --timings --quiet"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("\"skeleton\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"skeleton.decimation\""), std::string::npos) << r.out;
   EXPECT_TRUE(std::filesystem::exists(skeleton));
   EXPECT_TRUE(std::filesystem::exists(segmentation));
   // The skeleton renders as a valid skeleton (Radius on every node).
@@ -138,6 +140,10 @@ TEST(Cli, SkeletonOfBadInputFailsWithOneLine) {
   auto badExtension = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir +
                                                "/out.vtp --rig rig.obj --quiet"));
   EXPECT_EQ(badExtension.exitCode, 2) << badExtension.err;
+  auto badBudget = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir +
+                                            "/out.vtp --contraction-vertices -5 --quiet"));
+  EXPECT_EQ(badBudget.exitCode, 2) << badBudget.err;
+  EXPECT_NE(badBudget.err.find("--contraction-vertices"), std::string::npos) << badBudget.err;
   auto noDirectory = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir +
                                               "/out.vtp --rig " + dir + "/missing/rig.glb --quiet"));
   EXPECT_EQ(noDirectory.exitCode, 1);
