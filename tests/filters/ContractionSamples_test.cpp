@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cstdio>
 #include <functional>
 #include <numeric>
 
@@ -82,8 +83,9 @@ TEST_P(ContractionSamples, ConnectedWithItsCyclesAndInside) {
   for (const auto& [a, b] : edges)
     midpointsInside +=
         inside.contains(0.5 * (Eigen::Vector3d(skeleton->GetPoint(a)) + Eigen::Vector3d(skeleton->GetPoint(b))));
-  // Measured on this machine: every node inside on all but man (33 of 34); midpoints 29/29 armadillo,
-  // 31/32 elephant, 6/7 hand. The test holds the line at 90 %.
+  std::printf("%s: %d of %lld nodes and %d of %zu edge midpoints inside, %ld cycles (genus %d)\n", sample.name,
+              nodesInside, static_cast<long long>(nodes), midpointsInside, edges.size(), cycles, sample.genus);
+  // The test holds the line at 90 % of the nodes and 85 % of the midpoints (figures in the issue notes).
   EXPECT_GE(nodesInside, 0.9 * double(nodes));
   EXPECT_GE(midpointsInside, 0.85 * double(edges.size()));
 }
@@ -92,7 +94,10 @@ INSTANTIATE_TEST_SUITE_P(Cgal, ContractionSamples,
                          ::testing::Values(Sample{"armadillo", 0, true, true}, Sample{"man", 0, true, true},
                                            Sample{"hand", 0, true, true}, Sample{"elephant", 3, true, true},
                                            Sample{"femur", 2, false, true}, Sample{"knot1", 1, true, true},
-                                           Sample{"mannequin-devil", 0, true, false}),
+                                           Sample{"mannequin-devil", 0, true, false},
+                                           // above the default vertex budget: decimated before the contraction
+                                           Sample{"diplodocus", 0, true, true}, Sample{"bunny00", 0, true, true},
+                                           Sample{"refined_elephant", 3, true, true}),
                          [](const ::testing::TestParamInfo<Sample>& info) {
                            std::string name = info.param.name;
                            std::replace(name.begin(), name.end(), '-', '_');
