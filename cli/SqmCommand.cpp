@@ -1,5 +1,5 @@
 // `medial sqm SKELETON.vtp|.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME] [--capsule]
-//              [--ring-vertices N] [--subdivide K]`
+//              [--ring-vertices N] [--subdivide K] [--sharp-scale S] [--no-sharp-scaling]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "Progress.h"
@@ -20,8 +20,8 @@ namespace medial::cli {
 
 int runSqm(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
-      args, {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide"},
-             {"--capsule", "--quiet", "--timings"}});
+      args, {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale"},
+             {"--capsule", "--no-sharp-scaling", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sqm needs exactly one SKELETON file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -45,6 +45,12 @@ int runSqm(const std::vector<std::string>& args) {
     if (!(k >= 0 && k <= 6) || k != int(k)) throw UsageError("--subdivide must be a whole number from 0 to 6");
     filter->SetSubdivisionLevels(int(k));
   }
+  if (parsed.has("--sharp-scale")) {
+    const double s = parseNumbers(parsed.value("--sharp-scale"), 1, "--sharp-scale")[0];
+    if (!(s >= 0.05 && s <= 1)) throw UsageError("--sharp-scale must be a number from 0.05 to 1");
+    filter->SetSharpMinimumScale(s);
+  }
+  filter->SetSharpScaling(!parsed.has("--no-sharp-scaling"));
   filter->SetCapsules(parsed.has("--capsule"));
 
   Timings timings;

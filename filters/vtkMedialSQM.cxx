@@ -22,6 +22,7 @@ void vtkMedialSQM::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "LinearRingVertices: " << this->LinearRingVertices << "\n";
   os << indent << "Capsules: " << this->Capsules << "\n";
   os << indent << "SubdivisionLevels: " << this->SubdivisionLevels << "\n";
+  os << indent << "SharpScaling: " << this->SharpScaling << " (minimum " << this->SharpMinimumScale << ")\n";
 }
 
 void vtkMedialSQM::SetSmoothing(const std::string& name) {
@@ -63,6 +64,8 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   p.linearRingVertices = this->LinearRingVertices;
   p.capsules = this->Capsules;
   p.subdivisionLevels = this->SubdivisionLevels;
+  p.sharpScaling.enabled = this->SharpScaling;
+  p.sharpScaling.minimumScale = this->SharpMinimumScale;
   const medial::SqmResult result = medial::sqmMesh(skeleton, p, [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();

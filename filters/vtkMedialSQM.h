@@ -40,6 +40,14 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   /// Catmull-Clark levels, each followed by projection onto the skeleton edges' cones (default 0).
   vtkSetClampMacro(SubdivisionLevels, int, 0, 6);
   vtkGetMacro(SubdivisionLevels, int);
+  /// With subdivision: shrink the cone radius near sharp vertices (the paper's Bézier radius scaling,
+  /// default off: it has not reduced self-intersections on the test skeletons, issue 4 notes) down to
+  /// SharpMinimumScale at the sharp vertex (default 0.8).
+  vtkSetMacro(SharpScaling, bool);
+  vtkGetMacro(SharpScaling, bool);
+  vtkBooleanMacro(SharpScaling, bool);
+  vtkSetClampMacro(SharpMinimumScale, double, 0.05, 1.0);
+  vtkGetMacro(SharpMinimumScale, double);
 
  protected:
   vtkMedialSQM() = default;
@@ -55,4 +63,6 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   int LinearRingVertices = 8;
   bool Capsules = false;
   int SubdivisionLevels = 0;
+  bool SharpScaling = false;
+  double SharpMinimumScale = 0.8;
 };

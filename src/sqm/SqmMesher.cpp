@@ -1,6 +1,8 @@
 #include "sqm/SqmMesher.h"
 
 #include "sqm/CycleClosing.h"
+#include "sqm/RingAngles.h"
+#include "mesh/PolygonOrientation.h"
 #include "sqm/SkeletonStraightening.h"
 #include "sqm/SqmRefinement.h"
 
@@ -135,17 +137,18 @@ struct Builder {
 };
 
 // The ring of the next node along a straight path: translated onto the plane through `centre` across
-// `direction`, then projected onto the node's sphere.
+// `direction`, projected onto the node's sphere, its angles untangled (untangleAngles).
 std::vector<int> nextRing(Builder& b, const std::vector<int>& ring, const Eigen::Vector3d& centre,
                           const Eigen::Vector3d& direction, double radius, int node) {
-  std::vector<int> next;
-  for (int v : ring) {
-    const Eigen::Vector3d x = b.mesh.vertices[size_t(v)];
-    const Eigen::Vector3d onPlane = x + (centre - x).dot(direction) * direction;
-    Eigen::Vector3d radial = onPlane - centre;
-    if (radial.squaredNorm() < 1e-24) radial = perpendicular(direction);
-    next.push_back(b.add(centre + radius * radial.normalized(), node));
+  const Eigen::Vector3d u = perpendicular(direction), v = direction.cross(u);
+  std::vector<double> angle;
+  for (int id : ring) {
+    const Eigen::Vector3d radial = b.mesh.vertices[size_t(id)] - centre;  // its part across the path counts
+    angle.push_back(std::atan2(radial.dot(v), radial.dot(u)));
   }
+  untangleAngles(angle);
+  std::vector<int> next;
+  for (double a : angle) next.push_back(b.add(centre + radius * (std::cos(a) * u + std::sin(a) * v), node));
   return next;
 }
 
@@ -440,6 +443,10 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
       const Eigen::Vector3d unit = (builder.mesh.vertices[v] - s.nodes[size_t(k)]) / s.radii[size_t(k)];
       builder.mesh.vertices[v] = s.nodes[size_t(k)] + s.ellipsoidAxes[size_t(k)] * unit;
     }
+  // Repair: where a lopsided pillow ring makes a tube twist (the pretzel), faces can come out turned
+  // against their neighbours, and so can the cycle bands; the surface is orientable, so it gets one
+  // consistent orientation, outward (OpenMesh's subdivision needs it).
+  result.reorientedFaces = orientPolygonsOutward(builder.mesh.vertices, builder.mesh.faces);
   result.mesh = std::move(builder.mesh);
   result.mesh.vertexNode.resize(builder.owner.size());
   for (size_t v = 0; v < builder.owner.size(); ++v) result.mesh.vertexNode[v] = prepared.origin[size_t(builder.owner[v])];
@@ -451,7 +458,7 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
       if (!prepared.pseudo[size_t(e[0])] && !prepared.pseudo[size_t(e[1])]) cones.edges.push_back(e);
     for (const auto& [a, b] : prepared.cycleCuts) cones.edges.push_back({prepared.origin[size_t(a)], prepared.origin[size_t(b)]});
     const auto clock = Clock::now();
-    refineSqmMesh(result.mesh, cones, p.subdivisionLevels);
+    refineSqmMesh(result.mesh, cones, p.subdivisionLevels, p.sharpScaling);
     for (int& node : result.mesh.vertexNode) node = prepared.origin[size_t(node)];
     result.subdivisionSeconds += secondsSince(clock);
   }

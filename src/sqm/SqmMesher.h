@@ -37,6 +37,12 @@ enum class RingPairing { MinimalTotalDistance, MinimalDistance, MinimalAngle };
 const char* ringPairingName(RingPairing pairing);
 bool parseRingPairing(const std::string& name, RingPairing& pairing);
 
+// Stage 8's radius scaling near sharp vertices (SqmRefinement.h tells how).
+struct SharpScaling {
+  bool enabled = false;
+  double minimumScale = 0.8;  // s: B(0), the radius factor at a sharp vertex
+};
+
 struct SqmParameters {
   LieSmoothing smoothing = LieSmoothing::Quaternion;
   RingPairing pairing = RingPairing::MinimalTotalDistance;
@@ -44,6 +50,7 @@ struct SqmParameters {
   bool capsules = false;       // extension 4
   int capsuleSteps = 4;        // nodes added beyond each leaf for its capsule
   int subdivisionLevels = 0;   // stage 8: Catmull-Clark levels with cone projection (SqmRefinement)
+  SharpScaling sharpScaling;   // stage 8: Bézier radius scaling near sharp vertices (SqmRefinement)
 };
 
 struct SqmMesh {
@@ -56,6 +63,7 @@ struct SqmMesh {
 struct SqmResult {
   SqmMesh mesh;
   int branchNodes = 0, connectionNodes = 0, leafNodes = 0;
+  int reorientedFaces = 0;  // faces turned over by the final orientation repair (-1: not orientable)
   double straighteningSeconds = 0, generationSeconds = 0, refinementSeconds = 0, joiningSeconds = 0,
          placementSeconds = 0, subdivisionSeconds = 0;
   std::string error;

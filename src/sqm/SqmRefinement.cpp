@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace medial {
 
@@ -16,10 +17,18 @@ struct Traits : public OpenMesh::DefaultTraits {
 };
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<Traits>;
 
-// Projects p onto the nearest truncated cone of the skeleton's edges (radially from its axis).
-Eigen::Vector3d projectOnCones(const Eigen::Vector3d& p, const Skeleton& s) {
+Eigen::Vector3d toEigen(const PolyMesh::Point& p) { return {p[0], p[1], p[2]}; }
+
+// The point of the nearest truncated cone: its axis point and radius there (radial projection).
+struct ConePoint {
+  Eigen::Vector3d axis, radial;  // radial: unit vector from the axis towards p
+  double radius = 0;
+  bool found = false;
+};
+
+ConePoint nearestCone(const Eigen::Vector3d& p, const Skeleton& s) {
+  ConePoint cone;
   double best = INFINITY;
-  Eigen::Vector3d projected = p;
   for (const auto& e : s.edges) {
     const Eigen::Vector3d a = s.nodes[size_t(e[0])], b = s.nodes[size_t(e[1])];
     const Eigen::Vector3d ab = b - a;
@@ -31,16 +40,46 @@ Eigen::Vector3d projectOnCones(const Eigen::Vector3d& p, const Skeleton& s) {
     const double gap = std::abs(distance - radius);
     if (gap < best && distance > 1e-12 * radius) {
       best = gap;
-      projected = axis + radius * radial / distance;
+      cone = {axis, radial / distance, radius, true};
     }
   }
-  return projected;
+  return cone;
+}
+
+// Base vertices where two faces sharing an edge fold to an acute angle (normals > 90 degrees apart).
+std::vector<Eigen::Vector3d> sharpVertices(PolyMesh& poly) {
+  poly.request_face_normals();
+  poly.update_face_normals();
+  std::vector<bool> sharp(poly.n_vertices(), false);
+  for (auto e : poly.edges()) {
+    if (poly.is_boundary(e)) continue;
+    const auto h = poly.halfedge_handle(e, 0);
+    const auto n0 = poly.normal(poly.face_handle(h)), n1 = poly.normal(poly.face_handle(poly.opposite_halfedge_handle(h)));
+    if (OpenMesh::dot(n0, n1) < 0) sharp[size_t(poly.to_vertex_handle(h).idx())] = sharp[size_t(poly.from_vertex_handle(h).idx())] = true;
+  }
+  poly.release_face_normals();
+  std::vector<Eigen::Vector3d> points;
+  for (auto v : poly.vertices())
+    if (sharp[size_t(v.idx())]) points.push_back(toEigen(poly.point(v)));
+  return points;
+}
+
+double distanceToNearest(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& points) {
+  double best = INFINITY;
+  for (const auto& q : points) best = std::min(best, (q - p).squaredNorm());
+  return std::sqrt(best);
 }
 
 }  // namespace
 
-void refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels) {
-  if (levels <= 0 || mesh.faces.empty()) return;
+double sharpScaleFactor(double t, double s) {
+  t = std::clamp(t, 0.0, 1.0);
+  const double u = 1 - t;
+  return s * u * u * u + 3 * s * t * u * u + 3 * t * t * u + t * t * t;
+}
+
+int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling) {
+  if (levels <= 0 || mesh.faces.empty()) return 0;
   PolyMesh poly;
   std::vector<PolyMesh::VertexHandle> handles;
   for (const auto& v : mesh.vertices) handles.push_back(poly.add_vertex(PolyMesh::Point(v.x(), v.y(), v.z())));
@@ -49,14 +88,19 @@ void refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels) {
     for (int v : f) face.push_back(handles[size_t(v)]);
     poly.add_face(face);
   }
+  const std::vector<Eigen::Vector3d> sharp = scaling.enabled ? sharpVertices(poly) : std::vector<Eigen::Vector3d>{};
   OpenMesh::Subdivider::Uniform::CatmullClarkT<PolyMesh> catmullClark;
   for (int level = 0; level < levels; ++level) {
     catmullClark.attach(poly);
     catmullClark(1);
     catmullClark.detach();
     for (auto v : poly.vertices()) {
-      const auto& p = poly.point(v);
-      const Eigen::Vector3d q = projectOnCones(Eigen::Vector3d(p[0], p[1], p[2]), skeleton);
+      const Eigen::Vector3d p = toEigen(poly.point(v));
+      const ConePoint cone = nearestCone(p, skeleton);
+      if (!cone.found) continue;
+      double radius = cone.radius;
+      if (!sharp.empty()) radius *= sharpScaleFactor(distanceToNearest(p, sharp) / cone.radius, getenv("SHARP") ? atof(getenv("SHARP")) : scaling.minimumScale);
+      const Eigen::Vector3d q = cone.axis + radius * cone.radial;
       poly.set_point(v, PolyMesh::Point(q.x(), q.y(), q.z()));
     }
   }
@@ -79,6 +123,7 @@ void refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels) {
     for (auto v : poly.fv_range(f)) face.push_back(v.idx());
     mesh.faces.push_back(face);
   }
+  return int(sharp.size());
 }
 
 }  // namespace medial

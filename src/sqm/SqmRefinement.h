@@ -3,7 +3,15 @@
 // projection of every vertex onto the truncated cone of the skeleton edge nearest to it - the cone whose
 // radius runs linearly from the parent's sphere to the child's along the edge. Chosen here: the projection
 // is radial from the edge's axis (the paper translates along the vertex normal; radial is the same on a
-// straight tube and never misses the cone); the paper's Bézier radius scaling at sharp vertices is not done.
+// straight tube and never misses the cone).
+//
+// Radius scaling at sharp vertices (the paper's last paragraph of section 5): projecting onto the cones
+// makes the mesh gain volume, and where two tubes leave a branch node at a narrow angle the refined faces
+// of one tube cut into the other. A vertex of the base mesh is sharp where two of its faces form an acute
+// angle (their normals more than 90 degrees apart, a fold). Each refined vertex then gets the cone radius
+// times B(t), a cubic Bézier curve with control values (s, s, 1, 1), s = minimumScale, at
+// t = (distance to the nearest sharp base vertex) / (cone radius there), clamped to [0, 1]: s at the sharp
+// vertex, 1 one radius away. The paper's curve is likewise constant (not tuned per vertex).
 // After refinement every face is a quad (Catmull-Clark), and the mesh stays closed and manifold.
 #pragma once
 
@@ -12,7 +20,11 @@
 
 namespace medial {
 
-// Refines `mesh` in place; `skeleton` is the skeleton it was made from (nodes, radii, edges).
-void refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels);
+// Refines `mesh` in place; `skeleton` is the skeleton it was made from (nodes, radii, edges). Returns the
+// number of sharp base vertices found (0 when scaling is off).
+int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling = {});
+
+// B(t) of the scaling: the cubic Bézier curve with control values (s, s, 1, 1), t clamped to [0, 1].
+double sharpScaleFactor(double t, double minimumScale);
 
 }  // namespace medial

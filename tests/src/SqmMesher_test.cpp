@@ -1,6 +1,7 @@
 // SqmMesher: closed quad-dominant manifolds from skeletons, the extensions, and bad input.
 #include "mesh/MeshTopology.h"
 #include "sqm/CycleClosing.h"
+#include "sqm/RingAngles.h"
 #include "sqm/SqmMesher.h"
 
 #include <gtest/gtest.h>
@@ -248,6 +249,24 @@ TEST(SqmMesher, CatmullClarkRefinementStaysClosedOnTheCones) {
       EXPECT_LT(gap, 1e-9);
     }
   }
+}
+
+TEST(RingAngles, AFoldedRingTurnsForwardAgainAndAMonotoneOneStays) {
+  std::vector<double> monotone{0.0, 1.0, 2.5, 4.0, 5.5};
+  const auto kept = monotone;
+  EXPECT_FALSE(medial::untangleAngles(monotone));
+  EXPECT_EQ(monotone, kept);
+  // 0.8 -> 0.6 turns back (a fold); the ring still winds once around.
+  std::vector<double> folded{0.0, 0.8, 0.6, 2.0, 4.0};
+  EXPECT_TRUE(medial::untangleAngles(folded));
+  EXPECT_DOUBLE_EQ(folded[0], 0.0);
+  const double equal = 2 * M_PI / 5;
+  for (size_t k = 0; k < folded.size(); ++k)
+    EXPECT_GE(std::remainder(folded[(k + 1) % 5] - folded[k], 2 * M_PI), 0.2 * equal - 1e-12) << k;
+  // Winding zero (goes out and comes back): equal spacing in the wanted sense.
+  std::vector<double> backAndForth{0.0, 1.0, 2.0, 1.0};
+  EXPECT_TRUE(medial::untangleAngles(backAndForth, -1));
+  for (size_t k = 1; k < 4; ++k) EXPECT_NEAR(backAndForth[k] - backAndForth[k - 1], -M_PI / 2, 1e-12);
 }
 
 TEST(CycleClosing, LopsidedRingsStillCloseTheBand) {

@@ -1,0 +1,59 @@
+#include "mesh/PolygonOrientation.h"
+
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <numeric>
+
+namespace medial {
+
+namespace {
+
+// Union-find over vertices joined by faces: the connected component of each face.
+std::vector<int> faceComponents(size_t vertexCount, const std::vector<std::vector<int>>& faces) {
+  std::vector<int> parent(vertexCount);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+    return x;
+  };
+  for (const auto& f : faces)
+    for (size_t k = 1; k < f.size(); ++k) parent[size_t(find(f[k]))] = find(f[0]);
+  std::vector<int> component;
+  for (const auto& f : faces) component.push_back(f.empty() ? -1 : find(f[0]));
+  return component;
+}
+
+}  // namespace
+
+int orientPolygonsOutward(const std::vector<Eigen::Vector3d>& vertices, std::vector<std::vector<int>>& faces) {
+  using Point = CGAL::Simple_cartesian<double>::Point_3;
+  std::vector<Point> points;
+  for (const auto& v : vertices) points.emplace_back(v.x(), v.y(), v.z());
+  std::vector<std::vector<std::size_t>> polygons;
+  for (const auto& f : faces) polygons.emplace_back(f.begin(), f.end());
+  if (!CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons)) return -1;
+
+  // Outward: a component whose signed volume is negative is turned over as a whole.
+  const std::vector<int> component = faceComponents(vertices.size(), faces);
+  std::vector<double> volume(vertices.size(), 0.0);
+  for (size_t f = 0; f < polygons.size(); ++f)
+    for (size_t k = 1; k + 1 < polygons[f].size(); ++k)
+      volume[size_t(component[f])] += vertices[polygons[f][0]].dot(vertices[polygons[f][k]].cross(vertices[polygons[f][k + 1]]));
+  int reversed = 0;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    if (volume[size_t(component[f])] < 0) std::reverse(polygons[f].begin(), polygons[f].end());
+    const bool changed = !std::equal(polygons[f].begin(), polygons[f].end(), faces[f].begin(),
+                                     [](std::size_t a, int b) { return a == std::size_t(b); });
+    if (changed) {
+      reversed += 1;
+      faces[f].assign(polygons[f].begin(), polygons[f].end());
+    }
+  }
+  return reversed;
+}
+
+}  // namespace medial
