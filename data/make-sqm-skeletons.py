@@ -86,12 +86,15 @@ def humanoid():
         wrist = b.chain(chest, [(side * 0.18, 0.56, 0), (side * 0.3, 0.5, 0.01), (side * 0.42, 0.42, 0.02),
                                 (side * 0.52, 0.34, 0.05), (side * 0.6, 0.27, 0.08)],
                         [0.065, 0.055, 0.05, 0.045, 0.04])
+        # Five parallel fingers side by side across the hand, 0.035 apart (more than the 0.028 their two
+        # radii need: tubes of different branches must not overlap, or no mesh of them can avoid cutting
+        # itself).
+        along = (side * 0.7, -0.7, 0.0)
+        n = math.sqrt(sum(c * c for c in along))
+        along = tuple(c / n for c in along)
         for f in range(5):
-            angle = -0.6 + 0.3 * f
-            d = (side * math.cos(angle) * 0.7, -0.7, math.sin(angle) * 0.5)
-            n = math.sqrt(sum(c * c for c in d))
-            d = tuple(c / n for c in d)
-            b.chain(wrist, line((side * 0.6, 0.27, 0.08), d, 2, 0.05), [0.014, 0.012])
+            base = (side * 0.6 + along[0] * 0.05, 0.27 + along[1] * 0.05, 0.08 + 0.035 * (f - 2))
+            b.chain(wrist, [base] + line(base, along, 1, 0.05), [0.014, 0.012])
         foot = b.chain(pelvis, [(side * 0.1, -0.08, 0), (side * 0.11, -0.3, 0.01), (side * 0.12, -0.5, 0.03),
                                 (side * 0.12, -0.7, 0.02), (side * 0.12, -0.9, 0)],
                        [0.09, 0.08, 0.065, 0.055, 0.045])
@@ -129,17 +132,19 @@ def quadruped():
     # Neck, head and ears.
     head = b.chain(shoulders, line((1.9, 0, 0), (0.6, 0.8, 0), 9, 0.1), [0.18 - 0.006 * k for k in range(9)])
     head = b.chain(head, line((2.44, 0.72, 0), (1, 0, 0), 4, 0.1), [0.2, 0.19, 0.15, 0.1])
-    for side in (-1, 1):
-        b.chain(head, line((2.84, 0.72, 0), (-0.3, 0.7, side * 0.5), 4, 0.06), [0.06, 0.05, 0.04, 0.03])
+    for side in (-1, 1):  # ears apart by more than their radii
+        b.chain(head, line((2.84, 0.72, side * 0.07), (-0.3, 0.7, side * 0.5), 4, 0.06), [0.06, 0.05, 0.04, 0.03])
     # Tail.
     tail = [(-0.1 * (k + 1), 0.05 * (k + 1) ** 0.8, 0.02 * k) for k in range(20)]
     b.chain(hips, tail, [0.1 - 0.0045 * k for k in range(20)])
     # Legs: from the first and last spine nodes; toes at each paw.
     for base, x in ((hips, 0.0), (shoulders, 1.9)):
         for side in (-1, 1):
-            paw = b.chain(base, line((x, 0, 0), (0, -1, side * 0.35), 10, 0.1), [0.12 - 0.006 * k for k in range(10)])
+            # The legs leave the body from its sides (0.2 off the spine), so the two legs of a pair stay
+            # further apart than their radii.
+            paw = b.chain(base, line((x, 0, side * 0.2), (0, -1, side * 0.1), 10, 0.1), [0.12 - 0.006 * k for k in range(10)])
             for toe in (-1, 1):
-                b.chain(paw, line((x, -0.94, side * 0.33), (0.8, -0.3, toe * 0.4), 1, 0.08), [0.03])
+                b.chain(paw, line((x, -1.0, side * 0.3), (0.8, -0.3, toe * 0.4), 1, 0.08), [0.03])
     # Extra spine bump: a dorsal fin-like ridge.
     b.chain(spine[10], [(1.0, 0.4, 0.0)], [0.05])
     return b.polydata(hips)
