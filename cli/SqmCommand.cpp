@@ -1,5 +1,5 @@
 // `medial sqm SKELETON.vtp|.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME] [--capsule]
-//              [--ring-vertices N] [--subdivide K] [--sharp-scale S] [--no-sharp-scaling]`
+//              [--ring-vertices N] [--subdivide K] [--sharp-scale S]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "Progress.h"
@@ -21,7 +21,7 @@ namespace medial::cli {
 int runSqm(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args, {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale"},
-             {"--capsule", "--no-sharp-scaling", "--quiet", "--timings"}});
+             {"--capsule", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sqm needs exactly one SKELETON file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -49,8 +49,8 @@ int runSqm(const std::vector<std::string>& args) {
     const double s = parseNumbers(parsed.value("--sharp-scale"), 1, "--sharp-scale")[0];
     if (!(s >= 0.05 && s <= 1)) throw UsageError("--sharp-scale must be a number from 0.05 to 1");
     filter->SetSharpMinimumScale(s);
+    filter->SetSharpScaling(true);
   }
-  filter->SetSharpScaling(!parsed.has("--no-sharp-scaling"));
   filter->SetCapsules(parsed.has("--capsule"));
 
   Timings timings;

@@ -76,7 +76,7 @@ const std::vector<Command>& commands() {
       {"sqm", "quad-dominant tube mesh of a skeleton with radii (SQM)",
        "usage: medial sqm SKELETON.vtp|SKELETON.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME]\n"
        "                  [--capsule] [--ring-vertices N] [--subdivide K] [--sharp-scale S]\n"
-       "                  [--no-sharp-scaling] [--quiet] [--timings]\n\n"
+       "                  [--quiet] [--timings]\n\n"
        "Turns a skeleton with a Radius per node into a closed manifold mesh of quads (triangles only where\n"
        "leaves close), by SQM with the extensions of the CESCG 2014 paper (re-rooting, linear skeletons,\n"
        "ellipsoid nodes from EllipsoidAxes, capsules, cycles). Every component is meshed.\n"
@@ -87,10 +87,9 @@ const std::vector<Command>& commands() {
        "  --capsule                 close leaves with capsules instead of triangle fans\n"
        "  --ring-vertices N         vertices around a skeleton without branch nodes (default 8)\n"
        "  --subdivide K             K levels of Catmull-Clark, projected on the skeleton's cones (0-6)\n"
-       "  --sharp-scale S           with --subdivide: the cone radius near a sharp vertex (two faces at an\n"
-       "                            acute angle) is scaled by a Bezier curve from S there to 1 one radius\n"
-       "                            away (default 0.8)\n"
-       "  --no-sharp-scaling        project every refined vertex onto the full cone radius\n"
+       "  --sharp-scale S           with --subdivide: scale the cone radius near a sharp vertex (two faces\n"
+       "                            at an acute angle) by a Bezier curve from S (0.05-1) there to 1 one\n"
+       "                            radius away (the paper's radius scaling; off without this option)\n"
        "  --quiet                   no progress line\n"
        "  --timings                 print stage times as JSON on stdout\n",
        runSqm},

@@ -26,6 +26,10 @@ std::vector<Parameter> sqmParameters() {
       P::integer("LinearRingVertices", "Ring vertices N", 8, 3, 1024,
                  "Vertices of a ring when the skeleton has no branch node (CESCG 2014, linear skeletons)"),
       P::toggle("Capsules", "Capsule leaves", false, "Close leaves with hemispheres (CESCG 2014, Capsule Ending)"),
+      P::toggle("SharpScaling", "Sharp scaling", false,
+                "With subdivision: shrink the cone radius near sharp vertices by a Bézier curve (CESCG 2014, "
+                "Tessellation)"),
+      P::real("SharpMinimumScale", "Sharp scale", 0.8, 0.05, 1.0, 2, "Radius factor at a sharp vertex"),
   };
 }
 
@@ -65,6 +69,8 @@ vtkSmartPointer<vtkAlgorithm> SqmPanel::makeFilter(SceneObject* input, QString&)
   filter->SetLinearRingVertices(static_cast<int>(form()->value("LinearRingVertices")));
   filter->SetCapsules(form()->isOn("Capsules"));
   filter->SetSubdivisionLevels(subdivision_->value());
+  filter->SetSharpScaling(form()->isOn("SharpScaling"));
+  filter->SetSharpMinimumScale(form()->value("SharpMinimumScale"));
   return filter;
 }
 

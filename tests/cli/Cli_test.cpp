@@ -52,7 +52,8 @@ TEST(Cli, UsageErrorsExitTwo) {
                            "skeleton in.off -o out.png", "skeleton in.off -o s.vtp --nodes -3",
                            "skeleton in.off -o s.vtp --solver magic", "skeleton a.off b.off -o s.vtp",
                            "sqm s.vtp", "sqm s.vtp -o m.png", "sqm s.vtp -o m.vtp --smoothing median",
-                           "sqm s.vtp -o m.vtp --ring-vertices 2", "sqm s.vtp -o m.vtp --subdivide 9", "sqm s.vtp -o m.vtp --pairing best"}) {
+                           "sqm s.vtp -o m.vtp --ring-vertices 2", "sqm s.vtp -o m.vtp --subdivide 9", "sqm s.vtp -o m.vtp --pairing best",
+                           "sqm s.vtp -o m.vtp --sharp-scale 0"}) {
     auto r = runCommand(medialCommand(args));
     EXPECT_EQ(r.exitCode, 2) << "medial " << args << "\n" << r.err;
     EXPECT_FALSE(r.err.empty()) << "medial " << args;
@@ -184,7 +185,7 @@ TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
   EXPECT_EQ(lineCount(mesh.err), 1) << mesh.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/t.vtp"));
   auto subdivide = runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + dir +
-                                            "/h.obj --subdivide 2 --quiet"));
+                                            "/h.obj --subdivide 2 --sharp-scale 0.9 --quiet"));
   EXPECT_EQ(subdivide.exitCode, 0) << subdivide.err;
   std::ifstream fine(dir + "/h.obj");
   int fineQuads = 0, fineTriangles = 0;

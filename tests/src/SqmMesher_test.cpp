@@ -3,6 +3,7 @@
 #include "sqm/CycleClosing.h"
 #include "sqm/RingAngles.h"
 #include "sqm/SqmMesher.h"
+#include "sqm/SqmRefinement.h"
 
 #include <gtest/gtest.h>
 
@@ -248,6 +249,55 @@ TEST(SqmMesher, CatmullClarkRefinementStaysClosedOnTheCones) {
       }
       EXPECT_LT(gap, 1e-9);
     }
+  }
+}
+
+TEST(SqmRefinement, SharpScalingShrinksTheConesOnlyNearSharpVertices) {
+  EXPECT_DOUBLE_EQ(medial::sharpScaleFactor(0, 0.8), 0.8);
+  EXPECT_DOUBLE_EQ(medial::sharpScaleFactor(1, 0.8), 1.0);
+  EXPECT_DOUBLE_EQ(medial::sharpScaleFactor(3, 0.8), 1.0);  // clamped beyond one radius
+  for (double t = 0; t < 1; t += 0.05) EXPECT_LE(medial::sharpScaleFactor(t, 0.8), medial::sharpScaleFactor(t + 0.05, 0.8));
+  // A narrow Y: two arms leave the branch node 20 degrees apart, so the mesh folds between them.
+  medial::Skeleton s;
+  s.nodes = {{0, 0, 0}, {0, -1, 0}, {0, -2, 0}};
+  s.radii = {0.5, 0.4, 0.4};
+  s.edges = {{0, 1}, {1, 2}};
+  for (double side : {-1.0, 1.0}) {
+    const Eigen::Vector3d d(side * std::sin(10 * M_PI / 180), std::cos(10 * M_PI / 180), 0);
+    for (int k = 1; k <= 3; ++k) {
+      s.nodes.push_back(d * k * 0.9);
+      s.radii.push_back(0.3);
+      s.edges.push_back({k == 1 ? 0 : s.nodeCount() - 2, s.nodeCount() - 1});
+    }
+  }
+  s.root = 0;
+  const auto base = medial::sqmMesh(s);
+  ASSERT_TRUE(base.ok()) << base.error;
+  for (const bool on : {false, true}) {
+    medial::SqmMesh mesh = base.mesh;
+    medial::SharpScaling scaling;
+    scaling.enabled = on;
+    scaling.minimumScale = 0.6;
+    const int sharp = medial::refineSqmMesh(mesh, s, 2, scaling);
+    EXPECT_TRUE(topologyOf(mesh).isClosedManifold());
+    if (on) EXPECT_GT(sharp, 0);
+    int inside = 0;
+    for (const auto& v : mesh.vertices) {  // on a cone, or (scaled) inside one, never outside all
+      double nearest = INFINITY, deepest = INFINITY;  // |distance| to the nearest cone; signed, deepest
+      for (const auto& e : s.edges) {
+        const Eigen::Vector3d a = s.nodes[size_t(e[0])], ab = s.nodes[size_t(e[1])] - a;
+        const double t = std::clamp((v - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+        const double r = (1 - t) * s.radii[size_t(e[0])] + t * s.radii[size_t(e[1])];
+        const double d = (v - (a + t * ab)).norm() - r;
+        nearest = std::min(nearest, std::abs(d));
+        deepest = std::min(deepest, d);
+      }
+      EXPECT_LT(deepest, 1e-9);
+      if (!on) EXPECT_LT(nearest, 1e-9);
+      inside += nearest > 1e-6;
+    }
+    if (on) EXPECT_GT(inside, 0);
+    else EXPECT_EQ(inside, 0);
   }
 }
 
