@@ -11,4 +11,12 @@ namespace medial {
 // Returns the number of nodes moved.
 int refineEmbedding(CurveSkeleton& skeleton, const Vertices& originalVertices, const InsideTest& inside);
 
+// Beyond the paper: an edge of the curve skeleton whose segment leaves the mesh (the surgery joined two
+// nodes across a bend: elephant, hand) gets a node in between, at the centroid of the input vertices its
+// two ends absorbed that project onto the middle half of the edge, when that centroid lies inside; those
+// vertices move to the new node. The halves are split again while they still leave the mesh, up to
+// `maxDepth` times. Returns the number of nodes added.
+int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVertices, const InsideTest& inside,
+                             int maxDepth = 5);
+
 }  // namespace medial

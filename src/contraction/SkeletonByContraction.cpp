@@ -106,7 +106,10 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   // III.C refinement, III.D selection, radii.
   start = Clock::now();
   const InsideTest inside(mesh);
-  if (p.refineEmbedding) result.refinedNodes = refineEmbedding(curve, mesh.vertices, inside);
+  if (p.refineEmbedding) {
+    result.refinedNodes = refineEmbedding(curve, mesh.vertices, inside);
+    result.splitEdges = splitEdgesLeavingTheMesh(curve, mesh.vertices, inside);
+  }
   result.refinementSeconds = secondsSince(start);
   start = Clock::now();
   if (p.targetNodes > 0) selectNodes(curve, p.targetNodes, &inside);

@@ -1,4 +1,5 @@
 #include "ContractionTestMeshes.h"
+#include "contraction/EmbeddingRefinement.h"
 #include "contraction/NodeSelection.h"
 #include "contraction/SkeletonByContraction.h"
 #include "mesh/InsideTest.h"
@@ -212,6 +213,32 @@ medial::Skeleton toSkeleton(const medial::CurveSkeleton& s) {
   for (Eigen::Index k = 0; k < s.nodes.rows(); ++k) out.nodes.push_back(s.nodes.row(k).transpose());
   for (const auto& [a, b] : s.edges) out.edges.push_back({a, b});
   return out;
+}
+
+TEST(EmbeddingRefinement, AnEdgeAcrossTheHoleIsSplitAlongTheMesh) {
+  // Two nodes on opposite sides of a torus, each holding its quarter of the upper half ring: their edge
+  // crosses the hole. Split, the path follows the half ring inside the tube.
+  const medial::TriangleMesh torus = torusMesh(2, 0.5);
+  const medial::InsideTest inside(torus);
+  medial::CurveSkeleton curve;
+  curve.nodes.resize(2, 3);
+  curve.nodes << 2, 0, 0, -2, 0, 0;
+  curve.edges = {{0, 1}};
+  curve.vertexToNode.assign(size_t(torus.vertices.rows()), -1);
+  for (Eigen::Index v = 0; v < torus.vertices.rows(); ++v)
+    if (torus.vertices(v, 1) >= 0) curve.vertexToNode[size_t(v)] = torus.vertices(v, 0) >= 0 ? 0 : 1;
+  const int added = medial::splitEdgesLeavingTheMesh(curve, torus.vertices, inside);
+  EXPECT_GE(added, 3);
+  ASSERT_EQ(curve.nodes.rows(), 2 + added);
+  EXPECT_EQ(int(curve.edges.size()), 1 + added);  // still one path from node 0 to node 1
+  for (const auto& [a, b] : curve.edges)
+    EXPECT_TRUE(inside.segmentIsClear(curve.nodes.row(a).transpose(), curve.nodes.row(b).transpose()));
+  for (Eigen::Index k = 2; k < curve.nodes.rows(); ++k) {
+    EXPECT_TRUE(inside.contains(curve.nodes.row(k).transpose()));
+    EXPECT_GT(curve.nodes(k, 1), 0);  // on the half ring the vertices came from
+  }
+  for (Eigen::Index v = 0; v < torus.vertices.rows(); ++v)  // vertices keep a node iff they had one
+    EXPECT_EQ(curve.vertexToNode[size_t(v)] >= 0, torus.vertices(v, 1) >= 0);
 }
 
 TEST(NodeSelection, KeepsCyclesAndTips) {
