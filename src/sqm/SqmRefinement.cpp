@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 namespace medial {
 
@@ -99,7 +98,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
       const ConePoint cone = nearestCone(p, skeleton);
       if (!cone.found) continue;
       double radius = cone.radius;
-      if (!sharp.empty()) radius *= sharpScaleFactor(distanceToNearest(p, sharp) / cone.radius, getenv("SHARP") ? atof(getenv("SHARP")) : scaling.minimumScale);
+      if (!sharp.empty()) radius *= sharpScaleFactor(distanceToNearest(p, sharp) / cone.radius, scaling.minimumScale);
       const Eigen::Vector3d q = cone.axis + radius * cone.radial;
       poly.set_point(v, PolyMesh::Point(q.x(), q.y(), q.z()));
     }
