@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
 
 namespace medial {
@@ -27,15 +28,27 @@ std::vector<int> faceComponents(size_t vertexCount, const std::vector<std::vecto
   return component;
 }
 
+// True when no directed edge is used twice (the cheap test that spares CGAL's orientation on most meshes).
+bool consistentlyOriented(const std::vector<std::vector<int>>& faces) {
+  std::vector<uint64_t> directed;
+  for (const auto& f : faces)
+    for (size_t k = 0; k < f.size(); ++k)
+      directed.push_back(uint64_t(uint32_t(f[k])) << 32 | uint32_t(f[(k + 1) % f.size()]));
+  std::sort(directed.begin(), directed.end());
+  return std::adjacent_find(directed.begin(), directed.end()) == directed.end();
+}
+
 }  // namespace
 
 int orientPolygonsOutward(const std::vector<Eigen::Vector3d>& vertices, std::vector<std::vector<int>>& faces) {
-  using Point = CGAL::Simple_cartesian<double>::Point_3;
-  std::vector<Point> points;
-  for (const auto& v : vertices) points.emplace_back(v.x(), v.y(), v.z());
   std::vector<std::vector<std::size_t>> polygons;
   for (const auto& f : faces) polygons.emplace_back(f.begin(), f.end());
-  if (!CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons)) return -1;
+  if (!consistentlyOriented(faces)) {
+    using Point = CGAL::Simple_cartesian<double>::Point_3;
+    std::vector<Point> points;
+    for (const auto& v : vertices) points.emplace_back(v.x(), v.y(), v.z());
+    if (!CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons)) return -1;
+  }
 
   // Outward: a component whose signed volume is negative is turned over as a whole.
   const std::vector<int> component = faceComponents(vertices.size(), faces);
