@@ -1,5 +1,6 @@
 // vtkMedialSketchReader -> vtkMedialSketchSkeleton -> vtkMedialSQM on the strokes of data/sketches: the
 // issue's pipeline test (the SQM mesh of every sketch is a closed manifold), the output arrays, errors.
+#include "PolyDataFaces.h"
 #include "TestPaths.h"
 
 #include "MedialErrorCollector.h"
@@ -20,14 +21,7 @@
 namespace {
 
 medial::MeshTopology topologyOf(vtkPolyData* mesh) {
-  std::vector<std::vector<int64_t>> faces;
-  auto ids = vtkSmartPointer<vtkIdList>::New();
-  vtkCellArray* polys = mesh->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(ids);) {
-    faces.emplace_back();
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) faces.back().push_back(ids->GetId(k));
-  }
-  return medial::computeMeshTopology(mesh->GetNumberOfPoints(), faces);
+  return medial::computeMeshTopology(mesh->GetNumberOfPoints(), medial::test::polygonsOf(mesh));
 }
 
 class SketchSamples : public ::testing::TestWithParam<const char*> {};

@@ -1,5 +1,6 @@
 // vtkMedialSQM on the test skeletons of data/skeletons (made by data/make-sqm-skeletons.py): closed
 // manifolds without self-intersections, quad-dominant where the paper's 90 % applies, errors on bad input.
+#include "PolyDataFaces.h"
 #include "TestPaths.h"
 
 #include "MedialErrorCollector.h"
@@ -40,16 +41,7 @@ std::ostream& operator<<(std::ostream& os, const SampleSkeleton& s) { return os 
 
 class SqmSamples : public ::testing::TestWithParam<SampleSkeleton> {};
 
-std::vector<std::vector<int64_t>> facesOf(vtkPolyData* mesh) {
-  std::vector<std::vector<int64_t>> faces;
-  auto ids = vtkSmartPointer<vtkIdList>::New();
-  vtkCellArray* polys = mesh->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(ids);) {
-    faces.emplace_back();
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) faces.back().push_back(ids->GetId(k));
-  }
-  return faces;
-}
+using medial::test::polygonsOf;
 
 // CGAL's self-intersection test on the faces (quads split along a diagonal): intersecting triangle pairs.
 size_t selfIntersectingPairs(vtkPolyData* mesh) {
@@ -62,7 +54,7 @@ size_t selfIntersectingPairs(vtkPolyData* mesh) {
     mesh->GetPoint(i, p);
     vertices.push_back(surface.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
   }
-  for (const auto& f : facesOf(mesh))
+  for (const auto& f : polygonsOf(mesh))
     for (size_t k = 1; k + 1 < f.size(); ++k)
       surface.add_face(vertices[size_t(f[0])], vertices[size_t(f[k])], vertices[size_t(f[k + 1])]);
   std::vector<std::pair<Surface::Face_index, Surface::Face_index>> pairs;
@@ -83,7 +75,7 @@ TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {
   ASSERT_GT(mesh->GetNumberOfPolys(), 0);
   ASSERT_TRUE(vtkIntArray::SafeDownCast(mesh->GetPointData()->GetArray("SkeletonNode")));
 
-  const std::vector<std::vector<int64_t>> faces = facesOf(mesh);
+  const std::vector<std::vector<int64_t>> faces = polygonsOf(mesh);
   int quads = 0;
   for (const auto& f : faces) quads += f.size() == 4;
   const medial::MeshTopology t = medial::computeMeshTopology(mesh->GetNumberOfPoints(), faces);
@@ -119,7 +111,7 @@ TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {
     sqm->SetSharpScaling(scaling == 1);
     sqm->Update();
     ASSERT_FALSE(errors->HasErrors()) << errors->Joined();
-    const medial::MeshTopology refined = medial::computeMeshTopology(sqm->GetOutput()->GetNumberOfPoints(), facesOf(sqm->GetOutput()));
+    const medial::MeshTopology refined = medial::computeMeshTopology(sqm->GetOutput()->GetNumberOfPoints(), polygonsOf(sqm->GetOutput()));
     EXPECT_TRUE(refined.isClosedManifold());
     EXPECT_EQ(refined.eulerCharacteristic, 2 - 2 * sample.cycles);
     refinedPairs[scaling] = selfIntersectingPairs(sqm->GetOutput());
