@@ -1,20 +1,23 @@
 #include "sketch/StraightSkeletonGraph.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/create_straight_skeleton_2.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 
 namespace medial {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_2;
+using ExactPredicates = CGAL::Exact_predicates_inexact_constructions_kernel;
+using DoubleArithmetic = CGAL::Simple_cartesian<double>;
 
+template <class Kernel>
 boost::shared_ptr<CGAL::Straight_skeleton_2<Kernel>> buildSkeleton(const Polygon2& polygon) {
-  std::vector<Point> points;
+  std::vector<typename Kernel::Point_2> points;
   points.reserve(polygon.size());
   for (const auto& p : polygon) points.emplace_back(p.x(), p.y());
   try {
@@ -24,33 +27,61 @@ boost::shared_ptr<CGAL::Straight_skeleton_2<Kernel>> buildSkeleton(const Polygon
   }
 }
 
-}  // namespace
-
-int cgalStraightSkeletonVertexCount(const Polygon2& polygon) {
-  const auto skeleton = buildSkeleton(polygon);
-  return skeleton ? int(skeleton->size_of_vertices()) : -1;
+template <class Point>
+Eigen::Vector2d toEigen(const Point& p) {
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
 }
 
-bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, SkeletonGraph2& graph, std::string& error) {
-  graph = {};
-  const auto skeleton = buildSkeleton(polygon);
-  if (!skeleton) {
-    error = "CGAL could not build the straight skeleton of the polygon (degenerate outline)";
-    return false;
+// Whether a skeleton built in plain double arithmetic is geometrically sound: CGAL has already checked
+// its half-edge structure; here every skeleton vertex must lie inside the polygon, at its offset time from
+// the supporting line of each contour edge whose face it bounds (the definition of the straight skeleton),
+// and there are n faces and at most n - 2 skeleton vertices for n polygon vertices.
+template <class Skeleton>
+bool isSound(const Skeleton& skeleton, const Polygon2& polygon) {
+  const int n = int(polygon.size());
+  if (int(skeleton.size_of_faces()) != n || int(skeleton.size_of_vertices()) > 2 * n - 2) return false;
+  Eigen::AlignedBox2d box;
+  for (const auto& p : polygon) box.extend(p);
+  const double tolerance = 1e-7 * box.diagonal().norm();
+  for (auto v = skeleton.vertices_begin(); v != skeleton.vertices_end(); ++v) {
+    if (!v->is_skeleton()) continue;
+    const Eigen::Vector2d p = toEigen(v->point());
+    const double time = CGAL::to_double(v->time());
+    if (!p.allFinite() || !(time > 0) || !isInside(polygon, p)) return false;
+    auto h = v->halfedge_around_vertex_begin(), end = h;
+    do {
+      const auto contour = (*h)->defining_contour_edge();
+      const Eigen::Vector2d a = toEigen(contour->opposite()->vertex()->point());
+      const Eigen::Vector2d b = toEigen(contour->vertex()->point());
+      const double length = (b - a).norm();
+      if (!(length > 0) || std::abs(std::abs(cross2(b - a, p - a)) / length - time) > tolerance) return false;
+    } while (++h != end);
   }
+  return true;
+}
+
+// The straight skeleton as a graph before collapsing: skeleton vertices and inner bisectors, plus the arms
+// of sharp tips (see the header), with each node's offset time.
+struct RawSkeleton {
+  std::vector<Eigen::Vector2d> nodes;
+  std::vector<double> times;  // offset time of each node: its distance to the outline's supporting lines
+  std::vector<std::array<int, 2>> edges;
+};
+
+template <class Skeleton>
+RawSkeleton readSkeleton(const Skeleton& skeleton, const Polygon2& polygon) {
+  RawSkeleton raw;
   // Skeleton vertices (not polygon vertices) become nodes; inner bisectors become edges.
   std::map<int, int> nodeOfVertex;
-  std::vector<double> times;  // offset time of each node: its distance to the outline's supporting lines
-  for (auto v = skeleton->vertices_begin(); v != skeleton->vertices_end(); ++v) {
+  for (auto v = skeleton.vertices_begin(); v != skeleton.vertices_end(); ++v) {
     if (!v->is_skeleton()) continue;
-    nodeOfVertex[v->id()] = graph.nodeCount();
-    graph.nodes.emplace_back(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y()));
-    times.push_back(CGAL::to_double(v->time()));
+    nodeOfVertex[v->id()] = int(raw.nodes.size());
+    raw.nodes.push_back(toEigen(v->point()));
+    raw.times.push_back(CGAL::to_double(v->time()));
   }
-  std::vector<std::array<int, 2>> edges;
-  for (auto h = skeleton->halfedges_begin(); h != skeleton->halfedges_end(); ++h) {
+  for (auto h = skeleton.halfedges_begin(); h != skeleton.halfedges_end(); ++h) {
     if (!h->is_inner_bisector() || h->id() > h->opposite()->id()) continue;
-    edges.push_back({nodeOfVertex.at(h->vertex()->id()), nodeOfVertex.at(h->opposite()->vertex()->id())});
+    raw.edges.push_back({nodeOfVertex.at(h->vertex()->id()), nodeOfVertex.at(h->opposite()->vertex()->id())});
   }
   // A sharp convex vertex (interior angle < 60 degrees) is a tip whose arm is nothing but its peripheral
   // edge, e.g. a star's point. Removing it would cut the arm off, so its inner two thirds stay, ending
@@ -66,17 +97,54 @@ bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, Skelet
     const double turn = in.x() * out.y() - in.y() * out.x();  // > 0: convex in a counter-clockwise polygon
     return turn > 0 && (-in).dot(out) > 0.5;                  // the angle between the edges < 60 degrees
   };
-  for (auto h = skeleton->halfedges_begin(); h != skeleton->halfedges_end(); ++h) {
+  for (auto h = skeleton.halfedges_begin(); h != skeleton.halfedges_end(); ++h) {
     if (!h->is_bisector() || h->is_inner_bisector() || !h->vertex()->is_skeleton()) continue;
     const auto tip = h->opposite()->vertex();
     if (!tip->is_contour()) continue;
-    const Eigen::Vector2d tipPoint(CGAL::to_double(tip->point().x()), CGAL::to_double(tip->point().y()));
+    const Eigen::Vector2d tipPoint = toEigen(tip->point());
     if (!isSharp(tipPoint)) continue;
     const int n = nodeOfVertex.at(h->vertex()->id());
-    edges.push_back({n, graph.nodeCount()});
-    graph.nodes.push_back(tipPoint + (graph.nodes[n] - tipPoint) / 3);
-    times.push_back(times[n] / 3);
+    raw.edges.push_back({n, int(raw.nodes.size())});
+    raw.nodes.push_back(tipPoint + (raw.nodes[n] - tipPoint) / 3);
+    raw.times.push_back(raw.times[n] / 3);
   }
+  return raw;
+}
+
+// CGAL's skeleton in double arithmetic when it passes isSound (about 5x faster: with the filtered kernel
+// most of the time goes to exact GMP re-evaluations of event-time comparisons), else with exact predicates.
+bool computeSkeleton(const Polygon2& polygon, SkeletonArithmetic arithmetic, RawSkeleton& raw) {
+  if (arithmetic == SkeletonArithmetic::automatic) {
+    const auto fast = buildSkeleton<DoubleArithmetic>(polygon);
+    if (fast && isSound(*fast, polygon)) {
+      raw = readSkeleton(*fast, polygon);
+      return true;
+    }
+  }
+  const auto exact = buildSkeleton<ExactPredicates>(polygon);
+  if (!exact) return false;
+  raw = readSkeleton(*exact, polygon);
+  return true;
+}
+
+}  // namespace
+
+int cgalStraightSkeletonVertexCount(const Polygon2& polygon) {
+  const auto skeleton = buildSkeleton<ExactPredicates>(polygon);
+  return skeleton ? int(skeleton->size_of_vertices()) : -1;
+}
+
+bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, SkeletonGraph2& graph, std::string& error,
+                           SkeletonArithmetic arithmetic) {
+  graph = {};
+  RawSkeleton raw;
+  if (!computeSkeleton(polygon, arithmetic, raw)) {
+    error = "CGAL could not build the straight skeleton of the polygon (degenerate outline)";
+    return false;
+  }
+  graph.nodes = std::move(raw.nodes);
+  std::vector<double>& times = raw.times;
+  const std::vector<std::array<int, 2>>& edges = raw.edges;
   if (graph.nodes.empty()) {
     error = "the straight skeleton of the polygon has no inner vertex";
     return false;

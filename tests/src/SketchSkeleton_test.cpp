@@ -7,6 +7,7 @@
 #include "sketch/BoundedDP.h"
 #include "sketch/SketchInflation.h"
 #include "sketch/SketchSkeleton.h"
+#include "sketch/StraightSkeletonGraph.h"
 
 #include <gtest/gtest.h>
 
@@ -252,6 +253,46 @@ TEST(BoundedDP, BentBranchStaysInsideItsRegion) {
   EXPECT_GE(r.points.size(), 3u);
   EXPECT_TRUE(r.inside);
   EXPECT_LT(r.threshold, 500);
+}
+
+// The fast path (CGAL in double arithmetic, checked) must give the skeleton of the exact predicates.
+TEST(StraightSkeletonGraph, DoubleArithmeticMatchesExactPredicates) {
+  for (const char* name : {"rectangle.txt", "star.txt", "hand.txt", "bird.txt", "unsteady.txt"}) {
+    for (const auto& part : loadSketch(name)) {
+      Eigen::AlignedBox2d box;
+      for (const auto& q : part.stroke) box.extend(q);
+      const double unit = box.diagonal().norm() / 1000;
+      const auto stroke = medial::prepareStroke(part.stroke, {10 * unit, 2 * unit});
+      ASSERT_TRUE(stroke.ok()) << name;
+      medial::SkeletonGraph2 fast, exact;
+      std::string error;
+      ASSERT_TRUE(medial::straightSkeletonGraph(stroke.polygon, 0.5, fast, error)) << name << ": " << error;
+      ASSERT_TRUE(medial::straightSkeletonGraph(stroke.polygon, 0.5, exact, error,
+                                                medial::SkeletonArithmetic::exactPredicates)) << name;
+      ASSERT_EQ(fast.nodeCount(), exact.nodeCount()) << name;
+      EXPECT_EQ(fast.edges, exact.edges) << name;
+      for (int v = 0; v < fast.nodeCount(); ++v) EXPECT_LT((fast.nodes[v] - exact.nodes[v]).norm(), 1e-6 * unit) << name;
+    }
+  }
+}
+
+TEST(StraightSkeletonGraph, NearlyDegenerateOutlineGivesATreeInside) {
+  // A comb: parallel teeth of equal width (many simultaneous events) whose sides carry points off the line
+  // by 1e-13 (nearly collinear triples).
+  Polygon2 comb{{0, 0}, {100, 0}};
+  for (int tooth = 4; tooth >= 0; --tooth) {
+    const double x = 20 * tooth;
+    comb.insert(comb.end(), {{x + 15, 30}, {x + 15, 60}, {x + 15 + 1e-13, 90}, {x + 15, 120}, {x + 5, 120},
+                             {x + 5, 90}, {x + 5 - 1e-13, 60}, {x + 5, 30}});
+  }
+  comb.emplace_back(0, 30);
+  for (auto arithmetic : {medial::SkeletonArithmetic::automatic, medial::SkeletonArithmetic::exactPredicates}) {
+    medial::SkeletonGraph2 graph;
+    std::string error;
+    ASSERT_TRUE(medial::straightSkeletonGraph(comb, 0.5, graph, error, arithmetic)) << error;
+    EXPECT_EQ(int(graph.edges.size()), graph.nodeCount() - 1);
+    for (const auto& node : graph.nodes) EXPECT_TRUE(medial::isInside(comb, node)) << node.transpose();
+  }
 }
 
 // Bad input: a clear error naming the stroke, never a crash.
