@@ -37,8 +37,8 @@ std::vector<std::array<int, 3>> hullTriangles(const std::vector<Eigen::Vector3d>
   const double tolerance = 1e-9 * radius;
   std::vector<std::array<int, 3>> faces;
   std::set<std::vector<int>> donePlanes;
-  auto fan = [&](std::vector<int> polygon, const Eigen::Vector3d& outward, int apexPosition) {
-    // Counter-clockwise about `outward`.
+  // The polygon's points in counter-clockwise order about `outward`.
+  auto counterClockwise = [&](std::vector<int> polygon, const Eigen::Vector3d& outward) {
     Eigen::Vector3d mid = Eigen::Vector3d::Zero();
     for (int i : polygon) mid += q[size_t(i)];
     mid /= double(polygon.size());
@@ -47,7 +47,11 @@ std::vector<std::array<int, 3>> hullTriangles(const std::vector<Eigen::Vector3d>
       const Eigen::Vector3d da = q[size_t(a)] - mid, db = q[size_t(b)] - mid;
       return std::atan2(da.dot(v), da.dot(u)) < std::atan2(db.dot(v), db.dot(u));
     });
-    std::rotate(polygon.begin(), polygon.begin() + apexPosition % int(polygon.size()), polygon.end());
+    return polygon;
+  };
+  // Triangles fanned from `apex` over a polygon in counter-clockwise order.
+  auto fan = [&](std::vector<int> polygon, int apex) {
+    std::rotate(polygon.begin(), std::find(polygon.begin(), polygon.end(), apex), polygon.end());
     for (size_t k = 1; k + 1 < polygon.size(); ++k) faces.push_back({polygon[0], polygon[k], polygon[k + 1]});
   };
   bool allCoplanar = false;
@@ -70,12 +74,18 @@ std::vector<std::array<int, 3>> hullTriangles(const std::vector<Eigen::Vector3d>
         if (!donePlanes.insert(onPlane).second) continue;
         if (allCoplanar) {
           // Both sides of the one plane: the side facing away from the centre first.
+          // The two fans start at neighbouring points so that they share no diagonal (a shared one would
+          // carry four triangles: a non-manifold edge).
           const Eigen::Vector3d side = normal.dot(q[size_t(i)] - centre) >= 0 ? normal : Eigen::Vector3d(-normal);
-          fan(onPlane, side, 0);
-          fan(onPlane, -side, 1);
+          std::vector<int> ring = counterClockwise(onPlane, side);
+          fan(ring, ring[0]);
+          const int otherApex = ring[1];
+          std::reverse(ring.begin(), ring.end());
+          fan(ring, otherApex);
           return faces;
         }
-        fan(onPlane, above == 0 ? normal : Eigen::Vector3d(-normal), 0);
+        const std::vector<int> ring = counterClockwise(onPlane, above == 0 ? normal : Eigen::Vector3d(-normal));
+        fan(ring, ring[0]);
       }
   return faces;
 }

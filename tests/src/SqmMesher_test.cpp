@@ -1,5 +1,6 @@
 // SqmMesher: closed quad-dominant manifolds from skeletons, the extensions, and bad input.
 #include "mesh/MeshTopology.h"
+#include "sqm/BranchNodePolyhedron.h"
 #include "sqm/CycleClosing.h"
 #include "sqm/RingAngles.h"
 #include "sqm/SqmMesher.h"
@@ -102,6 +103,40 @@ TEST(SqmMesher, PlanarYIsClosedAndQuadDominant) {
   expectClosedQuadDominant(s, r);
   EXPECT_EQ(r.branchNodes, 1);
   EXPECT_EQ(r.leafNodes, 3);
+}
+
+// A branch node whose neighbours all lie in one plane through it (every joint of a sketch's skeleton):
+// the hull is a flat polygon covered from both sides; the two covers must not share a diagonal.
+TEST(BranchNodePolyhedron, CoplanarNeighboursGiveAClosedPolyhedron) {
+  for (int arms = 3; arms <= 6; ++arms) {
+    std::vector<int> neighbours;
+    std::vector<Eigen::Vector3d> positions;
+    for (int k = 0; k < arms; ++k) {
+      const double angle = 2 * M_PI * k / arms + 0.3 * std::sin(k);  // uneven spacing
+      neighbours.push_back(k + 1);
+      positions.emplace_back(std::cos(angle), std::sin(angle), 0);
+    }
+    medial::BranchNodePolyhedron bnp;
+    std::string error;
+    ASSERT_TRUE(medial::generateBnp(0, Eigen::Vector3d::Zero(), 0.5, neighbours, positions, bnp, error)) << error;
+    EXPECT_EQ(int(bnp.mesh.n_faces()), 6 * 2 * (arms - 2)) << arms << " arms: a face was refused";
+    for (auto e : bnp.mesh.edges()) EXPECT_FALSE(bnp.mesh.is_boundary(e)) << arms << " arms";
+  }
+  const medial::Skeleton plus = [] {
+    medial::Skeleton s;
+    s.nodes = {{0, 0, 0}};
+    s.radii = {0.4};
+    for (const Eigen::Vector3d d : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(-1, 0.2, 0),
+                                    Eigen::Vector3d(0.1, -1, 0)})
+      for (int k = 1; k <= 2; ++k) {
+        s.nodes.push_back(k * d);
+        s.radii.push_back(0.25);
+        s.edges.push_back({k == 1 ? 0 : s.nodeCount() - 2, s.nodeCount() - 1});
+      }
+    s.root = 0;
+    return s;
+  }();
+  expectClosedQuadDominant(plus, medial::sqmMesh(plus));
 }
 
 TEST(SqmMesher, EverySmoothingAndPairingGivesAClosedManifold) {
