@@ -6,9 +6,11 @@
  * Input: a skeleton (GUIDE §2: nodes, 2-point lines, `Radius`, optional `EllipsoidAxes` and `Root`).
  * Output: a polygonal mesh of quads and triangles (not triangulated), outward oriented, with point data
  * `SkeletonNode` (int: the input node each vertex belongs to). Several components are meshed each.
- * Cycles are meshed (a genus-g surface for g independent cycles). Repairs: self-loop edges are dropped
- * and repeated edges merged. Errors (empty output): no nodes, no Radius, a radius <= 0 or NaN coordinates,
- * coincident joined nodes, two edges leaving a node in the same direction.
+ * Cycles are meshed (a genus-g surface for g independent cycles). Repairs: self-loop edges are dropped,
+ * repeated edges merged, and a node whose centre lies inside a larger neighbour's sphere is merged into it
+ * (its tube would run backwards out of that sphere; e.g. finger nodes inside a palm's ball).
+ * Errors (empty output): no nodes, no Radius, a radius <= 0 or NaN coordinates, coincident joined nodes,
+ * two edges leaving a node in the same direction.
  * Implements medial::sqmMesh (src/sqm/SqmMesher.h).
  */
 #pragma once

@@ -37,7 +37,55 @@ struct PreparedSkeleton {
   std::vector<int> origin;
   std::vector<bool> pseudo;                   // the pseudo children of cut cycle edges (no geometry)
   std::vector<std::pair<int, int>> cycleCuts;  // pseudo child at one end, at the other (extension 5)
+  std::vector<bool> merged;                    // swallowed nodes, merged into a neighbour (no geometry)
+  int mergedNodes = 0;
 };
+
+// Repair: a node whose centre lies inside the sphere of a neighbour at least as large is swallowed by it
+// (the tube between them would have to run backwards out of the larger sphere, folding the surface), so it
+// is merged into that neighbour: its other edges move there and it is left out of the mesh. Skeletons
+// from sketches and contraction have such nodes where thin parts join a thick one (fingers at a palm).
+// Not when the two share a neighbour: merging would close a cycle of three onto one edge. Returns the
+// number of nodes merged.
+int mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
+  merged.assign(s.nodes.size(), false);
+  std::vector<std::set<int>> neighbours(s.nodes.size());
+  for (const auto& e : s.edges) {
+    neighbours[size_t(e[0])].insert(e[1]);
+    neighbours[size_t(e[1])].insert(e[0]);
+  }
+  int count = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto& e : s.edges) {
+      const int big = s.radii[size_t(e[0])] >= s.radii[size_t(e[1])] ? e[0] : e[1];
+      const int small = big == e[0] ? e[1] : e[0];
+      if ((s.nodes[size_t(big)] - s.nodes[size_t(small)]).norm() >= s.radii[size_t(big)]) continue;
+      const auto& around = neighbours[size_t(small)];
+      if (std::any_of(around.begin(), around.end(), [&](int n) { return neighbours[size_t(big)].count(n) > 0; }))
+        continue;
+      for (int n : around) {
+        neighbours[size_t(n)].erase(small);
+        if (n == big) continue;
+        neighbours[size_t(n)].insert(big);
+        neighbours[size_t(big)].insert(n);
+      }
+      neighbours[size_t(small)].clear();
+      merged[size_t(small)] = true;
+      if (s.root == small) s.root = big;
+      ++count;
+      changed = true;
+      break;  // the edge list is rebuilt before the next search
+    }
+    if (changed) {
+      s.edges.clear();
+      for (int a = 0; a < s.nodeCount(); ++a)
+        for (int b : neighbours[size_t(a)])
+          if (a < b) s.edges.push_back({a, b});
+    }
+  }
+  return count;
+}
 
 std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkeleton& out) {
   if (input.nodes.empty()) return "the skeleton has no nodes";
@@ -59,6 +107,7 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
         1e-9 * std::max(s.radii[size_t(e[0])], s.radii[size_t(e[1])]))
       return "nodes " + std::to_string(e[0]) + " and " + std::to_string(e[1]) +
              " are joined by an edge but lie at the same place";
+  out.mergedNodes = mergeSwallowedNodes(s, out.merged);
   // Extension 5: every edge closing a cycle is cut; each end gets a pseudo child where the other end is.
   std::vector<int> parent(s.nodes.size());
   std::iota(parent.begin(), parent.end(), 0);
@@ -403,10 +452,12 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
   result.error = prepare(input, p, prepared);
   if (!result.error.empty()) return result;
   const Skeleton& s = prepared.skeleton;
+  result.mergedNodes = prepared.mergedNodes;
 
   Builder builder;
   builder.pseudo = &prepared.pseudo;
   std::vector<bool> done(s.nodes.size(), false);
+  for (size_t k = 0; k < prepared.merged.size(); ++k) done[k] = prepared.merged[k];  // no tube of their own
   for (int start = 0; start < s.nodeCount(); ++start) {
     if (done[size_t(start)]) continue;
     auto clock = Clock::now();

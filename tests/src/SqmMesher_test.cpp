@@ -383,6 +383,36 @@ TEST(CycleClosing, LopsidedRingsStillCloseTheBand) {
     }
 }
 
+TEST(SqmMesher, NodesInsideANeighboursSphereAreMergedIntoIt) {
+  // A thick root with three arms; the first node of one arm lies inside the root's sphere, and so does
+  // the next one once the first is merged (a thin part joining a thick one, like a finger at a palm).
+  auto s = ySkeleton();
+  s.radii[0] = 1.05;
+  s.nodes.insert(s.nodes.begin() + 1, Eigen::Vector3d(0.5, 0, 0));  // becomes node 1; the old 1.. shift
+  s.radii.insert(s.radii.begin() + 1, 0.35);
+  for (auto& e : s.edges)
+    for (int& v : e) v += v >= 1 ? 1 : 0;
+  for (auto& e : s.edges)
+    if (e == std::array<int, 2>{0, 2}) e = {1, 2};
+  s.edges.push_back({0, 1});
+  const auto r = medial::sqmMesh(s);
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(r.mergedNodes, 2);  // (0.5, 0, 0) and (1, 0, 0), closer to the root than its radius; not (-0.5, 1, 0)
+  const medial::MeshTopology t = topologyOf(r.mesh);
+  EXPECT_EQ(t.borderEdges, 0);
+  EXPECT_EQ(t.nonManifoldEdges, 0);
+  EXPECT_EQ(t.eulerCharacteristic, 2);
+  for (int node : r.mesh.vertexNode) EXPECT_TRUE(node != 1 && node != 2) << "a merged node owns a vertex";
+
+  // In a cycle of three, merging would close the cycle onto one edge: the nodes stay.
+  medial::Skeleton triangle;
+  triangle.nodes = {{0, 0, 0}, {0.5, 0, 0}, {0.25, 2, 0}};
+  triangle.radii = {0.8, 0.2, 0.2};
+  triangle.edges = {{0, 1}, {1, 2}, {2, 0}};
+  const auto kept = medial::sqmMesh(triangle);
+  EXPECT_EQ(kept.mergedNodes, 0);
+}
+
 TEST(SqmMesher, BadInputIsRefusedOrRepaired) {
   EXPECT_EQ(medial::sqmMesh(medial::Skeleton()).error, "the skeleton has no nodes");
   auto noRadius = ySkeleton();
