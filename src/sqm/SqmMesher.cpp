@@ -41,9 +41,11 @@ struct PreparedSkeleton {
   int mergedNodes = 0;
 };
 
-// Repair: a node whose centre lies inside the sphere of a neighbour at least as large is swallowed by it
-// (the tube between them would have to run backwards out of the larger sphere, folding the surface), so it
-// is merged into that neighbour: its other edges move there and it is left out of the mesh. Skeletons
+// Repair: a node whose centre lies inside the sphere of a neighbouring branch node at least as large is
+// swallowed by it: the branch node's polyhedron lies on its sphere, so the tube between them would have to
+// run backwards out of it, folding the surface. The node is merged into the branch node: its other edges
+// move there and it is left out of the mesh. (Between connection nodes, whose rings sit at their centres,
+// overlapping spheres do no harm.) Skeletons
 // from sketches and contraction have such nodes where thin parts join a thick one (fingers at a palm).
 // Not when the two share a neighbour: merging would close a cycle of three onto one edge. Returns the
 // number of nodes merged.
@@ -60,6 +62,7 @@ int mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
     for (const auto& e : s.edges) {
       const int big = s.radii[size_t(e[0])] >= s.radii[size_t(e[1])] ? e[0] : e[1];
       const int small = big == e[0] ? e[1] : e[0];
+      if (neighbours[size_t(big)].size() < 3) continue;  // rings of connection nodes sit at their centres
       if ((s.nodes[size_t(big)] - s.nodes[size_t(small)]).norm() >= s.radii[size_t(big)]) continue;
       const auto& around = neighbours[size_t(small)];
       if (std::any_of(around.begin(), around.end(), [&](int n) { return neighbours[size_t(big)].count(n) > 0; }))
