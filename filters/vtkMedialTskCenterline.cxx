@@ -130,6 +130,7 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
                   << (this->DropBorderParts ? "; parts touching the volume's border were dropped" : "") << ")");
     return 0;
   }
+  medial::cropToStructure(volume, 1);  // every later step works on the structure's box only
   this->UpdateProgress(0.1);
 
   int64_t seed = -1;

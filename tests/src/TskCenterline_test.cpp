@@ -2,6 +2,7 @@
 #include "TubePhantoms.h"
 #include "centerline/TskAxis.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 using medial::testing::axisError;
@@ -90,6 +91,52 @@ TEST(BinaryVolume, ComponentsBorderAndHoles) {
   EXPECT_EQ(medial::dropBorderTouchingParts(v), 3);
   EXPECT_EQ(medial::keepLargestComponent(v), 2);
   EXPECT_EQ(std::count(v.inside.begin(), v.inside.end(), 1), 125);
+}
+
+TEST(BinaryVolume, DiagonalContactsFollowTheConnectivity) {
+  medial::BinaryVolume v;
+  v.size = {8, 8, 8};
+  v.inside.assign(512, 0);
+  for (int d = 0; d <= 3; ++d) v.inside[size_t(v.index(d, d, d))] = 1;  // corner to corner from the border
+  v.inside[size_t(v.index(5, 5, 5))] = 1;                                 // two steps from the chain's end
+  EXPECT_EQ(medial::dropBorderTouchingParts(v), 4);                       // 26-connected: the whole chain
+  EXPECT_EQ(std::count(v.inside.begin(), v.inside.end(), 1), 1);
+  // A background voxel meeting the outside only at an edge is a cavity (6-connected background).
+  std::fill(v.inside.begin(), v.inside.end(), 1);
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j) v.inside[size_t(v.index(i, j, 0))] = 0;  // the bottom face is outside
+  v.inside[size_t(v.index(3, 3, 2))] = 0;                                 // closed in
+  v.inside[size_t(v.index(5, 5, 1))] = 0;                                 // open to the bottom face
+  v.inside[size_t(v.index(1, 2, 1))] = 0, v.inside[size_t(v.index(2, 3, 2))] = 0;  // meet at a corner only
+  EXPECT_EQ(medial::fillHoles(v), 2);
+  EXPECT_EQ(v.inside[size_t(v.index(5, 5, 1))], 0);
+  EXPECT_EQ(v.inside[size_t(v.index(1, 2, 1))], 0);
+  EXPECT_EQ(v.inside[size_t(v.index(2, 3, 2))], 1);
+}
+
+TEST(BinaryVolume, CropKeepsPhysicalPositions) {
+  medial::BinaryVolume v;
+  v.size = {10, 9, 8};
+  v.origin = {10, 20, 30};
+  v.spacing = {0.5, 1.0, 2.0};
+  v.direction = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  v.inside.assign(size_t(v.voxelCount()), 0);
+  std::vector<Eigen::Vector3d> expected;
+  for (int k = 1; k <= 2; ++k)
+    for (int j = 3; j <= 5; ++j)
+      for (int i = 2; i <= 4; ++i)
+        if ((i + j + k) % 2 == 0) {
+          v.inside[size_t(v.index(i, j, k))] = 1;
+          expected.push_back(v.physical(v.index(i, j, k)));
+        }
+  const auto first = medial::cropToStructure(v, 1);
+  EXPECT_EQ(first, (std::array<int, 3>{1, 2, 0}));
+  EXPECT_EQ(v.size, (std::array<int, 3>{5, 5, 4}));  // z: the box 1..2 grows to 0..3
+  std::vector<Eigen::Vector3d> found;
+  for (int64_t i = 0; i < v.voxelCount(); ++i)
+    if (v.inside[size_t(i)]) found.push_back(v.physical(i));
+  ASSERT_EQ(found.size(), expected.size());
+  for (size_t n = 0; n < found.size(); ++n) EXPECT_LT((found[n] - expected[n]).norm(), 1e-12);
 }
 
 TEST(BinaryVolume, DistanceMapIsExactEuclidean) {
