@@ -48,9 +48,9 @@ TEST(TskCenterline, UStandingOnItsBendStartsAtAnEnd) {
   const auto t = tubePhantom(uCurve, 6, {60, 60, 62});
   const auto c = centerlineOf(t.volume);
   const auto e = axisError(c.points, t);
-  // Measured 0.34 voxel mean (the goal is 0.25: not met on curved tubes yet), 1.5 max.
-  EXPECT_LT(e.mean, 0.4);
-  EXPECT_LT(e.max, 2.0);
+  // The goal: a mean under 0.25 voxel. Measured 0.02 mean, 0.16 max (with the centering passes).
+  EXPECT_LT(e.mean, 0.25);
+  EXPECT_LT(e.max, 0.5);
   EXPECT_GT(c.length(), 0.9 * (60 + M_PI * 20));
 }
 
