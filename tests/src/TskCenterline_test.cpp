@@ -61,8 +61,9 @@ TEST(TskCenterline, HelixWithAnisotropicSpacing) {
   const auto c = centerlineOf(t.volume);
   const auto e = axisError(c.points, t);
   EXPECT_GT(e.points, 100);
-  EXPECT_LT(e.mean, 0.4);  // mm; spacing 0.7 x 0.7 x 1.0
-  EXPECT_LT(e.max, 1.2);
+  // mm; spacing 0.7 x 0.7 x 1.0: the goal, 0.25 voxel, is 0.175 mm. Measured 0.04 mean, 0.11 max.
+  EXPECT_LT(e.mean, 0.175);
+  EXPECT_LT(e.max, 0.5);
 }
 
 TEST(TskCenterline, BadSeedsAndEmptyVolumes) {
