@@ -63,6 +63,10 @@ int runSqm(const std::vector<std::string>& args) {
   timings.start("sqm");
   runFilter(filter, skeleton, input, "tube mesh of " + input, progress);
 
+  if (filter->GetMergedNodes() > 0)
+    std::fprintf(stderr, "medial sqm: note: %d node%s inside a neighbouring branch node's sphere merged into it\n",
+                 filter->GetMergedNodes(), filter->GetMergedNodes() == 1 ? "" : "s");
+
   timings.start("write");
   writePolyData(filter->GetOutput(), output);
   timings.stop();

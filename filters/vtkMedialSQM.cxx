@@ -58,6 +58,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     vtkErrorMacro(<< (input ? error : std::string("no input skeleton")));
     return 0;
   }
+  this->MergedNodes = 0;
   medial::SqmParameters p;
   medial::parseLieSmoothing(this->Smoothing, p.smoothing);
   medial::parseRingPairing(this->Pairing, p.pairing);
@@ -74,6 +75,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     vtkErrorMacro(<< result.error);
     return 0;
   }
+  this->MergedNodes = result.mergedNodes;
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   for (const auto& v : result.mesh.vertices) points->InsertNextPoint(v.x(), v.y(), v.z());

@@ -51,6 +51,10 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkSetClampMacro(SharpMinimumScale, double, 0.05, 1.0);
   vtkGetMacro(SharpMinimumScale, double);
 
+  // After an update: how many nodes lay inside a neighbouring branch node's sphere and were merged into it
+  // (the repair above).
+  vtkGetMacro(MergedNodes, int);
+
  protected:
   vtkMedialSQM() = default;
   ~vtkMedialSQM() override = default;
@@ -67,4 +71,5 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   int SubdivisionLevels = 0;
   bool SharpScaling = false;
   double SharpMinimumScale = 0.8;
+  int MergedNodes = 0;
 };

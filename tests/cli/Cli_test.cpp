@@ -197,6 +197,10 @@ TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
   }
   EXPECT_EQ(fineTriangles, 0);
   EXPECT_GT(fineQuads, 16 * 100);
+  // A repair is told on stderr: the quadruped's spine nodes inside its hips' spheres are merged.
+  auto merged = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/quadruped.vtp") + " -o " + dir + "/q.vtp --quiet"));
+  EXPECT_EQ(merged.exitCode, 0) << merged.err;
+  EXPECT_NE(merged.err.find("merged into it"), std::string::npos) << merged.err;
 }
 
 TEST(Cli, CenterlineOfAPhantomAndItsErrors) {
