@@ -1,9 +1,9 @@
 // Benchmark: frame time of vtkMedialGhostPass against plain rendering of the same scene, in one run.
 // Scene: a context mesh subdivided (Loop) to about a million triangles and its contraction skeleton as
 // the object of interest, drawn as vtkMedialScene draws them, offscreen at 1280x1024 on this machine's
-// OpenGL (llvmpipe under Xvfb). Each configuration gets its own window, a few warm-up frames, then
-// `frames` timed frames while the camera turns 2° per frame (the map is view-dependent: rebuilt every
-// frame); a frame is Render() plus glFinish. Configurations:
+// OpenGL (llvmpipe under Xvfb). Each configuration gets its own window and a few warm-up frames; then the
+// configurations take turns for `frames` timed frames each while their cameras turn 2° per frame (the
+// map is view-dependent: rebuilt every frame); a frame is Render() plus glFinish. Configurations:
 //   plain       the opaque mesh hides the skeleton (no pass)
 //   peeled      the usual workaround: the mesh at opacity 0.3 over the skeleton, dual depth peeling
 //   pass, off   the ghost pass installed with Mode Off (its delegate alone)
@@ -31,6 +31,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -82,9 +83,29 @@ vtkSmartPointer<vtkPolyData> subdivideTo(vtkPolyData* mesh, vtkIdType target) {
 
 enum class Config { Plain, Peeled, PassOff, Ghost };
 
-double medianFrameSeconds(const Options& o, vtkPolyData* context, vtkPolyData* skeleton, Config config,
-                          double mapScale) {
-  auto scene = vtkSmartPointer<vtkMedialScene>::New();
+// One configuration's scene in its own offscreen window, and its frame times.
+struct Setup {
+  std::string name;
+  vtkSmartPointer<vtkMedialScene> scene;
+  vtkSmartPointer<vtkRenderWindow> window;
+  std::vector<double> times;
+
+  void frame() {
+    window->Render();
+    if (auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window)) gl->WaitForCompletion();
+  }
+  double median() {
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+  }
+};
+
+std::unique_ptr<Setup> makeSetup(const std::string& name, const Options& o, vtkPolyData* context, vtkPolyData* skeleton,
+                                 Config config, double mapScale) {
+  auto setup = std::make_unique<Setup>();
+  setup->name = name;
+  setup->scene = vtkSmartPointer<vtkMedialScene>::New();
+  vtkMedialScene* scene = setup->scene;
   scene->SetSkeletonRadiusScale(0.3);
   if (config == Config::Peeled) scene->SetMeshOpacity(0.3);
   scene->AddData(context);
@@ -95,7 +116,8 @@ double medianFrameSeconds(const Options& o, vtkPolyData* context, vtkPolyData* s
     scene->GetGhostPass()->SetMapScale(mapScale);
     if (config == Config::PassOff) scene->GetGhostPass()->SetModeToOff();
   }
-  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  setup->window = vtkSmartPointer<vtkRenderWindow>::New();
+  vtkRenderWindow* window = setup->window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);  // depth peeling needs it; the same for every configuration
   window->SetAlphaBitPlanes(1);
@@ -107,23 +129,8 @@ double medianFrameSeconds(const Options& o, vtkPolyData* context, vtkPolyData* s
     renderer->SetOcclusionRatio(0.0);
   }
   scene->ResetCamera(static_cast<double>(o.width) / o.height);
-  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-  auto frame = [&] {
-    window->Render();
-    if (gl) gl->WaitForCompletion();
-  };
-  for (int i = 0; i < 3; ++i) frame();  // shaders, buffers
-  std::vector<double> times;
-  for (int i = 0; i < o.frames; ++i) {
-    renderer->GetActiveCamera()->Azimuth(2.0);
-    const auto start = std::chrono::steady_clock::now();
-    frame();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  window->RemoveRenderer(renderer);
-  window->Finalize();
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
+  for (int i = 0; i < 3; ++i) setup->frame();  // shaders, buffers
+  return setup;
 }
 
 }  // namespace
@@ -149,18 +156,33 @@ int main(int argc, char** argv) {
     return 1;
   }
 
-  const double plain = medianFrameSeconds(o, context, skeleton, Config::Plain, 0);
-  const double peeled = medianFrameSeconds(o, context, skeleton, Config::Peeled, 0);
-  std::printf("%-14s %10s %14s %15s\n", "configuration", "median ms", "ratio / plain", "ratio / peeled");
-  std::printf("%-14s %10.1f %14.2f %15.2f\n", "plain", 1e3 * plain, 1.0, plain / peeled);
-  std::printf("%-14s %10.1f %14.2f %15.2f\n", "peeled 0.3", 1e3 * peeled, peeled / plain, 1.0);
-  const double passOff = medianFrameSeconds(o, context, skeleton, Config::PassOff, 0.5);
-  std::printf("%-14s %10.1f %14.2f %15.2f\n", "pass, mode off", 1e3 * passOff, passOff / plain, passOff / peeled);
+  // All configurations live at once and take turns frame by frame, so that the machine's drift (another
+  // process, the clock) falls on all of them alike; ratios are of medians.
+  std::vector<std::unique_ptr<Setup>> setups;
+  setups.push_back(makeSetup("plain", o, context, skeleton, Config::Plain, 0));
+  setups.push_back(makeSetup("peeled 0.3", o, context, skeleton, Config::Peeled, 0));
+  setups.push_back(makeSetup("pass, mode off", o, context, skeleton, Config::PassOff, 0.5));
   for (double scale : {1.0, 0.5, 0.25}) {
-    const double ghost = medianFrameSeconds(o, context, skeleton, Config::Ghost, scale);
     char name[32];
     std::snprintf(name, sizeof name, "ghost %.2f", scale);
-    std::printf("%-14s %10.1f %14.2f %15.2f\n", name, 1e3 * ghost, ghost / plain, ghost / peeled);
+    setups.push_back(makeSetup(name, o, context, skeleton, Config::Ghost, scale));
+  }
+  for (int i = 0; i < o.frames; ++i)
+    for (auto& setup : setups) {
+      setup->scene->GetRenderer()->GetActiveCamera()->Azimuth(2.0);
+      const auto start = std::chrono::steady_clock::now();
+      setup->frame();
+      setup->times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+  const double plain = setups[0]->median(), peeled = setups[1]->median();
+  std::printf("%-14s %10s %14s %15s\n", "configuration", "median ms", "ratio / plain", "ratio / peeled");
+  for (auto& setup : setups) {
+    const double t = setup->median();
+    std::printf("%-14s %10.1f %14.2f %15.2f\n", setup->name.c_str(), 1e3 * t, t / plain, t / peeled);
+  }
+  for (auto& setup : setups) {
+    setup->window->RemoveRenderer(setup->scene->GetRenderer());
+    setup->window->Finalize();
   }
   return 0;
 }
