@@ -84,10 +84,14 @@ void SqmPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
     objects()->remove(previous);
   }
   if (SceneObject* result = objects()->add(name, mesh)) objects()->setOpacity(result, opacity);
-  emit message(QString("SQM: %1 faces, %2 vertices, subdivision %3")
+  const int merged = static_cast<vtkMedialSQM*>(filter)->GetMergedNodes();
+  emit message(QString("SQM: %1 faces, %2 vertices, subdivision %3%4")
                    .arg(mesh->GetNumberOfPolys())
                    .arg(mesh->GetNumberOfPoints())
-                   .arg(subdivision_->value()));
+                   .arg(subdivision_->value())
+                   .arg(merged > 0 ? QString("; %1 nodes inside a neighbouring branch node's sphere merged into it")
+                                         .arg(merged)
+                                   : QString()));
 }
 
 }  // namespace medial::gui
