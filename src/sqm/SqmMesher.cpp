@@ -38,25 +38,22 @@ struct PreparedSkeleton {
   std::vector<bool> pseudo;                   // the pseudo children of cut cycle edges (no geometry)
   std::vector<std::pair<int, int>> cycleCuts;  // pseudo child at one end, at the other (extension 5)
   std::vector<bool> merged;                    // swallowed nodes, merged into a neighbour (no geometry)
-  int mergedNodes = 0;
 };
 
 // Repair: a node whose centre lies inside the sphere of a neighbouring branch node at least as large is
 // swallowed by it: the branch node's polyhedron lies on its sphere, so the tube between them would have to
 // run backwards out of it, folding the surface. The node is merged into the branch node: its other edges
 // move there and it is left out of the mesh. (Between connection nodes, whose rings sit at their centres,
-// overlapping spheres do no harm.) Skeletons
-// from sketches and contraction have such nodes where thin parts join a thick one (fingers at a palm).
-// Not when the two share a neighbour: merging would close a cycle of three onto one edge. Returns the
-// number of nodes merged.
-int mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
+// overlapping spheres do no harm.) Skeletons from sketches and contraction have such nodes where thin
+// parts join a thick one (fingers at a palm). Not when the two share a neighbour: merging would close a
+// cycle of three onto one edge.
+void mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
   merged.assign(s.nodes.size(), false);
   std::vector<std::set<int>> neighbours(s.nodes.size());
   for (const auto& e : s.edges) {
     neighbours[size_t(e[0])].insert(e[1]);
     neighbours[size_t(e[1])].insert(e[0]);
   }
-  int count = 0;
   for (bool changed = true; changed;) {
     changed = false;
     for (const auto& e : s.edges) {
@@ -76,7 +73,6 @@ int mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
       neighbours[size_t(small)].clear();
       merged[size_t(small)] = true;
       if (s.root == small) s.root = big;
-      ++count;
       changed = true;
       break;  // the edge list is rebuilt before the next search
     }
@@ -87,7 +83,6 @@ int mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
           if (a < b) s.edges.push_back({a, b});
     }
   }
-  return count;
 }
 
 std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkeleton& out) {
@@ -110,7 +105,7 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
         1e-9 * std::max(s.radii[size_t(e[0])], s.radii[size_t(e[1])]))
       return "nodes " + std::to_string(e[0]) + " and " + std::to_string(e[1]) +
              " are joined by an edge but lie at the same place";
-  out.mergedNodes = mergeSwallowedNodes(s, out.merged);
+  mergeSwallowedNodes(s, out.merged);
   // Extension 5: every edge closing a cycle is cut; each end gets a pseudo child where the other end is.
   std::vector<int> parent(s.nodes.size());
   std::iota(parent.begin(), parent.end(), 0);
@@ -455,7 +450,7 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
   result.error = prepare(input, p, prepared);
   if (!result.error.empty()) return result;
   const Skeleton& s = prepared.skeleton;
-  result.mergedNodes = prepared.mergedNodes;
+  result.mergedNodes = int(std::count(prepared.merged.begin(), prepared.merged.end(), true));
 
   Builder builder;
   builder.pseudo = &prepared.pseudo;

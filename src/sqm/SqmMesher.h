@@ -66,7 +66,7 @@ struct SqmResult {
   SqmMesh mesh;
   int branchNodes = 0, connectionNodes = 0, leafNodes = 0;
   int reorientedFaces = 0;  // faces turned over by the final orientation repair (-1: not orientable)
-  int mergedNodes = 0;      // nodes inside a neighbour's sphere, merged into it (repair, see SqmMesher.cpp)
+  int mergedNodes = 0;      // nodes inside a neighbouring branch node's sphere, merged into it (a repair)
   double straighteningSeconds = 0, generationSeconds = 0, refinementSeconds = 0, joiningSeconds = 0,
          placementSeconds = 0, subdivisionSeconds = 0;
   std::string error;
