@@ -126,7 +126,7 @@ TEST(BranchNodePolyhedron, CoplanarNeighboursGiveAClosedPolyhedron) {
     medial::Skeleton s;
     s.nodes = {{0, 0, 0}};
     s.radii = {0.4};
-    for (const Eigen::Vector3d d : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(-1, 0.2, 0),
+    for (const Eigen::Vector3d& d : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(-1, 0.2, 0),
                                     Eigen::Vector3d(0.1, -1, 0)})
       for (int k = 1; k <= 2; ++k) {
         s.nodes.push_back(k * d);
@@ -315,7 +315,9 @@ TEST(SqmRefinement, SharpScalingShrinksTheConesOnlyNearSharpVertices) {
     scaling.minimumScale = 0.6;
     const int sharp = medial::refineSqmMesh(mesh, s, 2, scaling);
     EXPECT_TRUE(topologyOf(mesh).isClosedManifold());
-    if (on) EXPECT_GT(sharp, 0);
+    if (on) {
+      EXPECT_GT(sharp, 0);
+    }
     int inside = 0;
     for (const auto& v : mesh.vertices) {  // on a cone, or (scaled) inside one, never outside all
       double nearest = INFINITY, deepest = INFINITY;  // |distance| to the nearest cone; signed, deepest
@@ -328,7 +330,9 @@ TEST(SqmRefinement, SharpScalingShrinksTheConesOnlyNearSharpVertices) {
         deepest = std::min(deepest, d);
       }
       EXPECT_LT(deepest, 1e-9);
-      if (!on) EXPECT_LT(nearest, 1e-9);
+      if (!on) {
+        EXPECT_LT(nearest, 1e-9);
+      }
       inside += nearest > 1e-6;
     }
     if (on) EXPECT_GT(inside, 0);
@@ -378,8 +382,12 @@ TEST(CycleClosing, LopsidedRingsStillCloseTheBand) {
   for (const auto& tri : band)
     for (int c = 0; c < 3; ++c) {
       const int from = tri[size_t(c)], to = tri[size_t((c + 1) % 3)];
-      if (from < 6 && to < 6) EXPECT_EQ(to, (from + 1) % 6);
-      if (from >= 6 && to >= 6) EXPECT_EQ(to - 6, (from - 6 + 1) % 4);
+      if (from < 6 && to < 6) {
+        EXPECT_EQ(to, (from + 1) % 6);
+      }
+      if (from >= 6 && to >= 6) {
+        EXPECT_EQ(to - 6, (from - 6 + 1) % 4);
+      }
     }
 }
 
