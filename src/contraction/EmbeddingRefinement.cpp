@@ -1,9 +1,44 @@
 #include "contraction/EmbeddingRefinement.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace medial {
+
+namespace {
+
+// Where the centroid of the absorbed vertices is no good (a one-sided patch: its centroid lies on or
+// outside the surface), the split node is sought in the disc through the edge's midpoint, perpendicular to
+// it: 6 rings of 12 points out to the larger of half the edge and the ends' distances to the surface.
+// Among the inside points, those from which both halves of the edge stay inside win; then the one
+// farthest from the surface (the most central). Returns false when no point of the disc is inside.
+bool insidePointNearMiddle(const Eigen::Vector3d& pa, const Eigen::Vector3d& pb, const InsideTest& inside,
+                           Eigen::Vector3d& best) {
+  const Eigen::Vector3d middle = 0.5 * (pa + pb), axis = (pb - pa).normalized();
+  const Eigen::Vector3d u = axis.unitOrthogonal(), w = axis.cross(u);
+  const double reach = std::max({0.5 * (pb - pa).norm(), std::sqrt(inside.squaredDistanceToSurface(pa)),
+                                 std::sqrt(inside.squaredDistanceToSurface(pb))});
+  constexpr int rings = 6, spokes = 12;
+  std::pair<int, double> bestScore{-1, 0.0};
+  for (int ring = 0; ring <= rings; ++ring)
+    for (int spoke = 0; spoke < (ring == 0 ? 1 : spokes); ++spoke) {
+      const double angle = 2 * M_PI * spoke / spokes, radius = reach * ring / rings;
+      const Eigen::Vector3d p = middle + radius * (std::cos(angle) * u + std::sin(angle) * w);
+      if (!inside.contains(p)) continue;
+      const std::pair<int, double> score{int(inside.segmentIsClear(pa, p) && inside.segmentIsClear(p, pb)),
+                                         inside.squaredDistanceToSurface(p)};
+      if (score > bestScore) {
+        bestScore = score;
+        best = p;
+      }
+    }
+  return bestScore.first >= 0;
+}
+
+}  // namespace
 
 int refineEmbedding(CurveSkeleton& skeleton, const Vertices& originalVertices, const InsideTest& inside) {
   const Eigen::Index nodeCount = skeleton.nodes.rows();
@@ -22,6 +57,39 @@ int refineEmbedding(CurveSkeleton& skeleton, const Vertices& originalVertices, c
     // A centroid of one or two surface vertices lies on the surface, not inside.
     if (count[size_t(k)] < 3 || !inside.contains(centroid)) continue;
     skeleton.nodes.row(k) = centroid.transpose();
+    ++moved;
+  }
+  return moved;
+}
+
+int pushNodesInside(CurveSkeleton& skeleton, const InsideTest& inside) {
+  if (skeleton.nodes.rows() == 0) return 0;
+  const double diagonal = (skeleton.nodes.colwise().maxCoeff() - skeleton.nodes.colwise().minCoeff()).norm();
+  int moved = 0;
+  for (Eigen::Index k = 0; k < skeleton.nodes.rows(); ++k) {
+    const Eigen::Vector3d p = skeleton.nodes.row(k).transpose();
+    if (inside.contains(p)) continue;
+    const Eigen::Vector3d surface = inside.closestSurfacePoint(p);
+    const double outside = (surface - p).norm();
+    if (outside == 0) continue;
+    const Eigen::Vector3d inward = (surface - p) / outside;
+    // Steps of a quarter of the node's distance outside, at least 1/1000 of the skeleton's extent.
+    const double step = std::max(0.25 * outside, 1e-3 * diagonal);
+    Eigen::Vector3d best = p;
+    double bestDistance = -1;
+    for (int i = 1; i <= 400; ++i) {
+      const Eigen::Vector3d q = surface + (i - 0.5) * step * inward;
+      if (!inside.contains(q)) {
+        if (bestDistance >= 0) break;  // through the part and out again
+        continue;
+      }
+      const double distance = inside.squaredDistanceToSurface(q);
+      if (distance < bestDistance) break;
+      bestDistance = distance;
+      best = q;
+    }
+    if (bestDistance < 0) continue;
+    skeleton.nodes.row(k) = best.transpose();
     ++moved;
   }
   return moved;
@@ -60,8 +128,8 @@ int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVe
         middle.push_back(v);
         sum += p;
       }
-    const Eigen::Vector3d centroid = middle.empty() ? pa : Eigen::Vector3d(sum / double(middle.size()));
-    if (middle.size() < 3 || !inside.contains(centroid)) {
+    Eigen::Vector3d centroid = middle.empty() ? pa : Eigen::Vector3d(sum / double(middle.size()));
+    if ((middle.size() < 3 || !inside.contains(centroid)) && !insidePointNearMiddle(pa, pb, inside, centroid)) {
       edges.emplace_back(e.a, e.b);
       continue;
     }

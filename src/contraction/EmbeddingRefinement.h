@@ -11,6 +11,13 @@ namespace medial {
 // Returns the number of nodes moved.
 int refineEmbedding(CurveSkeleton& skeleton, const Vertices& originalVertices, const InsideTest& inside);
 
+// Beyond the paper: a node still outside the mesh after the refinement (its centroid and its contracted
+// position both outside: a thin part, a finger, that the contraction pushed through the surface) moves to
+// the most central point on the way from it through its nearest surface point into the material: the
+// farthest from the surface among points stepped inward until that distance stops growing. Such a node
+// would otherwise make every edge it has leave the mesh. Returns the number of nodes moved.
+int pushNodesInside(CurveSkeleton& skeleton, const InsideTest& inside);
+
 // Beyond the paper: an edge of the curve skeleton whose segment leaves the mesh (the surgery joined two
 // nodes across a bend: elephant, hand) gets a node in between, at the centroid of the input vertices its
 // two ends absorbed that project onto the middle half of the edge, when that centroid lies inside; those

@@ -108,6 +108,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   const InsideTest inside(mesh);
   if (p.refineEmbedding) {
     result.refinedNodes = refineEmbedding(curve, mesh.vertices, inside);
+    result.pushedNodes = pushNodesInside(curve, inside);
     result.splitEdges = splitEdgesLeavingTheMesh(curve, mesh.vertices, inside);
   }
   result.refinementSeconds = secondsSince(start);

@@ -40,6 +40,7 @@ struct SkeletonByContractionResult {
   std::string contractionStop;
   int curveSkeletonNodes = 0;  // before selection
   int refinedNodes = 0;        // nodes the refinement moved
+  int pushedNodes = 0;         // nodes moved from outside into the mesh (pushNodesInside)
   int splitEdges = 0;          // nodes added inside edges that left the mesh (splitEdgesLeavingTheMesh)
   // Seconds per stage, and the share of the contraction spent factorizing.
   double decimationSeconds = 0, contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0, refinementSeconds = 0,

@@ -62,4 +62,10 @@ double InsideTest::squaredDistanceToSurface(const Eigen::Vector3d& point) const 
   return tree_->tree.squared_distance(toPoint(point));
 }
 
+Eigen::Vector3d InsideTest::closestSurfacePoint(const Eigen::Vector3d& point) const {
+  if (tree_->triangles.empty()) return point;
+  const Point q = tree_->tree.closest_point(toPoint(point));
+  return {q.x(), q.y(), q.z()};
+}
+
 }  // namespace medial

@@ -20,6 +20,8 @@ class InsideTest {
   // True when the open segment a-b crosses no triangle (its end points may lie on the surface).
   bool segmentIsClear(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
   double squaredDistanceToSurface(const Eigen::Vector3d& point) const;
+  // The nearest point of the surface (the point itself for an empty mesh).
+  Eigen::Vector3d closestSurfacePoint(const Eigen::Vector3d& point) const;
 
  private:
   struct Tree;

@@ -28,6 +28,9 @@ struct Sample {
   int genus;
   bool genusMet;  // false: Medial finds fewer cycles than the genus (documented in the issue notes)
   bool closed;    // inside tests are meaningful for closed meshes only
+  // Edge midpoints allowed outside: 0, except where the surface intersects itself (man: 848 triangle pairs
+  // where the fingers of the fists and the toes interpenetrate), so that inside is ambiguous there.
+  int midpointsOutside = 0;
 };
 
 std::ostream& operator<<(std::ostream& os, const Sample& s) { return os << s.name; }
@@ -85,13 +88,12 @@ TEST_P(ContractionSamples, ConnectedWithItsCyclesAndInside) {
         inside.contains(0.5 * (Eigen::Vector3d(skeleton->GetPoint(a)) + Eigen::Vector3d(skeleton->GetPoint(b))));
   std::printf("%s: %d of %lld nodes and %d of %zu edge midpoints inside, %ld cycles (genus %d)\n", sample.name,
               nodesInside, static_cast<long long>(nodes), midpointsInside, edges.size(), cycles, sample.genus);
-  // The test holds the line at 90 % of the nodes and 85 % of the midpoints (figures in the issue notes).
-  EXPECT_GE(nodesInside, 0.9 * double(nodes));
-  EXPECT_GE(midpointsInside, 0.85 * double(edges.size()));
+  EXPECT_EQ(nodesInside, nodes);
+  EXPECT_GE(midpointsInside, long(edges.size()) - sample.midpointsOutside);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cgal, ContractionSamples,
-                         ::testing::Values(Sample{"armadillo", 0, true, true}, Sample{"man", 0, true, true},
+                         ::testing::Values(Sample{"armadillo", 0, true, true}, Sample{"man", 0, true, true, 1},
                                            Sample{"hand", 0, true, true}, Sample{"elephant", 3, true, true},
                                            Sample{"femur", 2, false, true}, Sample{"knot1", 1, true, true},
                                            Sample{"mannequin-devil", 0, true, false},

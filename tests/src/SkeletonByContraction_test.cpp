@@ -241,6 +241,40 @@ TEST(EmbeddingRefinement, AnEdgeAcrossTheHoleIsSplitAlongTheMesh) {
     EXPECT_EQ(curve.vertexToNode[size_t(v)] >= 0, torus.vertices(v, 1) >= 0);
 }
 
+TEST(EmbeddingRefinement, AnEdgeWithoutAbsorbedVerticesIsSplitInsideToo) {
+  // Two nodes on the core circle of a torus, 120 degrees apart, with no absorbed vertices: their chord
+  // passes 1 from the centre, through the hole. The split node comes from the search across the chord.
+  const medial::TriangleMesh torus = torusMesh(2, 0.5);
+  const medial::InsideTest inside(torus);
+  medial::CurveSkeleton curve;
+  curve.nodes.resize(2, 3);
+  curve.nodes << 1, std::sqrt(3.0), 0, 1, -std::sqrt(3.0), 0;
+  curve.edges = {{0, 1}};
+  curve.vertexToNode.assign(size_t(torus.vertices.rows()), -1);
+  const int added = medial::splitEdgesLeavingTheMesh(curve, torus.vertices, inside);
+  EXPECT_GE(added, 1);
+  for (const auto& [a, b] : curve.edges)
+    EXPECT_TRUE(inside.segmentIsClear(curve.nodes.row(a).transpose(), curve.nodes.row(b).transpose()));
+  for (Eigen::Index k = 2; k < curve.nodes.rows(); ++k) EXPECT_TRUE(inside.contains(curve.nodes.row(k).transpose()));
+}
+
+TEST(EmbeddingRefinement, ANodeOutsideIsPushedToTheMiddleOfThePart) {
+  // A node 0.5 outside the torus's tube (R 2, r 0.5) at x = 3 moves through the nearest surface point
+  // (2.5, 0, 0) to the tube's axis; the node inside stays where it is.
+  const medial::TriangleMesh torus = torusMesh(2, 0.5);
+  const medial::InsideTest inside(torus);
+  medial::CurveSkeleton curve;
+  curve.nodes.resize(2, 3);
+  curve.nodes << 3, 0, 0, -2, 0, 0;
+  curve.edges = {{0, 1}};
+  EXPECT_EQ(medial::pushNodesInside(curve, inside), 1);
+  EXPECT_TRUE(inside.contains(curve.nodes.row(0).transpose()));
+  EXPECT_NEAR(curve.nodes(0, 0), 2.0, 0.1);
+  EXPECT_NEAR(curve.nodes(0, 1), 0.0, 1e-9);
+  EXPECT_NEAR(curve.nodes(0, 2), 0.0, 1e-9);
+  EXPECT_EQ(curve.nodes(1, 0), -2.0);
+}
+
 TEST(NodeSelection, KeepsCyclesAndTips) {
   // A square cycle with a long tail of 10 nodes: selection down to 4 keeps the cycle and the tip.
   medial::CurveSkeleton s;
