@@ -23,7 +23,7 @@ int runSkeleton(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations",
               "--contraction-vertices"},
-             {"--no-refine", "--weights", "--quiet", "--timings"}});
+             {"--no-refine", "--no-cycle-repair", "--weights", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("skeleton needs exactly one MESH file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -58,6 +58,7 @@ int runSkeleton(const std::vector<std::string>& args) {
     if (errors->HasErrors()) throw UsageError("--solver: " + errors->Joined());
   }
   filter->SetRefineEmbedding(!parsed.has("--no-refine"));
+  filter->SetRestoreCycles(!parsed.has("--no-cycle-repair"));
   filter->SetComputeWeights(parsed.has("--rig") || parsed.has("--weights"));
 
   Timings timings;
@@ -73,6 +74,9 @@ int runSkeleton(const std::vector<std::string>& args) {
   for (const char* stage : {"decimation", "contraction", "factorization", "surgery", "refinement", "selection", "radii", "weights"})
     timings.detail("skeleton", stage, filter->GetStageSeconds(stage));
 
+  if (filter->GetRestoredCycles() > 0)
+    std::fprintf(stderr, "medial skeleton: note: %d cycle%s that surgery lost put back (the mesh has genus %d)\n",
+                 filter->GetRestoredCycles(), filter->GetRestoredCycles() == 1 ? "" : "s", filter->GetGenus());
   timings.start("write");
   writePolyData(filter->GetOutput(0), output);
   if (!segmentation.empty()) writePolyData(filter->GetOutput(1), segmentation);

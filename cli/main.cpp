@@ -23,7 +23,7 @@ const std::vector<Command>& commands() {
       {"skeleton", "curve skeleton of a surface mesh by mesh contraction",
        "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig RIG.glb|RIG.fbx]\n"
        "                       [--weights] [--solver NAME] [--iterations N] [--contraction-vertices N]\n"
-       "                       [--no-refine] [--quiet]\n"
+       "                       [--no-refine] [--no-cycle-repair] [--quiet]\n"
        "                       [--timings]\n\n"
        "Contracts MESH (.off .obj .ply .stl .vtp .vtk; polygons are triangulated) by constrained Laplacian\n"
        "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, III.A-D);\n"
@@ -39,6 +39,8 @@ const std::vector<Command>& commands() {
        "                            kept) before the contraction; the outputs still cover every input\n"
        "                            vertex (default 4000; 0 contracts the mesh as it is)\n"
        "  --no-refine               keep the nodes where the contraction put them (no III.C refinement)\n"
+       "  --no-cycle-repair         leave out the cycles surgery lost (by default they are put back, so\n"
+       "                            that the skeleton has as many cycles as the closed mesh has genus)\n"
        "  --rig RIG.glb|RIG.fbx     the skinned mesh and its bones (one per skeleton edge) as glTF 2.0 or FBX\n"
        "  --weights                 compute the skinning weights without writing a rig\n"
        "  --quiet                   no progress line\n"

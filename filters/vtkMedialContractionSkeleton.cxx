@@ -56,6 +56,7 @@ void vtkMedialContractionSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "ShapeWeight: " << this->ShapeWeight << "\n";
   os << indent << "SamplingWeight: " << this->SamplingWeight << "\n";
   os << indent << "RefineEmbedding: " << this->RefineEmbedding << "\n";
+  os << indent << "RestoreCycles: " << this->RestoreCycles << "\n";
   os << indent << "ComputeWeights: " << this->ComputeWeights << "\n";
   os << indent << "HeatConstant: " << this->HeatConstant << "\n";
   os << indent << "Solver: " << this->Solver << "\n";
@@ -84,6 +85,7 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   p.targetNodes = this->TargetNodes;
   p.contractionVertices = this->ContractionVertices;
   p.refineEmbedding = this->RefineEmbedding;
+  p.restoreCycles = this->RestoreCycles;
   p.contraction.initialContractionFactor = this->InitialContractionFactor;
   p.contraction.contractionScale = this->ContractionScale;
   p.contraction.maxContractionWeight = this->MaxContractionWeight;
@@ -103,6 +105,8 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   this->ContractionIterations = result.contractionIterations;
   this->CurveSkeletonNodes = result.curveSkeletonNodes;
   this->ContractedVertices = result.contractedVertices;
+  this->Genus = result.cycleRepair.genus;
+  this->RestoredCycles = result.cycleRepair.cyclesAdded;
   const double seconds[kStageCount] = {result.decimationSeconds, result.contractionSeconds, result.factorizationSeconds,
                                       result.surgerySeconds,     result.refinementSeconds,
                                       result.selectionSeconds,   result.radiiSeconds,

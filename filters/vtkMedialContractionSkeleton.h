@@ -57,6 +57,11 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   vtkSetMacro(RefineEmbedding, bool);
   vtkGetMacro(RefineEmbedding, bool);
   vtkBooleanMacro(RefineEmbedding, bool);
+  /// Put back the cycles connectivity surgery lost, so that the skeleton has as many independent cycles
+  /// as the closed mesh has genus (default on; src/contraction/CycleRepair.h).
+  vtkSetMacro(RestoreCycles, bool);
+  vtkGetMacro(RestoreCycles, bool);
+  vtkBooleanMacro(RestoreCycles, bool);
   /// Compute the skinning weights of section III.E (default off: they cost one more factorization).
   vtkSetMacro(ComputeWeights, bool);
   vtkGetMacro(ComputeWeights, bool);
@@ -74,6 +79,9 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   vtkGetMacro(CurveSkeletonNodes, int);
   /// Vertices of the mesh that was contracted (fewer than the input's when it was decimated).
   vtkGetMacro(ContractedVertices, int);
+  /// Genus of the mesh's closed components, and the cycles put back (RestoreCycles).
+  vtkGetMacro(Genus, int);
+  vtkGetMacro(RestoredCycles, int);
   /// Seconds of a stage of the last update: decimation, contraction, factorization (part of the
   /// contraction), surgery, refinement, selection, radii, weights.
   double GetStageSeconds(const std::string& stage) const;
@@ -97,11 +105,14 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   double ShapeWeight = 1.0;
   double SamplingWeight = 0.1;
   bool RefineEmbedding = true;
+  bool RestoreCycles = true;
   bool ComputeWeights = false;
   double HeatConstant = 1.0;
   std::string Solver = "cholmod-metis";
   int ContractionIterations = 0;
   int CurveSkeletonNodes = 0;
   int ContractedVertices = 0;
+  int Genus = 0;
+  int RestoredCycles = 0;
   double Seconds[8] = {0, 0, 0, 0, 0, 0, 0, 0};
 };

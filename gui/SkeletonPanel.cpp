@@ -39,6 +39,8 @@ std::vector<Parameter> contractionParameters() {
       P::real("ShapeWeight", "w_a", 1.0, 0, 100, 3, "Shape cost weight of the surgery, eq. (10) (default 1)"),
       P::real("SamplingWeight", "w_b", 0.1, 0, 100, 3, "Sampling cost weight of the surgery, eq. (10) (default 0.1)"),
       P::toggle("RefineEmbedding", "Refine embedding", true, "Move nodes to the centre of their vertices (§III.C)"),
+      P::toggle("RestoreCycles", "Restore cycles", true,
+                "Put back the cycles surgery lost: as many skeleton cycles as the mesh has genus"),
       P::toggle("ComputeWeights", "Skinning weights", true, "Heat-diffusion skinning weights (§III.E), for the rig"),
       P::real("HeatConstant", "c (heat)", 1.0, 1e-3, 100, 3, "H_jj = c / d(j)^2 (§III.E, Baran and Popović: 1)"),
       P::choice("Solver", "Solver",
@@ -107,6 +109,7 @@ vtkSmartPointer<vtkAlgorithm> SkeletonPanel::makeFilter(SceneObject* input, QStr
   filter->SetShapeWeight(f->value("ShapeWeight"));
   filter->SetSamplingWeight(f->value("SamplingWeight"));
   filter->SetRefineEmbedding(f->isOn("RefineEmbedding"));
+  filter->SetRestoreCycles(f->isOn("RestoreCycles"));
   filter->SetComputeWeights(f->isOn("ComputeWeights"));
   filter->SetHeatConstant(f->value("HeatConstant"));
   filter->SetSolver(f->choice("Solver").toStdString());
@@ -119,10 +122,15 @@ void SkeletonPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
   skeletonData->ShallowCopy(contraction->GetOutput(0));
   auto meshData = vtkSmartPointer<vtkPolyData>::New();
   meshData->ShallowCopy(contraction->GetOutput(1));
-  emit message(QString("Skeleton: %1 nodes, %2 bones, %3 contraction iterations")
+  const int restored = contraction->GetRestoredCycles();
+  emit message(QString("Skeleton: %1 nodes, %2 bones, %3 contraction iterations%4")
                    .arg(skeletonData->GetNumberOfPoints())
                    .arg(skeletonData->GetNumberOfLines())
-                   .arg(contraction->GetContractionIterations()));
+                   .arg(contraction->GetContractionIterations())
+                   .arg(restored > 0 ? QString("; %1 cycles surgery lost put back (genus %2)")
+                                           .arg(restored)
+                                           .arg(contraction->GetGenus())
+                                     : QString()));
 
   SceneObject* segmentation = objects()->add(input->name + " segments", meshData);
   SceneObject* skeleton = objects()->add(input->name + " skeleton", skeletonData, QString(), kComputedRadiusScale);

@@ -103,14 +103,16 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   }
   curve.vertexToNode = std::move(vertexToNode);
 
-  // III.C refinement, III.D selection, radii.
+  // III.C refinement (with the cycles surgery lost put back before edges leaving the mesh are split), III.D
+  // selection, radii.
   start = Clock::now();
   const InsideTest inside(mesh);
   if (p.refineEmbedding) {
     result.refinedNodes = refineEmbedding(curve, mesh.vertices, inside);
     result.pushedNodes = pushNodesInside(curve, inside);
-    result.splitEdges = splitEdgesLeavingTheMesh(curve, mesh.vertices, inside);
   }
+  if (p.restoreCycles) result.cycleRepair = restoreMissingCycles(curve, mesh, inside);
+  if (p.refineEmbedding) result.splitEdges = splitEdgesLeavingTheMesh(curve, mesh.vertices, inside);
   result.refinementSeconds = secondsSince(start);
   start = Clock::now();
   if (p.targetNodes > 0) selectNodes(curve, p.targetNodes, &inside);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "contraction/ConnectivitySurgery.h"
+#include "contraction/CycleRepair.h"
 #include "contraction/HeatWeights.h"
 #include "contraction/MeshContraction.h"
 #include "skeleton/Skeleton.h"
@@ -23,6 +24,9 @@ struct SkeletonByContractionParameters {
   ContractionParameters contraction;
   SurgeryParameters surgery;
   bool refineEmbedding = true;
+  // Beyond the paper: put back the cycles surgery lost, so that the skeleton has as many independent
+  // cycles as the closed mesh has genus (src/contraction/CycleRepair.h).
+  bool restoreCycles = true;
   int targetNodes = 30;  // node selection; 0 keeps every node of the refined curve skeleton
   bool computeWeights = false;  // III.E: one weight per vertex and bone (skeleton edge)
   HeatWeightParameters weights;
@@ -41,6 +45,7 @@ struct SkeletonByContractionResult {
   int curveSkeletonNodes = 0;  // before selection
   int refinedNodes = 0;        // nodes the refinement moved
   int pushedNodes = 0;         // nodes moved from outside into the mesh (pushNodesInside)
+  CycleRepairResult cycleRepair;  // genus, cycles after surgery, cycles restored
   int splitEdges = 0;          // nodes added inside edges that left the mesh (splitEdgesLeavingTheMesh)
   // Seconds per stage, and the share of the contraction spent factorizing.
   double decimationSeconds = 0, contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0, refinementSeconds = 0,

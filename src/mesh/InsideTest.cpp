@@ -5,6 +5,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <cmath>
 #include <vector>
 
 namespace medial {
@@ -60,6 +61,21 @@ bool InsideTest::segmentIsClear(const Eigen::Vector3d& a, const Eigen::Vector3d&
 double InsideTest::squaredDistanceToSurface(const Eigen::Vector3d& point) const {
   if (tree_->triangles.empty()) return INFINITY;
   return tree_->tree.squared_distance(toPoint(point));
+}
+
+double InsideTest::distanceAlongRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) const {
+  if (tree_->triangles.empty()) return INFINITY;
+  const Kernel::Ray_3 ray(toPoint(origin), Kernel::Vector_3(direction.x(), direction.y(), direction.z()));
+  const auto hit = tree_->tree.first_intersection(ray);
+  if (!hit) return INFINITY;
+  Point first = toPoint(origin);
+  if (const Point* point = boost::get<Point>(&hit->first))
+    first = *point;
+  else if (const Kernel::Segment_3* segment = boost::get<Kernel::Segment_3>(&hit->first))  // in the plane
+    first = CGAL::squared_distance(ray.source(), segment->source()) < CGAL::squared_distance(ray.source(), segment->target())
+                ? segment->source()
+                : segment->target();
+  return std::sqrt(CGAL::squared_distance(ray.source(), first));
 }
 
 Eigen::Vector3d InsideTest::closestSurfacePoint(const Eigen::Vector3d& point) const {

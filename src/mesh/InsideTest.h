@@ -20,6 +20,8 @@ class InsideTest {
   // True when the open segment a-b crosses no triangle (its end points may lie on the surface).
   bool segmentIsClear(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
   double squaredDistanceToSurface(const Eigen::Vector3d& point) const;
+  // Distance from origin along the unit direction to the first triangle the ray meets; infinity if none.
+  double distanceAlongRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) const;
   // The nearest point of the surface (the point itself for an empty mesh).
   Eigen::Vector3d closestSurfacePoint(const Eigen::Vector3d& point) const;
 

@@ -3,6 +3,7 @@
 #include "RunCommand.h"
 #include "TestPaths.h"
 
+#include <vtkCell.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
@@ -123,6 +124,44 @@ TEST(Cli, SkeletonOfTorusWritesSkeletonAndSegmentation) {
   auto render = runCommand(medialCommand("render " + dataPath("meshes/torus.off") + " " + skeleton +
                                          " -o " + dir + "/torus-skeleton.png --size 320x240 --quiet"));
   EXPECT_EQ(render.exitCode, 0) << render.err;
+}
+
+// Independent cycles of a skeleton file: lines - points + components.
+long skeletonCycles(const std::string& path) {
+  auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* skeleton = reader->GetOutput();
+  std::vector<vtkIdType> parent(size_t(skeleton->GetNumberOfPoints()));
+  for (size_t i = 0; i < parent.size(); ++i) parent[i] = vtkIdType(i);
+  auto find = [&](vtkIdType x) {
+    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+    return x;
+  };
+  long components = long(parent.size());
+  for (vtkIdType c = 0; c < skeleton->GetNumberOfCells(); ++c) {
+    const vtkIdType a = find(skeleton->GetCell(c)->GetPointId(0)), b = find(skeleton->GetCell(c)->GetPointId(1));
+    if (a != b) {
+      parent[size_t(a)] = b;
+      --components;
+    }
+  }
+  return long(skeleton->GetNumberOfCells()) - long(parent.size()) + components;
+}
+
+TEST(Cli, SkeletonPutsBackTheCyclesSurgeryLostAndSaysSo) {
+  const std::string femur = medial::test::externalPath("cgal/meshes/femur.off");
+  if (!std::filesystem::exists(femur)) GTEST_SKIP() << femur << " missing: run scripts/fetch-samples";
+  const std::string dir = scratchDir("cli-skeleton-cycles");
+  auto repaired = runCommand(medialCommand("skeleton " + femur + " -o " + dir + "/femur.vtp --quiet"));
+  ASSERT_EQ(repaired.exitCode, 0) << repaired.err;
+  EXPECT_NE(repaired.err.find("2 cycles that surgery lost put back (the mesh has genus 2)"), std::string::npos)
+      << repaired.err;
+  EXPECT_EQ(skeletonCycles(dir + "/femur.vtp"), 2);
+  auto plain = runCommand(medialCommand("skeleton " + femur + " -o " + dir + "/femur-plain.vtp --no-cycle-repair --quiet"));
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_EQ(plain.err.find("put back"), std::string::npos) << plain.err;
+  EXPECT_EQ(skeletonCycles(dir + "/femur-plain.vtp"), 0);  // surgery loses both of the femur's tiny handles
 }
 
 TEST(Cli, SkeletonOfBadInputFailsWithOneLine) {

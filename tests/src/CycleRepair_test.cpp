@@ -1,0 +1,151 @@
+// CycleRepair and the pieces it stands on: linking numbers, the homology basis of a closed mesh.
+#include "ContractionTestMeshes.h"
+#include "contraction/CycleRepair.h"
+#include "mesh/HomologyLoops.h"
+#include "mesh/InsideTest.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <set>
+
+using medial::testing::appendMesh;
+using medial::testing::torusMesh;
+using medial::testing::tubeMesh;
+
+namespace {
+
+using Polygon = std::vector<Eigen::Vector3d>;
+
+Polygon circle(const Eigen::Vector3d& centre, const Eigen::Vector3d& u, const Eigen::Vector3d& v, int points = 64) {
+  Polygon p;
+  for (int k = 0; k < points; ++k) {
+    const double t = 2 * M_PI * k / points;
+    p.push_back(centre + std::cos(t) * u + std::sin(t) * v);
+  }
+  return p;
+}
+
+// A closed curve through the torus's hole along the z axis, closed far away.
+const Polygon kAxis = {{0, 0, -10}, {0, 0, 10}, {100, 0, 10}, {100, 0, -10}};
+
+int cycleCount(const medial::CurveSkeleton& s) {
+  std::vector<int> parent(size_t(s.nodes.rows()));
+  for (size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
+  std::function<int(int)> find = [&](int x) { return parent[size_t(x)] == x ? x : parent[size_t(x)] = find(parent[size_t(x)]); };
+  int components = int(parent.size());
+  for (const auto& [a, b] : s.edges)
+    if (find(a) != find(b)) {
+      parent[size_t(find(a))] = find(b);
+      --components;
+    }
+  return int(s.edges.size()) - int(s.nodes.rows()) + components;
+}
+
+// The skeleton of a torus (R 2) without its cycle: 5 nodes on the upper half of the core circle.
+medial::CurveSkeleton halfCircle(const Eigen::Vector3d& shift = Eigen::Vector3d::Zero()) {
+  medial::CurveSkeleton s;
+  s.nodes.resize(5, 3);
+  for (int k = 0; k < 5; ++k) {
+    s.nodes.row(k) = (Eigen::Vector3d(2 * std::cos(M_PI * k / 4), 2 * std::sin(M_PI * k / 4), 0) + shift).transpose();
+    if (k > 0) s.edges.emplace_back(k - 1, k);
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST(LinkingNumber, HopfLinkIsOneUnlinkedIsZero) {
+  const Polygon a = circle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  const Polygon hopf = circle({1, 0, 0}, {1, 0, 0}, {0, 0, 1});  // through a's disc once
+  EXPECT_NEAR(std::abs(medial::linkingNumber(a, hopf)), 1.0, 1e-6);
+  EXPECT_NEAR(medial::linkingNumber(a, hopf), medial::linkingNumber(hopf, a), 1e-6);
+  const Polygon apart = circle({5, 0, 0}, {1, 0, 0}, {0, 0, 1});
+  EXPECT_NEAR(medial::linkingNumber(a, apart), 0.0, 1e-6);
+  const Polygon coaxial = circle({0, 0, 0.1}, {2, 0, 0}, {0, 2, 0});  // a larger circle above: unlinked
+  EXPECT_NEAR(medial::linkingNumber(a, coaxial), 0.0, 1e-6);
+  // The torus's core circle goes once around the axis through its hole.
+  EXPECT_NEAR(std::abs(medial::linkingNumber(circle({0, 0, 0}, {2, 0, 0}, {0, 2, 0}), kAxis)), 1.0, 1e-6);
+}
+
+TEST(HomologyLoops, TwoLoopsPerHandleOfEachClosedComponent) {
+  const medial::TriangleMesh torus = torusMesh(2, 0.5);
+  const auto loops = medial::homologyBasisLoops(torus);
+  ASSERT_EQ(loops.size(), 2u);
+  std::set<std::pair<int, int>> edges;
+  for (Eigen::Index f = 0; f < torus.faces.rows(); ++f)
+    for (int c = 0; c < 3; ++c)
+      edges.insert(std::minmax(torus.faces(f, c), torus.faces(f, (c + 1) % 3)));
+  for (const auto& loop : loops) {
+    EXPECT_GE(loop.size(), 3u);
+    for (size_t i = 0; i < loop.size(); ++i)  // a closed path of mesh edges
+      EXPECT_TRUE(edges.count(std::minmax(loop[i], loop[(i + 1) % loop.size()])));
+  }
+  EXPECT_TRUE(medial::homologyBasisLoops(tubeMesh(4, 0.5)).empty());  // a sphere
+  EXPECT_EQ(medial::homologyBasisLoops(appendMesh(torus, torus, {10, 0, 0})).size(), 4u);
+  medial::TriangleMesh open = torus;  // a border: left out
+  open.faces.conservativeResize(open.faces.rows() - 1, 3);
+  EXPECT_TRUE(medial::homologyBasisLoops(open).empty());
+}
+
+TEST(CycleRepair, PutsTheLostCycleOfATorusBackAroundItsHole) {
+  const medial::TriangleMesh torus = torusMesh(2, 0.5);
+  const medial::InsideTest inside(torus);
+  medial::CurveSkeleton s = halfCircle();
+  const medial::CycleRepairResult r = medial::restoreMissingCycles(s, torus, inside);
+  EXPECT_EQ(r.genus, 1);
+  EXPECT_EQ(r.cyclesBefore, 0);
+  EXPECT_EQ(r.cyclesAdded, 1);
+  EXPECT_EQ(cycleCount(s), 1);
+  ASSERT_GT(s.nodes.rows(), 5);
+  Polygon added;
+  for (Eigen::Index k = 5; k < s.nodes.rows(); ++k) {
+    added.push_back(s.nodes.row(k).transpose());
+    EXPECT_TRUE(inside.contains(added.back()));
+  }
+  // The new cycle goes around the hole (the tunnel's class), not around the tube (a meridian).
+  EXPECT_NEAR(std::abs(medial::linkingNumber(added, kAxis)), 1.0, 1e-6);
+  // Tied to the old skeleton: one component.
+  EXPECT_EQ(int(s.edges.size()), 4 + int(added.size()) + 1);
+}
+
+TEST(CycleRepair, LeavesAKeptCycleAndMendsOnlyTheTorusThatLostIt) {
+  // Two tori 10 apart: the first keeps its core circle as a skeleton cycle, the second lost its cycle.
+  const medial::TriangleMesh tori = appendMesh(torusMesh(2, 0.5), torusMesh(2, 0.5), {10, 0, 0});
+  const medial::InsideTest inside(tori);
+  medial::CurveSkeleton s = halfCircle({10, 0, 0});
+  const Polygon core = circle({0, 0, 0}, {2, 0, 0}, {0, 2, 0}, 12);
+  const int first = int(s.nodes.rows());
+  s.nodes.conservativeResize(first + 12, 3);
+  for (int k = 0; k < 12; ++k) {
+    s.nodes.row(first + k) = core[size_t(k)].transpose();
+    s.edges.emplace_back(first + k, first + (k + 1) % 12);
+  }
+  const medial::CycleRepairResult r = medial::restoreMissingCycles(s, tori, inside);
+  EXPECT_EQ(r.genus, 2);
+  EXPECT_EQ(r.cyclesBefore, 1);
+  EXPECT_EQ(r.cyclesAdded, 1);
+  EXPECT_EQ(cycleCount(s), 2);
+  for (Eigen::Index k = first + 12; k < s.nodes.rows(); ++k) EXPECT_GT(s.nodes(k, 0), 5);  // in the second torus
+
+  medial::CurveSkeleton whole = halfCircle();  // a skeleton with all its cycles is left alone
+  whole.edges.emplace_back(4, 0);
+  const auto before = whole.nodes;
+  EXPECT_EQ(medial::restoreMissingCycles(whole, torusMesh(2, 0.5), medial::InsideTest(torusMesh(2, 0.5))).cyclesAdded, 0);
+  EXPECT_EQ(whole.nodes, before);
+}
+
+TEST(CycleRepair, GenusZeroAndOpenMeshesAreLeftAlone) {
+  const medial::TriangleMesh tube = tubeMesh(4, 0.5);
+  medial::CurveSkeleton s;
+  s.nodes.resize(2, 3);
+  s.nodes << -1, 0, 0, 1, 0, 0;
+  s.edges = {{0, 1}};
+  EXPECT_EQ(medial::restoreMissingCycles(s, tube, medial::InsideTest(tube)).cyclesAdded, 0);
+  medial::TriangleMesh open = torusMesh(2, 0.5);
+  open.faces.conservativeResize(open.faces.rows() - 1, 3);
+  medial::CurveSkeleton half = halfCircle();
+  EXPECT_EQ(medial::restoreMissingCycles(half, open, medial::InsideTest(open)).cyclesAdded, 0);
+  EXPECT_EQ(half.nodes.rows(), 5);
+}
