@@ -222,11 +222,11 @@ double linkingNumber(const Polygon& a, const Polygon& b) {
 
 CycleRepairResult restoreMissingCycles(CurveSkeleton& skeleton, const TriangleMesh& mesh, const InsideTest& inside) {
   CycleRepairResult result;
-  const std::vector<std::vector<int>> loops = homologyBasisLoops(mesh);
-  result.genus = int(loops.size() / 2);
+  result.genus = closedGenus(mesh);
   const std::vector<Polygon> skeletonCycles = fundamentalCycles(skeleton);
   result.cyclesBefore = int(skeletonCycles.size());
   if (result.cyclesBefore >= result.genus) return result;
+  const std::vector<std::vector<int>> loops = homologyBasisLoops(mesh);
 
   const Normals normals = meshNormals(mesh);
   std::vector<PushedLoop> pushed;

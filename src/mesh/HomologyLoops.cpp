@@ -60,6 +60,39 @@ EdgeGraph buildEdges(const TriangleMesh& mesh) {
 
 }  // namespace
 
+int closedGenus(const TriangleMesh& mesh) {
+  // Edges as sorted vertex pairs: each must appear exactly twice in a closed 2-manifold.
+  std::vector<std::pair<int, int>> halfEdges;
+  halfEdges.reserve(size_t(3 * mesh.faces.rows()));
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
+    for (int c = 0; c < 3; ++c) halfEdges.push_back(std::minmax(mesh.faces(f, c), mesh.faces(f, (c + 1) % 3)));
+  std::sort(halfEdges.begin(), halfEdges.end());
+  UnionFind component(size_t(mesh.vertices.rows()));
+  for (const auto& [a, b] : halfEdges) component.join(a, b);
+  const size_t n = size_t(mesh.vertices.rows());
+  std::vector<bool> closed(n, true);
+  std::vector<long> euler(n, 0);  // V - E + F per component root
+  for (size_t i = 0; i < halfEdges.size();) {
+    size_t j = i;
+    while (j < halfEdges.size() && halfEdges[j] == halfEdges[i]) ++j;
+    const int root = component.find(halfEdges[i].first);
+    if (j - i != 2) closed[size_t(root)] = false;
+    --euler[size_t(root)];
+    i = j;
+  }
+  std::vector<bool> used(n, false);
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
+    ++euler[size_t(component.find(mesh.faces(f, 0)))];
+    for (int c = 0; c < 3; ++c) used[size_t(mesh.faces(f, c))] = true;
+  }
+  for (size_t v = 0; v < n; ++v)
+    if (used[v]) ++euler[size_t(component.find(int(v)))];
+  long genus = 0;
+  for (size_t v = 0; v < n; ++v)
+    if (used[v] && component.find(int(v)) == int(v) && closed[v]) genus += (2 - euler[v]) / 2;
+  return int(genus);
+}
+
 std::vector<std::vector<int>> homologyBasisLoops(const TriangleMesh& mesh) {
   const EdgeGraph g = buildEdges(mesh);
   const size_t vertexCount = size_t(mesh.vertices.rows());

@@ -16,4 +16,8 @@ namespace medial {
 // non-manifold edge are left out.
 std::vector<std::vector<int>> homologyBasisLoops(const TriangleMesh& mesh);
 
+// The genus summed over the same components (half the number of loops above), from their Euler
+// characteristics: cheap enough to ask before building the loops.
+int closedGenus(const TriangleMesh& mesh);
+
 }  // namespace medial

@@ -82,11 +82,17 @@ TEST(HomologyLoops, TwoLoopsPerHandleOfEachClosedComponent) {
     for (size_t i = 0; i < loop.size(); ++i)  // a closed path of mesh edges
       EXPECT_TRUE(edges.count(std::minmax(loop[i], loop[(i + 1) % loop.size()])));
   }
+  EXPECT_EQ(medial::closedGenus(torus), 1);
   EXPECT_TRUE(medial::homologyBasisLoops(tubeMesh(4, 0.5)).empty());  // a sphere
-  EXPECT_EQ(medial::homologyBasisLoops(appendMesh(torus, torus, {10, 0, 0})).size(), 4u);
+  EXPECT_EQ(medial::closedGenus(tubeMesh(4, 0.5)), 0);
+  const medial::TriangleMesh twoTori = appendMesh(torus, torus, {10, 0, 0});
+  EXPECT_EQ(medial::homologyBasisLoops(twoTori).size(), 4u);
+  EXPECT_EQ(medial::closedGenus(twoTori), 2);
+  EXPECT_EQ(medial::closedGenus(appendMesh(twoTori, tubeMesh(4, 0.5), {0, 10, 0})), 2);
   medial::TriangleMesh open = torus;  // a border: left out
   open.faces.conservativeResize(open.faces.rows() - 1, 3);
   EXPECT_TRUE(medial::homologyBasisLoops(open).empty());
+  EXPECT_EQ(medial::closedGenus(open), 0);
 }
 
 TEST(CycleRepair, PutsTheLostCycleOfATorusBackAroundItsHole) {
