@@ -57,9 +57,13 @@ void mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
   for (bool changed = true; changed;) {
     changed = false;
     for (const auto& e : s.edges) {
-      const int big = s.radii[size_t(e[0])] >= s.radii[size_t(e[1])] ? e[0] : e[1];
+      // The big end: a branch node at least as large as the other (rings of connection nodes sit at their
+      // centres); of two such ends the larger, or the first.
+      auto swallows = [&](int x, int y) { return neighbours[size_t(x)].size() >= 3 && s.radii[size_t(x)] >= s.radii[size_t(y)]; };
+      const bool first = swallows(e[0], e[1]), second = swallows(e[1], e[0]);
+      if (!first && !second) continue;
+      const int big = first && (!second || s.radii[size_t(e[0])] >= s.radii[size_t(e[1])]) ? e[0] : e[1];
       const int small = big == e[0] ? e[1] : e[0];
-      if (neighbours[size_t(big)].size() < 3) continue;  // rings of connection nodes sit at their centres
       if ((s.nodes[size_t(big)] - s.nodes[size_t(small)]).norm() >= s.radii[size_t(big)]) continue;
       const auto& around = neighbours[size_t(small)];
       if (std::any_of(around.begin(), around.end(), [&](int n) { return neighbours[size_t(big)].count(n) > 0; }))

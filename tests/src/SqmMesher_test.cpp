@@ -412,6 +412,16 @@ TEST(SqmMesher, NodesInsideANeighboursSphereAreMergedIntoIt) {
   EXPECT_EQ(t.eulerCharacteristic, 2);
   for (int node : r.mesh.vertexNode) EXPECT_TRUE(node != 1 && node != 2) << "a merged node owns a vertex";
 
+  // A neighbour exactly as large as the branch node is swallowed too, whichever way round the edge is
+  // listed (a spine of equal spheres through a shoulder).
+  auto equal = ySkeleton();
+  equal.nodes.push_back(Eigen::Vector3d(0, 0, 0.3));
+  equal.radii.push_back(equal.radii[0]);
+  equal.edges.push_back({int(equal.nodes.size()) - 1, 0});
+  const auto spine = medial::sqmMesh(equal);
+  ASSERT_TRUE(spine.ok()) << spine.error;
+  EXPECT_EQ(spine.mergedNodes, 1);
+
   // In a cycle of three, merging would close the cycle onto one edge: the nodes stay.
   medial::Skeleton triangle;
   triangle.nodes = {{0, 0, 0}, {0.5, 0, 0}, {0.25, 2, 0}};
