@@ -11,6 +11,10 @@ namespace medial {
 
 namespace {
 
+// A hull face whose plane lies closer to the centre than this (in radii), or beyond it, gets a Steiner
+// point: its cap is wider than acos(0.25) = 75.5 degrees. (A regular tetrahedron's faces lie at 1/3.)
+constexpr double kCapPlaneDistance = 0.25;
+
 Eigen::Vector3d toEigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
 OpenMesh::Vec3d toMesh(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 
@@ -240,7 +244,26 @@ bool generateBnp(int node, const Eigen::Vector3d& centre, double radius, const s
                 " and " + std::to_string(neighbourNodes[j]) + " leave it in the same direction";
         return false;
       }
-  const std::vector<std::array<int, 3>> hull = hullTriangles(q, centre, radius);
+  // Steiner points (beyond the papers): a hull face whose plane passes near the centre, or beyond it, spans
+  // a spherical cap wider than 75 degrees (every face of a pillow: coplanar arms, any three arms), and the
+  // one-rings of its corners would reach across it, making tube ends that fold. A point at the cap's
+  // middle covers it; it belongs to no tube and its faces stay in the mesh. Up to three rounds.
+  const int count = int(q.size());
+  std::vector<std::array<int, 3>> hull = hullTriangles(q, centre, radius);
+  for (int round = 0; round < 3; ++round) {
+    const size_t before = q.size();
+    for (const auto& f : hull) {
+      const Eigen::Vector3d normal =
+          (q[size_t(f[1])] - q[size_t(f[0])]).cross(q[size_t(f[2])] - q[size_t(f[0])]).normalized();
+      if (normal.dot(q[size_t(f[0])] - centre) >= kCapPlaneDistance * radius) continue;
+      const Eigen::Vector3d pole = centre + radius * normal;
+      if (std::none_of(q.begin() + std::ptrdiff_t(before), q.end(),
+                       [&](const Eigen::Vector3d& x) { return (x - pole).norm() < 1e-6 * radius; }))
+        q.push_back(pole);  // once per plane: a pillow's fan has several triangles on it
+    }
+    if (q.size() == before) break;
+    hull = hullTriangles(q, centre, radius);
+  }
 
   // 1-to-6 subdivision with the projections described in the header.
   std::map<std::pair<int, int>, Eigen::Vector3d> edgeNormal;
@@ -254,7 +277,8 @@ bool generateBnp(int node, const Eigen::Vector3d& centre, double radius, const s
       if (!fresh) at->second += faceNormal.back();
     }
   }
-  for (size_t i = 0; i < q.size(); ++i) bnp.intersection.push_back(bnp.mesh.add_vertex(toMesh(q[i])));
+  for (size_t i = 0; i < q.size(); ++i)
+    (int(i) < count ? bnp.intersection : bnp.steiner).push_back(bnp.mesh.add_vertex(toMesh(q[i])));
   std::map<std::pair<int, int>, BnpMesh::VertexHandle> middle;
   std::map<std::pair<int, int>, Eigen::Vector3d> middlePoint;
   for (const auto& [edge, normal] : edgeNormal) {
@@ -278,7 +302,8 @@ bool generateBnp(int node, const Eigen::Vector3d& centre, double radius, const s
     const auto centreVertex = bnp.mesh.add_vertex(toMesh(projectAlongRay(
         centroid, fixDirection.dot(faceNormal[f]) > 0 ? fixDirection : faceNormal[f], centre, radius)));
     for (int c = 0; c < 3; ++c) {
-      const auto corner = bnp.intersection[size_t(t[size_t(c)])];
+      const int index = t[size_t(c)];
+      const auto corner = index < count ? bnp.intersection[size_t(index)] : bnp.steiner[size_t(index - count)];
       const auto after = middle[e[size_t(c)]], before = middle[e[size_t((c + 2) % 3)]];
       bnp.mesh.add_face(corner, after, centreVertex);
       bnp.mesh.add_face(before, corner, centreVertex);
@@ -308,8 +333,9 @@ bool refineBnp(BranchNodePolyhedron& bnp, const std::vector<int>& target, const 
         const auto [a, b] = bnp.hullEdges[e];
         if (a != x && b != x) continue;
         const int y = a == x ? b : a;
-        const int need = target[size_t(y)] - bnp.valence(y);
-        if (exact[size_t(y)] && need <= 0) continue;
+        const bool steiner = y >= count;  // no tube there: any number of splits will do
+        const int need = steiner ? 0 : target[size_t(y)] - bnp.valence(y);
+        if (!steiner && exact[size_t(y)] && need <= 0) continue;
         if (best < 0 || need > bestNeed || (need == bestNeed && bnp.lieSplits[e] < bestSplits)) {
           best = int(e);
           bestNeed = need;
@@ -322,7 +348,7 @@ bool refineBnp(BranchNodePolyhedron& bnp, const std::vector<int>& target, const 
         return false;
       }
       const auto [a, b] = bnp.hullEdges[size_t(best)];
-      const auto chain = lieChain(bnp.mesh, bnp.intersection[size_t(a)], bnp.intersection[size_t(b)]);
+      const auto chain = lieChain(bnp.mesh, bnp.hullVertex(a), bnp.hullVertex(b));
       if (chain.size() < 2) {
         error = "node " + std::to_string(bnp.node) + ": broken polyhedron (no link between two intersection vertices)";
         return false;
@@ -330,7 +356,7 @@ bool refineBnp(BranchNodePolyhedron& bnp, const std::vector<int>& target, const 
       const auto edge = bnp.mesh.edge_handle(bnp.mesh.find_halfedge(chain[0], chain[1]));
       bnp.mesh.split(edge, (bnp.mesh.point(chain[0]) + bnp.mesh.point(chain[1])) * 0.5);
       ++bnp.lieSplits[size_t(best)];
-      smoothLie(bnp, lieChain(bnp.mesh, bnp.intersection[size_t(a)], bnp.intersection[size_t(b)]), smoothing);
+      smoothLie(bnp, lieChain(bnp.mesh, bnp.hullVertex(a), bnp.hullVertex(b)), smoothing);
     }
   }
   return true;

@@ -2,7 +2,9 @@
 // sections "BNP generation" and "BNP refinement"; CESCG 2014 section 4).
 //
 // Generation: one intersection vertex where each edge of the node leaves its sphere; their convex hull
-// on the sphere (a closed "pillow" of two fans when they are coplanar, as with three edges); each triangle
+// on the sphere (a closed "pillow" of two fans when they are coplanar, as with three edges), with Steiner
+// points added where a hull face leaves a cap wider than 75 degrees (beyond the papers: both sides of a
+// pillow, the far side of three arms); each triangle
 // split in six (a vertex at its centre and at each edge's middle); the new vertices projected onto the
 // sphere along a ray: an edge's middle along the mean normal of its two triangles (radially when those
 // cancel, as on a pillow's rim), a centre along the normal of the triangle of its three projected edge
@@ -41,8 +43,14 @@ struct BranchNodePolyhedron {
   BnpMesh mesh;
   std::vector<int> neighbourNodes;                    // skeleton node each intersection vertex points to
   std::vector<BnpMesh::VertexHandle> intersection;    // one per neighbour node, same order
+  std::vector<BnpMesh::VertexHandle> steiner;         // hull points in caps no edge leaves through
   std::vector<int> lieSplits;                         // per hull edge (index into hullEdges): splits so far
-  std::vector<std::pair<int, int>> hullEdges;         // pairs of intersection-vertex indices joined by a LIE
+  // Pairs of hull points joined by a LIE: intersection vertices 0..n-1, then Steiner points n, n+1, ...
+  std::vector<std::pair<int, int>> hullEdges;
+
+  BnpMesh::VertexHandle hullVertex(int i) const {
+    return i < int(intersection.size()) ? intersection[size_t(i)] : steiner[size_t(i) - intersection.size()];
+  }
 
   int valence(int i) const { return int(mesh.valence(intersection[size_t(i)])); }
   // The neighbours of intersection vertex i in counter-clockwise order seen from outside (about the

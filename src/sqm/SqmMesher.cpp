@@ -209,6 +209,38 @@ void bridge(Builder& b, const std::vector<int>& from, const std::vector<int>& to
     b.mesh.faces.push_back({from[i], from[(i + 1) % m], to[(i + 1) % m], to[i]});
 }
 
+// The faces around a Steiner point of a BNP touch no intersection vertex, so no tube replaces them: they
+// stay, consecutive triangles joined into quads (of the two ways to pair them, the flatter); with an odd
+// count one triangle is left.
+void addSteinerCap(Builder& b, const BranchNodePolyhedron& bnp, BnpMesh::VertexHandle steiner,
+                   const std::vector<int>& ids) {
+  const BnpMesh& m = bnp.mesh;
+  std::vector<BnpMesh::VertexHandle> ring;  // triangles (steiner, ring[k], ring[k + 1]), as oriented in the BNP
+  const auto first = m.halfedge_handle(steiner);
+  auto h = first;
+  do {
+    ring.push_back(m.to_vertex_handle(h));
+    h = m.opposite_halfedge_handle(m.next_halfedge_handle(m.next_halfedge_handle(h)));
+  } while (h != first && ring.size() <= m.valence(steiner));
+  const size_t n = ring.size();
+  const Eigen::Vector3d apex = toEigen(m.point(steiner));
+  auto bend = [&](size_t k) {  // how far the quad's last corner lies off the plane of its first three
+    const Eigen::Vector3d a = toEigen(m.point(ring[k % n])), c = toEigen(m.point(ring[(k + 1) % n])),
+                          d = toEigen(m.point(ring[(k + 2) % n]));
+    const Eigen::Vector3d normal = (a - apex).cross(c - apex);
+    return normal.norm() > 0 ? std::abs(normal.normalized().dot(d - apex)) : 0.0;
+  };
+  double bends[2] = {0, 0};
+  for (size_t offset = 0; offset < 2; ++offset)
+    for (size_t k = offset; k + 1 < offset + n; k += 2) bends[offset] += bend(k);
+  const size_t offset = bends[1] < bends[0] ? 1 : 0;
+  auto id = [&](size_t k) { return ids[size_t(ring[k % n].idx())]; };
+  const int centre = ids[size_t(steiner.idx())];
+  size_t k = offset;
+  for (; k + 1 < offset + n; k += 2) b.mesh.faces.push_back({centre, id(k), id(k + 1), id(k + 2)});
+  if (k < offset + n) b.mesh.faces.push_back({centre, id(k), id(k + 1)});
+}
+
 // Pairs the last ring of a tube with the one-ring of the BNP vertex it reaches (both counter-clockwise
 // about their own outward direction, so they run opposite ways) and adds the closing quads.
 void closeOnRing(Builder& b, const std::vector<int>& ring, const std::vector<int>& target,
@@ -383,6 +415,8 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
     for (auto v : bnp.mesh.vertices())
       if (!intersections.count(v.idx())) ids[size_t(v.idx())] = b.add(toEigen(bnp.mesh.point(v)), k);
   }
+  for (const auto& [k, bnp] : bnps)
+    for (auto steiner : bnp.steiner) addSteinerCap(b, bnp, steiner, outputId[k]);
   auto ringOf = [&](int k, int i) {
     std::vector<int> ring;
     for (auto v : bnps[k].orderedRing(i)) ring.push_back(outputId[k][size_t(v.idx())]);

@@ -1,5 +1,6 @@
 #include "sqm/SqmRefinement.h"
 
+#include <Eigen/LU>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 
@@ -21,23 +22,32 @@ Eigen::Vector3d toEigen(const PolyMesh::Point& p) { return {p[0], p[1], p[2]}; }
 // The point of the nearest truncated cone: its axis point and radius there (radial projection).
 struct ConePoint {
   Eigen::Vector3d axis, radial;  // radial: unit vector from the axis towards p
-  double radius = 0;
+  double radius = 0;             // along `radial`
   bool found = false;
 };
 
+// With ellipsoid nodes (extension 3) the cone is a generalized one: its cross-sections interpolate the
+// two ends' ellipsoid matrices, and the radius along a direction u is 1 / |M(t)^-1 u| (r for M = r I).
 ConePoint nearestCone(const Eigen::Vector3d& p, const Skeleton& s) {
   ConePoint cone;
   double best = INFINITY;
+  const bool ellipsoids = !s.ellipsoidAxes.empty();
   for (const auto& e : s.edges) {
     const Eigen::Vector3d a = s.nodes[size_t(e[0])], b = s.nodes[size_t(e[1])];
     const Eigen::Vector3d ab = b - a;
     const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
     const Eigen::Vector3d axis = a + t * ab;
-    const double radius = (1 - t) * s.radii[size_t(e[0])] + t * s.radii[size_t(e[1])];
     const Eigen::Vector3d radial = p - axis;
     const double distance = radial.norm();
+    double radius = (1 - t) * s.radii[size_t(e[0])] + t * s.radii[size_t(e[1])];
+    if (distance <= 1e-12 * radius) continue;
+    if (ellipsoids) {
+      const Eigen::Matrix3d m = (1 - t) * s.ellipsoidAxes[size_t(e[0])] + t * s.ellipsoidAxes[size_t(e[1])];
+      const Eigen::Vector3d local = m.fullPivLu().solve(radial / distance);
+      if (local.norm() > 0) radius = 1 / local.norm();
+    }
     const double gap = std::abs(distance - radius);
-    if (gap < best && distance > 1e-12 * radius) {
+    if (gap < best) {
       best = gap;
       cone = {axis, radial / distance, radius, true};
     }

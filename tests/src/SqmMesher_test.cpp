@@ -106,7 +106,8 @@ TEST(SqmMesher, PlanarYIsClosedAndQuadDominant) {
 }
 
 // A branch node whose neighbours all lie in one plane through it (every joint of a sketch's skeleton):
-// the hull is a flat polygon covered from both sides; the two covers must not share a diagonal.
+// the hull is a flat polygon covered from both sides, each side a cap of a hemisphere, so a Steiner point
+// goes at each pole: a closed bipyramid of 2n triangles, each split in six.
 TEST(BranchNodePolyhedron, CoplanarNeighboursGiveAClosedPolyhedron) {
   for (int arms = 3; arms <= 6; ++arms) {
     std::vector<int> neighbours;
@@ -119,7 +120,9 @@ TEST(BranchNodePolyhedron, CoplanarNeighboursGiveAClosedPolyhedron) {
     medial::BranchNodePolyhedron bnp;
     std::string error;
     ASSERT_TRUE(medial::generateBnp(0, Eigen::Vector3d::Zero(), 0.5, neighbours, positions, bnp, error)) << error;
-    EXPECT_EQ(int(bnp.mesh.n_faces()), 6 * 2 * (arms - 2)) << arms << " arms: a face was refused";
+    EXPECT_EQ(bnp.steiner.size(), 2u) << arms << " arms";
+    EXPECT_EQ(int(bnp.mesh.n_faces()), 6 * 2 * arms) << arms << " arms: a face was refused";
+    for (auto pole : bnp.steiner) EXPECT_NEAR(std::abs(bnp.mesh.point(pole)[2]), 0.5, 1e-12);
     for (auto e : bnp.mesh.edges()) EXPECT_FALSE(bnp.mesh.is_boundary(e)) << arms << " arms";
   }
   const medial::Skeleton plus = [] {
@@ -137,6 +140,28 @@ TEST(BranchNodePolyhedron, CoplanarNeighboursGiveAClosedPolyhedron) {
     return s;
   }();
   expectClosedQuadDominant(plus, medial::sqmMesh(plus));
+}
+
+// Steiner points go only into caps wider than 75 degrees: none for arms spread like a tetrahedron's or
+// along the six axes; one on the far side of three orthogonal arms (their triangle's back covers 7/8 of
+// the sphere).
+TEST(BranchNodePolyhedron, SteinerPointsCoverOnlyWideCaps) {
+  auto steinerPoints = [](const std::vector<Eigen::Vector3d>& directions) {
+    std::vector<int> neighbours;
+    for (size_t k = 0; k < directions.size(); ++k) neighbours.push_back(int(k) + 1);
+    medial::BranchNodePolyhedron bnp;
+    std::string error;
+    EXPECT_TRUE(medial::generateBnp(0, Eigen::Vector3d::Zero(), 1.0, neighbours, directions, bnp, error)) << error;
+    for (auto e : bnp.mesh.edges()) EXPECT_FALSE(bnp.mesh.is_boundary(e));
+    std::vector<Eigen::Vector3d> points;
+    for (auto v : bnp.steiner) points.emplace_back(bnp.mesh.point(v)[0], bnp.mesh.point(v)[1], bnp.mesh.point(v)[2]);
+    return points;
+  };
+  EXPECT_TRUE(steinerPoints({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}).empty());
+  EXPECT_TRUE(steinerPoints({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}).empty());
+  const auto corner = steinerPoints({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+  ASSERT_EQ(corner.size(), 1u);
+  EXPECT_LT((corner[0] + Eigen::Vector3d(1, 1, 1).normalized()).norm(), 1e-9);
 }
 
 TEST(SqmMesher, EverySmoothingAndPairingGivesAClosedManifold) {
