@@ -246,8 +246,10 @@ bool generateBnp(int node, const Eigen::Vector3d& centre, double radius, const s
       }
   // Steiner points (beyond the papers): a hull face whose plane passes near the centre, or beyond it, spans
   // a spherical cap wider than 75 degrees (every face of a pillow: coplanar arms, any three arms), and the
-  // one-rings of its corners would reach across it, making tube ends that fold. A point at the cap's
-  // middle covers it; it belongs to no tube and its faces stay in the mesh. Up to three rounds.
+  // one-rings of its corners would reach across it, making tube ends that fold. So does a polygon of four
+  // or more coplanar points (an octopus's ring of tentacles), fanned from one of them into thin triangles.
+  // A point at the cap's middle covers it; it belongs to no tube and its faces stay in the mesh. Up to
+  // three rounds.
   const int count = int(q.size());
   std::vector<std::array<int, 3>> hull = hullTriangles(q, centre, radius);
   for (int round = 0; round < 3; ++round) {
@@ -255,7 +257,11 @@ bool generateBnp(int node, const Eigen::Vector3d& centre, double radius, const s
     for (const auto& f : hull) {
       const Eigen::Vector3d normal =
           (q[size_t(f[1])] - q[size_t(f[0])]).cross(q[size_t(f[2])] - q[size_t(f[0])]).normalized();
-      if (normal.dot(q[size_t(f[0])] - centre) >= kCapPlaneDistance * radius) continue;
+      const double planeDistance = normal.dot(q[size_t(f[0])] - centre);
+      const auto onPlane = std::count_if(q.begin(), q.end(), [&](const Eigen::Vector3d& x) {
+        return std::abs(normal.dot(x - centre) - planeDistance) < 1e-9 * radius;
+      });
+      if (planeDistance >= kCapPlaneDistance * radius && onPlane < 4) continue;
       const Eigen::Vector3d pole = centre + radius * normal;
       if (std::none_of(q.begin() + std::ptrdiff_t(before), q.end(),
                        [&](const Eigen::Vector3d& x) { return (x - pole).norm() < 1e-6 * radius; }))
