@@ -40,13 +40,15 @@ struct PreparedSkeleton {
   std::vector<bool> merged;                    // swallowed nodes, merged into a neighbour (no geometry)
 };
 
-// Repair: a node whose centre lies inside the sphere of a neighbouring branch node at least as large is
-// swallowed by it: the branch node's polyhedron lies on its sphere, so the tube between them would have to
-// run backwards out of it, folding the surface. The node is merged into the branch node: its other edges
-// move there and it is left out of the mesh. (Between connection nodes, whose rings sit at their centres,
-// overlapping spheres do no harm.) Skeletons from sketches and contraction have such nodes where thin
-// parts join a thick one (fingers at a palm). Not when the two share a neighbour: merging would close a
-// cycle of three onto one edge.
+// Repair: a node whose centre lies inside the sphere of a neighbouring branch node is swallowed by it: the
+// branch node's polyhedron lies on its sphere, so the tube between them would have to run backwards out of
+// it, folding the surface. The node is merged into the branch node: its other edges move there, it is left
+// out of the mesh, and the branch node keeps the larger of the two radii (a sketch's body is a chain of
+// large, dense spheres; its wing joint sits inside the next body sphere, which is larger). Merges stop
+// where the next node lies outside the sphere, so a chain does not collapse. (Between connection nodes,
+// whose rings sit at their centres, overlapping spheres do no harm.) Skeletons from sketches and
+// contraction have such nodes where thin parts join a thick one (fingers at a palm). Not when the two
+// share a neighbour: merging would close a cycle of three onto one edge.
 void mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
   merged.assign(s.nodes.size(), false);
   std::vector<std::set<int>> neighbours(s.nodes.size());
@@ -57,9 +59,9 @@ void mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
   for (bool changed = true; changed;) {
     changed = false;
     for (const auto& e : s.edges) {
-      // The big end: a branch node at least as large as the other (rings of connection nodes sit at their
-      // centres); of two such ends the larger, or the first.
-      auto swallows = [&](int x, int y) { return neighbours[size_t(x)].size() >= 3 && s.radii[size_t(x)] >= s.radii[size_t(y)]; };
+      // The big end: a branch node (rings of connection nodes sit at their centres); of two branch nodes
+      // the larger, or the first.
+      auto swallows = [&](int x, int) { return neighbours[size_t(x)].size() >= 3; };
       const bool first = swallows(e[0], e[1]), second = swallows(e[1], e[0]);
       if (!first && !second) continue;
       const int big = first && (!second || s.radii[size_t(e[0])] >= s.radii[size_t(e[1])]) ? e[0] : e[1];
@@ -76,6 +78,7 @@ void mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
       }
       neighbours[size_t(small)].clear();
       merged[size_t(small)] = true;
+      s.radii[size_t(big)] = std::max(s.radii[size_t(big)], s.radii[size_t(small)]);  // the larger sphere
       if (s.root == small) s.root = big;
       changed = true;
       break;  // the edge list is rebuilt before the next search

@@ -447,6 +447,19 @@ TEST(SqmMesher, NodesInsideANeighboursSphereAreMergedIntoIt) {
   ASSERT_TRUE(spine.ok()) << spine.error;
   EXPECT_EQ(spine.mergedNodes, 1);
 
+  // A larger neighbour inside the branch node's sphere is swallowed too; the branch node takes its radius.
+  auto larger = ySkeleton();
+  larger.nodes.push_back(Eigen::Vector3d(0, 0, 0.3));
+  larger.radii.push_back(0.5);
+  larger.edges.push_back({0, int(larger.nodes.size()) - 1});
+  const auto grown = medial::sqmMesh(larger);
+  ASSERT_TRUE(grown.ok()) << grown.error;
+  EXPECT_EQ(grown.mergedNodes, 1);
+  double farthest = 0;
+  for (size_t v = 0; v < grown.mesh.vertices.size(); ++v)
+    if (grown.mesh.vertexNode[v] == 0) farthest = std::max(farthest, grown.mesh.vertices[v].norm());
+  EXPECT_NEAR(farthest, 0.5, 1e-9);
+
   // In a cycle of three, merging would close the cycle onto one edge: the nodes stay.
   medial::Skeleton triangle;
   triangle.nodes = {{0, 0, 0}, {0.5, 0, 0}, {0.25, 2, 0}};
