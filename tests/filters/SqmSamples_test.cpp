@@ -35,6 +35,7 @@ struct SampleSkeleton {
   // test skeletons keep the tubes of different branches apart (data/make-sqm-skeletons.py).
   int maxIntersectingPairs = 0;
   int cycles = 0;  // independent cycles of the skeleton: Euler characteristic 2 - 2 cycles
+  int maxRefinedPairs = 0;  // the same after two levels of refinement (no sharp scaling); 0 is the goal
 };
 
 std::ostream& operator<<(std::ostream& os, const SampleSkeleton& s) { return os << s.path; }
@@ -120,6 +121,7 @@ TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {
   }
   std::printf("%s refined twice: %zu intersecting pairs without sharp scaling, %zu with\n", sample.path,
               refinedPairs[0], refinedPairs[1]);
+  EXPECT_LE(int(refinedPairs[0]), sample.maxRefinedPairs);
 }
 
 INSTANTIATE_TEST_SUITE_P(Data, SqmSamples,
@@ -128,9 +130,9 @@ INSTANTIATE_TEST_SUITE_P(Data, SqmSamples,
                                            // (SqmMesher): fewer rings, 88 % quads.
                                            SampleSkeleton{"sqm/quadruped.vtp", 0.85},
                                            // The palms: six nearly coplanar arms (issue 4 notes).
-                                           SampleSkeleton{"sqm/humanoid.vtp", 0.7, 18},
-                                           SampleSkeleton{"sqm/fish.vtp", 0.6}, SampleSkeleton{"sqm/leafroot.vtp", 0.5},
-                                           SampleSkeleton{"figure.vtp", 0.7}, SampleSkeleton{"hand.swc", 0.65, 11},
+                                           SampleSkeleton{"sqm/humanoid.vtp", 0.7, 18, 0, 16},
+                                           SampleSkeleton{"sqm/fish.vtp", 0.6, 0, 0, 24}, SampleSkeleton{"sqm/leafroot.vtp", 0.5},
+                                           SampleSkeleton{"figure.vtp", 0.7, 0, 0, 14}, SampleSkeleton{"hand.swc", 0.65, 11},
                                            SampleSkeleton{"sqm/cycle.vtp", 0.7, 0, 1},
                                            SampleSkeleton{"sqm/pretzel.vtp", 0.7, 0, 3}),
                          [](const ::testing::TestParamInfo<SampleSkeleton>& info) {
