@@ -215,16 +215,23 @@ medial::Skeleton toSkeleton(const medial::CurveSkeleton& s) {
   return out;
 }
 
+// Two nodes joined by one edge; no mesh vertex belongs to either yet.
+medial::CurveSkeleton twoNodeCurve(const Eigen::Vector3d& a, const Eigen::Vector3d& b, Eigen::Index vertexCount) {
+  medial::CurveSkeleton curve;
+  curve.nodes.resize(2, 3);
+  curve.nodes.row(0) = a.transpose();
+  curve.nodes.row(1) = b.transpose();
+  curve.edges = {{0, 1}};
+  curve.vertexToNode.assign(size_t(vertexCount), -1);
+  return curve;
+}
+
 TEST(EmbeddingRefinement, AnEdgeAcrossTheHoleIsSplitAlongTheMesh) {
   // Two nodes on opposite sides of a torus, each holding its quarter of the upper half ring: their edge
   // crosses the hole. Split, the path follows the half ring inside the tube.
   const medial::TriangleMesh torus = torusMesh(2, 0.5);
   const medial::InsideTest inside(torus);
-  medial::CurveSkeleton curve;
-  curve.nodes.resize(2, 3);
-  curve.nodes << 2, 0, 0, -2, 0, 0;
-  curve.edges = {{0, 1}};
-  curve.vertexToNode.assign(size_t(torus.vertices.rows()), -1);
+  medial::CurveSkeleton curve = twoNodeCurve({2, 0, 0}, {-2, 0, 0}, torus.vertices.rows());
   for (Eigen::Index v = 0; v < torus.vertices.rows(); ++v)
     if (torus.vertices(v, 1) >= 0) curve.vertexToNode[size_t(v)] = torus.vertices(v, 0) >= 0 ? 0 : 1;
   const int added = medial::splitEdgesLeavingTheMesh(curve, torus.vertices, inside);
@@ -246,11 +253,7 @@ TEST(EmbeddingRefinement, AnEdgeWithoutAbsorbedVerticesIsSplitInsideToo) {
   // passes 1 from the centre, through the hole. The split node comes from the search across the chord.
   const medial::TriangleMesh torus = torusMesh(2, 0.5);
   const medial::InsideTest inside(torus);
-  medial::CurveSkeleton curve;
-  curve.nodes.resize(2, 3);
-  curve.nodes << 1, std::sqrt(3.0), 0, 1, -std::sqrt(3.0), 0;
-  curve.edges = {{0, 1}};
-  curve.vertexToNode.assign(size_t(torus.vertices.rows()), -1);
+  medial::CurveSkeleton curve = twoNodeCurve({1, std::sqrt(3.0), 0}, {1, -std::sqrt(3.0), 0}, torus.vertices.rows());
   const int added = medial::splitEdgesLeavingTheMesh(curve, torus.vertices, inside);
   EXPECT_GE(added, 1);
   for (const auto& [a, b] : curve.edges)
@@ -263,10 +266,7 @@ TEST(EmbeddingRefinement, ANodeOutsideIsPushedToTheMiddleOfThePart) {
   // (2.5, 0, 0) to the tube's axis; the node inside stays where it is.
   const medial::TriangleMesh torus = torusMesh(2, 0.5);
   const medial::InsideTest inside(torus);
-  medial::CurveSkeleton curve;
-  curve.nodes.resize(2, 3);
-  curve.nodes << 3, 0, 0, -2, 0, 0;
-  curve.edges = {{0, 1}};
+  medial::CurveSkeleton curve = twoNodeCurve({3, 0, 0}, {-2, 0, 0}, torus.vertices.rows());
   EXPECT_EQ(medial::pushNodesInside(curve, inside), 1);
   EXPECT_TRUE(inside.contains(curve.nodes.row(0).transpose()));
   EXPECT_NEAR(curve.nodes(0, 0), 2.0, 0.1);
