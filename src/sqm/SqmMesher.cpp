@@ -61,8 +61,8 @@ void mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
     for (const auto& e : s.edges) {
       // The big end: a branch node (rings of connection nodes sit at their centres); of two branch nodes
       // the larger, or the first.
-      auto swallows = [&](int x, int) { return neighbours[size_t(x)].size() >= 3; };
-      const bool first = swallows(e[0], e[1]), second = swallows(e[1], e[0]);
+      auto isBranch = [&](int x) { return neighbours[size_t(x)].size() >= 3; };
+      const bool first = isBranch(e[0]), second = isBranch(e[1]);
       if (!first && !second) continue;
       const int big = first && (!second || s.radii[size_t(e[0])] >= s.radii[size_t(e[1])]) ? e[0] : e[1];
       const int small = big == e[0] ? e[1] : e[0];
