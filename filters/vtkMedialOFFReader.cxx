@@ -13,7 +13,15 @@
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkMedialOFFReader);
 
@@ -37,6 +45,7 @@ class PolygonSoupImporter : public IO::BaseImporter {
   std::vector<Vec3f> normals;
   std::vector<std::vector<int>> faces;
   bool badFace = false;
+  size_t facesSeen = 0;  // bad ones included
 
   VertexHandle add_vertex(const Vec3f& p) override { return add_vertex(Vec3d(p[0], p[1], p[2])); }
   VertexHandle add_vertex(const Vec3d& p) override {
@@ -45,6 +54,7 @@ class PolygonSoupImporter : public IO::BaseImporter {
   }
   VertexHandle add_vertex() override { return add_vertex(Vec3d(0, 0, 0)); }
   FaceHandle add_face(const VHandles& handles) override {
+    ++facesSeen;
     std::vector<int> face;
     for (const VertexHandle& h : handles) {
       if (!h.is_valid() || h.idx() >= static_cast<int>(points.size())) {
@@ -112,6 +122,34 @@ class PolygonSoupImporter : public IO::BaseImporter {
   }
 };
 
+// An ASCII OFF file's text without its comments ('#' to the end of a line) and blank lines: OpenMesh reads
+// none of CGAL's OFF files that open with a comment block (cube_poly, sphere966, mesh_with_colors...).
+std::string withoutComments(std::istream& in) {
+  std::string text;
+  for (std::string line; std::getline(in, line);) {
+    line = line.substr(0, line.find('#'));
+    if (line.find_first_not_of(" \t\r") != std::string::npos) text += line + "\n";
+  }
+  return text;
+}
+
+// The vertex and face counts the OFF text announces after its key word (OFF, COFF, NOFF, STOFF...); false
+// for binary OFF and anything not understood.
+bool announcedCounts(const std::string& text, long& vertices, long& faces) {
+  std::istringstream words(text);
+  std::vector<std::string> tokens;
+  for (std::string word; tokens.size() < 3 && words >> word;) tokens.push_back(word);
+  if (tokens.size() < 3 || tokens[0].size() < 3 || tokens[0].compare(tokens[0].size() - 3, 3, "OFF") != 0) return false;
+  if (tokens[0].find('n') != std::string::npos || tokens[1] == "BINARY") return false;  // nOFF: a dimension first
+  try {
+    vertices = std::stol(tokens[1]);
+    faces = std::stol(tokens[2]);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
@@ -128,10 +166,34 @@ int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtk
   PolygonSoupImporter soup;
   IO::Options options = IO::Options::VertexColor | IO::Options::VertexNormal;
   omerr().disable();  // OpenMesh would print its own complaints; ours name the file
-  const bool ok = IO::IOManager().read(this->FileName, soup, options);
+  std::ifstream file(this->FileName);
+  const std::string original((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  std::istringstream lines(original);
+  const std::string text = withoutComments(lines);
+  long vertices = 0, faces = 0;
+  const bool ascii = announcedCounts(text, vertices, faces);
+  // A file with comments is read from a copy without them (OpenMesh reads colours and normals only from a
+  // file, not from a stream).
+  std::string path = this->FileName;
+  if (ascii && original.find('#') != std::string::npos) {
+    path = (std::filesystem::temp_directory_path() /
+            ("medial-off-" + std::to_string(::getpid()) + "-" + std::to_string(uintptr_t(this)) + ".off"))
+               .string();
+    std::ofstream(path) << text;
+  }
+  const bool ok = IO::IOManager().read(path, soup, options);
+  if (path != this->FileName) std::filesystem::remove(path);
   omerr().enable();
   if (!ok) {
     vtkErrorMacro(<< this->FileName << ": not a readable OFF file");
+    return 0;
+  }
+  // OpenMesh reads a file that ends early without complaint, and what it makes of the missing numbers
+  // is whatever was in memory: hold it to the counts the header announced.
+  if (ascii &&
+      (long(soup.points.size()) < vertices || long(soup.facesSeen) < faces)) {
+    vtkErrorMacro(<< this->FileName << ": the file ends early (" << vertices << " vertices and " << faces
+                  << " faces announced, " << soup.points.size() << " and " << soup.facesSeen << " read)");
     return 0;
   }
   if (soup.badFace) {

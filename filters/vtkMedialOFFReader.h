@@ -6,8 +6,10 @@
  * The faces are taken as the file lists them, without building a half-edge structure, so that
  * non-manifold or inconsistently oriented meshes arrive intact (the algorithms report or repair them;
  * a reader must not silently drop faces). Per-vertex colours become the `Colors` point array (RGB,
- * unsigned char), per-vertex normals the point normals. An unreadable file, an empty mesh, or a face
- * that refers to a missing vertex is an error and leaves the output empty.
+ * unsigned char), per-vertex normals the point normals. Comments ('#' to the end of a line, anywhere,
+ * as CGAL's tools write them) are skipped. An unreadable file, an empty mesh, a file that ends before
+ * the vertices and faces its header announces, or a face that refers to a missing vertex is an error
+ * and leaves the output empty.
  */
 #pragma once
 
