@@ -9,7 +9,8 @@
  * Cycles are meshed (a genus-g surface for g independent cycles). Repairs: self-loop edges are dropped,
  * repeated edges merged, and a node whose centre lies inside the sphere of a neighbouring branch node is
  * merged into it, the branch node keeping the larger radius (its tube would run backwards out of that
- * sphere; e.g. finger nodes inside a palm's ball, a sketch's wing joint inside its body's next sphere).
+ * sphere; e.g. finger nodes inside a palm's ball, a sketch's wing joint inside its body's next sphere);
+ * two neighbouring branch nodes merge once their spheres overlap by more than half the smaller radius.
  * Errors (empty output): no nodes, no Radius, a radius <= 0 or NaN coordinates, coincident joined nodes,
  * two edges leaving a node in the same direction.
  * Implements medial::sqmMesh (src/sqm/SqmMesher.h).

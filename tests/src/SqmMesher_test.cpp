@@ -466,6 +466,18 @@ TEST(SqmMesher, NodesInsideANeighboursSphereAreMergedIntoIt) {
     if (grown.mesh.vertexNode[v] == 0) farthest = std::max(farthest, grown.mesh.vertices[v].norm());
   EXPECT_NEAR(farthest, 0.5, 1e-9);
 
+  // Two branch nodes whose spheres overlap by more than half the smaller radius merge; by less, not.
+  auto twoBranches = [](double distance) {
+    medial::Skeleton s;
+    s.nodes = {{0, 0, 0}, {distance, 0, 0}, {-1, 0.5, 0}, {-1, -0.5, 0}, {distance + 1, 0.5, 0}, {distance + 1, -0.5, 0}};
+    s.radii = {0.4, 0.3, 0.2, 0.2, 0.2, 0.2};
+    s.edges = {{0, 1}, {0, 2}, {0, 3}, {1, 4}, {1, 5}};
+    return medial::sqmMesh(s);
+  };
+  EXPECT_EQ(twoBranches(0.5).mergedNodes, 1);  // overlap 0.2 > 0.15
+  EXPECT_EQ(twoBranches(0.6).mergedNodes, 0);  // overlap 0.1 < 0.15
+  EXPECT_TRUE(twoBranches(0.5).ok());
+
   // In a cycle of three, merging would close the cycle onto one edge: the nodes stay.
   medial::Skeleton triangle;
   triangle.nodes = {{0, 0, 0}, {0.5, 0, 0}, {0.25, 2, 0}};
