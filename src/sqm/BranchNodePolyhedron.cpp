@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <map>
 #include <set>
@@ -339,8 +340,10 @@ bool refineBnp(BranchNodePolyhedron& bnp, const std::vector<int>& target, const 
         const auto [a, b] = bnp.hullEdges[e];
         if (a != x && b != x) continue;
         const int y = a == x ? b : a;
-        const bool steiner = y >= count;  // no tube there: any number of splits will do
-        const int need = steiner ? 0 : target[size_t(y)] - bnp.valence(y);
+        // A Steiner point has no tube, so any number of splits will do; its LIEs come last, so that its
+        // valence stays even where it can and its cap closes with quads only.
+        const bool steiner = y >= count;
+        const int need = steiner ? std::numeric_limits<int>::min() / 2 : target[size_t(y)] - bnp.valence(y);
         if (!steiner && exact[size_t(y)] && need <= 0) continue;
         if (best < 0 || need > bestNeed || (need == bestNeed && bnp.lieSplits[e] < bestSplits)) {
           best = int(e);

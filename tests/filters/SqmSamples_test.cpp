@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <vtkCellArray.h>
+#include <vtkDataArray.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
@@ -81,6 +82,16 @@ TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {
   const std::vector<std::vector<int64_t>> faces = polygonsOf(mesh);
   int quads = 0;
   for (const auto& f : faces) quads += f.size() == 4;
+  // Triangles only at leaf fans and cycle closures, which join two nodes' vertices; none on one node alone
+  // (a branch node's cap).
+  vtkDataArray* owner = mesh->GetPointData()->GetArray("SkeletonNode");
+  int oneNodeTriangles = 0;
+  for (const auto& f : faces)
+    if (f.size() == 3) {
+      const double first = owner->GetComponent(f[0], 0);
+      oneNodeTriangles += owner->GetComponent(f[1], 0) == first && owner->GetComponent(f[2], 0) == first;
+    }
+  EXPECT_EQ(oneNodeTriangles, 0);
   const medial::MeshTopology t = medial::computeMeshTopology(mesh->GetNumberOfPoints(), faces);
   EXPECT_EQ(t.borderEdges, 0);
   EXPECT_EQ(t.nonManifoldEdges, 0);
