@@ -108,41 +108,39 @@ PushedLoop pushLoop(const std::vector<int>& loop, const TriangleMesh& mesh, cons
 }
 
 // One polygon per independent cycle of the graph: each edge outside a spanning forest closed by the tree
-// paths of its ends.
+// paths of its ends (a repeated edge makes a cycle of two).
 std::vector<Polygon> fundamentalCycles(const CurveSkeleton& skeleton) {
-  const int n = int(skeleton.nodes.rows());
-  std::vector<std::vector<int>> neighbours(skeleton.nodes.rows());
-  for (const auto& [a, b] : skeleton.edges) {
-    neighbours[size_t(a)].push_back(b);
-    neighbours[size_t(b)].push_back(a);
+  const size_t n = size_t(skeleton.nodes.rows());
+  std::vector<std::vector<std::pair<int, int>>> around(n);  // (neighbour, edge index)
+  for (size_t e = 0; e < skeleton.edges.size(); ++e) {
+    const auto [a, b] = skeleton.edges[e];
+    around[size_t(a)].emplace_back(b, int(e));
+    around[size_t(b)].emplace_back(a, int(e));
   }
-  std::vector<int> parent(size_t(n), -2), depth(size_t(n), 0);
-  for (int root = 0; root < n; ++root) {
-    if (parent[size_t(root)] != -2) continue;
-    parent[size_t(root)] = -1;
-    std::vector<int> stack{root};
+  std::vector<int> parent(n, -2), depth(n, 0);
+  std::vector<bool> inTree(skeleton.edges.size(), false);
+  for (size_t root = 0; root < n; ++root) {
+    if (parent[root] != -2) continue;
+    parent[root] = -1;
+    std::vector<int> stack{int(root)};
     while (!stack.empty()) {
       const int u = stack.back();
       stack.pop_back();
-      for (int v : neighbours[size_t(u)])
+      for (const auto& [v, e] : around[size_t(u)])
         if (parent[size_t(v)] == -2) {
           parent[size_t(v)] = u;
           depth[size_t(v)] = depth[size_t(u)] + 1;
+          inTree[size_t(e)] = true;
           stack.push_back(v);
         }
     }
   }
   std::vector<Polygon> cycles;
-  for (const auto& [a, b] : skeleton.edges) {
-    if (parent[size_t(a)] == b || parent[size_t(b)] == a || a == b) continue;
-    std::vector<int> fromA{a}, fromB{b};
-    while (fromA.back() != fromB.back()) {
-      std::vector<int>& deeper = depth[size_t(fromA.back())] >= depth[size_t(fromB.back())] ? fromA : fromB;
-      deeper.push_back(parent[size_t(deeper.back())]);
-    }
+  for (size_t e = 0; e < skeleton.edges.size(); ++e) {
+    const auto [a, b] = skeleton.edges[e];
+    if (inTree[e] || a == b) continue;
     Polygon cycle;
-    for (auto it = fromA.rbegin(); it != fromA.rend(); ++it) cycle.push_back(skeleton.nodes.row(*it).transpose());
-    for (auto it = fromB.begin(); it + 1 != fromB.end(); ++it) cycle.push_back(skeleton.nodes.row(*it).transpose());
+    for (int node : loopThroughTree(a, b, parent, depth)) cycle.push_back(skeleton.nodes.row(node).transpose());
     cycles.push_back(std::move(cycle));
   }
   return cycles;

@@ -60,6 +60,17 @@ EdgeGraph buildEdges(const TriangleMesh& mesh) {
 
 }  // namespace
 
+std::vector<int> loopThroughTree(int a, int b, const std::vector<int>& parent, const std::vector<int>& depth) {
+  std::vector<int> fromA{a}, fromB{b};
+  while (fromA.back() != fromB.back()) {
+    std::vector<int>& deeper = depth[size_t(fromA.back())] >= depth[size_t(fromB.back())] ? fromA : fromB;
+    deeper.push_back(parent[size_t(deeper.back())]);
+  }
+  std::vector<int> loop(fromA.rbegin(), fromA.rend());
+  loop.insert(loop.end(), fromB.begin(), fromB.end() - 1);
+  return loop;
+}
+
 int closedGenus(const TriangleMesh& mesh) {
   // Edges as sorted vertex pairs: each must appear exactly twice in a closed 2-manifold.
   std::vector<std::pair<int, int>> halfEdges;
@@ -151,15 +162,7 @@ std::vector<std::vector<int>> homologyBasisLoops(const TriangleMesh& mesh) {
   for (int e : others) {
     const Edge& edge = g.edges[size_t(e)];
     if (dual.join(edge.faces[0], edge.faces[1])) continue;
-    // The loop: lowest common ancestor ... a, then b ... up to the ancestor's child.
-    std::vector<int> fromA{edge.a}, fromB{edge.b};
-    while (fromA.back() != fromB.back()) {
-      std::vector<int>& deeper = depth[size_t(fromA.back())] >= depth[size_t(fromB.back())] ? fromA : fromB;
-      deeper.push_back(parent[size_t(deeper.back())]);
-    }
-    std::vector<int> loop(fromA.rbegin(), fromA.rend());
-    loop.insert(loop.end(), fromB.begin(), fromB.end() - 1);
-    loops.push_back(std::move(loop));
+    loops.push_back(loopThroughTree(edge.a, edge.b, parent, depth));
   }
   return loops;
 }

@@ -16,6 +16,11 @@ namespace medial {
 // non-manifold edge are left out.
 std::vector<std::vector<int>> homologyBasisLoops(const TriangleMesh& mesh);
 
+// The closed path through a tree that an extra edge (a, b) makes: from the lowest common ancestor of a
+// and b down to a, then from b back up to the ancestor's child (the edge b-a closes it). `parent` and
+// `depth` describe the tree (the root's parent is never followed).
+std::vector<int> loopThroughTree(int a, int b, const std::vector<int>& parent, const std::vector<int>& depth);
+
 // The genus summed over the same components (half the number of loops above), from their Euler
 // characteristics: cheap enough to ask before building the loops.
 int closedGenus(const TriangleMesh& mesh);

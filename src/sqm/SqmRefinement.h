@@ -1,9 +1,12 @@
 // SqmRefinement: stage 8 of the SQM issue, the CPU counterpart of the CESCG 2014 paper's GPU tessellation
 // (section 5, "Tessellation"): K levels of Catmull-Clark subdivision (OpenMesh), each followed by the
 // projection of every vertex onto the truncated cone of the skeleton edge nearest to it - the cone whose
-// radius runs linearly from the parent's sphere to the child's along the edge. Chosen here: the projection
-// is radial from the edge's axis (the paper translates along the vertex normal; radial is the same on a
-// straight tube and never misses the cone).
+// radius runs linearly from the parent's sphere to the child's along the edge (with ellipsoid nodes, whose
+// cross-section interpolates the two ends' ellipsoid matrices). Chosen here: the projection is radial from
+// the edge's axis (the paper translates along the vertex normal; radial is the same on a straight tube and
+// never misses the cone), and where the projection lies inside another cone whose surface is about as
+// near (the inner side of a bend, tubes crowding a branch node) the point goes to a blend of the two
+// projections, a rounded crease, instead of snapping to one cone or the other and folding.
 //
 // Radius scaling at sharp vertices (the paper's last paragraph of section 5): projecting onto the cones
 // makes the mesh gain volume, and where two tubes leave a branch node at a narrow angle the refined faces
