@@ -2,7 +2,7 @@
 """Makes the SQM test skeletons (committed under data/skeletons/sqm/): run with /usr/bin/python3.
 
     worm.vtp        linear, 23 nodes, no branch node (SQM extension 2)
-    humanoid.vtp    56 nodes: spine, head, arms with five-fingered hands, legs with feet
+    humanoid.vtp    62 nodes: spine, head, arms with a knuckle bar and five fingers, legs with feet
     octopus.vtp     131 nodes: a body and eight curling tentacles of 16 nodes
     quadruped.vtp   150 nodes: spine, neck, head, ears, tail, four legs with toes
     fish.vtp        ellipsoid nodes (EllipsoidAxes), root at the head, a leaf (extensions 1 and 3)
@@ -86,15 +86,21 @@ def humanoid():
         wrist = b.chain(chest, [(side * 0.18, 0.56, 0), (side * 0.3, 0.5, 0.01), (side * 0.42, 0.42, 0.02),
                                 (side * 0.52, 0.34, 0.05), (side * 0.6, 0.27, 0.08)],
                         [0.065, 0.055, 0.05, 0.045, 0.04])
-        # Five parallel fingers side by side across the hand, 0.035 apart (more than the 0.028 their two
-        # radii need: tubes of different branches must not overlap, or no mesh of them can avoid cutting
-        # itself).
+        # A knuckle bar across the hand, five knuckles 0.035 apart, and a finger from each, parallel.
+        # Fingers fanning out of the wrist node itself would make cones that overlap over their whole
+        # length (they converge on one centre); tubes of different branches must not overlap, or no mesh
+        # of them can avoid cutting itself. Knuckle radius 0.016: two of them leave 0.003 between fingers.
         along = (side * 0.7, -0.7, 0.0)
         n = math.sqrt(sum(c * c for c in along))
         along = tuple(c / n for c in along)
-        for f in range(5):
-            base = (side * 0.6 + along[0] * 0.05, 0.27 + along[1] * 0.05, 0.08 + 0.035 * (f - 2))
-            b.chain(wrist, [base] + line(base, along, 1, 0.05), [0.014, 0.012])
+        middle = (side * 0.6 + along[0] * 0.05, 0.27 + along[1] * 0.05, 0.08)
+        knuckle = {0: b.chain(wrist, [middle], [0.018])}
+        for step in (1, -1):
+            for f in (step, 2 * step):
+                point = (middle[0], middle[1], middle[2] + 0.035 * f)
+                knuckle[f] = b.chain(knuckle[f - step], [point], [0.016])
+        for f in range(-2, 3):
+            b.chain(knuckle[f], line(b.nodes[knuckle[f]][:3], along, 2, 0.04), [0.014, 0.012])
         foot = b.chain(pelvis, [(side * 0.1, -0.08, 0), (side * 0.11, -0.3, 0.01), (side * 0.12, -0.5, 0.03),
                                 (side * 0.12, -0.7, 0.02), (side * 0.12, -0.9, 0)],
                        [0.09, 0.08, 0.065, 0.055, 0.045])
