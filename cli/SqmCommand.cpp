@@ -1,5 +1,5 @@
 // `medial sqm SKELETON.vtp|.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME] [--capsule]
-//              [--ring-vertices N] [--subdivide K] [--sharp-scale S]`
+//              [--triangle-fans] [--ring-vertices N] [--subdivide K] [--sharp-scale S]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "Progress.h"
@@ -21,7 +21,7 @@ namespace medial::cli {
 int runSqm(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args, {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale"},
-             {"--capsule", "--quiet", "--timings"}});
+             {"--capsule", "--triangle-fans", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sqm needs exactly one SKELETON file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -52,6 +52,7 @@ int runSqm(const std::vector<std::string>& args) {
     filter->SetSharpScaling(true);
   }
   filter->SetCapsules(parsed.has("--capsule"));
+  filter->SetPairTriangles(!parsed.has("--triangle-fans"));
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));

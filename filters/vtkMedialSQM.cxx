@@ -21,6 +21,7 @@ void vtkMedialSQM::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Pairing: " << this->Pairing << "\n";
   os << indent << "LinearRingVertices: " << this->LinearRingVertices << "\n";
   os << indent << "Capsules: " << this->Capsules << "\n";
+  os << indent << "PairTriangles: " << this->PairTriangles << "\n";
   os << indent << "SubdivisionLevels: " << this->SubdivisionLevels << "\n";
   os << indent << "SharpScaling: " << this->SharpScaling << " (minimum " << this->SharpMinimumScale << ")\n";
 }
@@ -64,6 +65,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   medial::parseRingPairing(this->Pairing, p.pairing);
   p.linearRingVertices = this->LinearRingVertices;
   p.capsules = this->Capsules;
+  p.pairTriangles = this->PairTriangles;
   p.subdivisionLevels = this->SubdivisionLevels;
   p.sharpScaling.enabled = this->SharpScaling;
   p.sharpScaling.minimumScale = this->SharpMinimumScale;

@@ -37,6 +37,11 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   /// N: vertices of the ring of a skeleton without branch nodes (default 8).
   vtkSetClampMacro(LinearRingVertices, int, 3, 1024);
   vtkGetMacro(LinearRingVertices, int);
+  /// Join neighbouring triangles of the leaf fans and cycle bands into quads where they make a fair quad
+  /// (default on; off gives the papers' triangle fans and bands).
+  vtkSetMacro(PairTriangles, bool);
+  vtkGetMacro(PairTriangles, bool);
+  vtkBooleanMacro(PairTriangles, bool);
   /// Close leaves with capsules (hemispheres) instead of triangle fans (default off).
   vtkSetMacro(Capsules, bool);
   vtkGetMacro(Capsules, bool);
@@ -70,6 +75,7 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   std::string Pairing = "total-distance";
   int LinearRingVertices = 8;
   bool Capsules = false;
+  bool PairTriangles = true;
   int SubdivisionLevels = 0;
   bool SharpScaling = false;
   double SharpMinimumScale = 0.8;

@@ -26,6 +26,8 @@ std::vector<Parameter> sqmParameters() {
       P::integer("LinearRingVertices", "Ring vertices N", 8, 3, 1024,
                  "Vertices of a ring when the skeleton has no branch node (CESCG 2014, linear skeletons)"),
       P::toggle("Capsules", "Capsule leaves", false, "Close leaves with hemispheres (CESCG 2014, Capsule Ending)"),
+      P::toggle("PairTriangles", "Quads at leaf tips", true,
+                "Join the triangles of leaf fans and cycle bands into quads (off: the paper's triangle fans)"),
       P::toggle("SharpScaling", "Sharp scaling", false,
                 "With subdivision: shrink the cone radius near sharp vertices by a Bézier curve (CESCG 2014, "
                 "Tessellation)"),
@@ -68,6 +70,7 @@ vtkSmartPointer<vtkAlgorithm> SqmPanel::makeFilter(SceneObject* input, QString&)
   filter->SetPairing(form()->choice("Pairing").toStdString());
   filter->SetLinearRingVertices(static_cast<int>(form()->value("LinearRingVertices")));
   filter->SetCapsules(form()->isOn("Capsules"));
+  filter->SetPairTriangles(form()->isOn("PairTriangles"));
   filter->SetSubdivisionLevels(subdivision_->value());
   filter->SetSharpScaling(form()->isOn("SharpScaling"));
   filter->SetSharpMinimumScale(form()->value("SharpMinimumScale"));

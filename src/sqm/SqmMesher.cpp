@@ -5,6 +5,7 @@
 #include "mesh/PolygonOrientation.h"
 #include "sqm/SkeletonStraightening.h"
 #include "sqm/SqmRefinement.h"
+#include "sqm/TrianglePairing.h"
 
 #include <Eigen/Geometry>
 
@@ -186,6 +187,7 @@ struct Builder {
   std::vector<int> owner;  // node (of the prepared skeleton) per vertex
   const std::vector<bool>* pseudo = nullptr;
   std::map<int, std::vector<int>> openRings;  // per pseudo leaf: the ring left open for the cycle closing
+  std::vector<std::vector<size_t>> strips;    // each leaf fan's and cycle band's triangles (TrianglePairing)
   // Ends a tube at a leaf: a fan, or for a pseudo leaf the ring stays open.
   void endAtLeaf(const std::vector<int>& ring, int leaf, const Eigen::Vector3d& apex, bool reversed);
   int add(const Eigen::Vector3d& p, int node) {
@@ -284,7 +286,9 @@ void closeOnRing(Builder& b, const std::vector<int>& ring, const std::vector<int
 
 void fan(Builder& b, const std::vector<int>& ring, int apex, bool reversed) {
   const size_t m = ring.size();
+  b.strips.emplace_back();
   for (size_t i = 0; i < m; ++i) {
+    b.strips.back().push_back(b.mesh.faces.size());
     if (reversed) b.mesh.faces.push_back({ring[(i + 1) % m], ring[i], apex});
     else b.mesh.faces.push_back({ring[i], ring[(i + 1) % m], apex});
   }
@@ -529,7 +533,11 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
     const int atA = prepared.origin[size_t(a)], atB = prepared.origin[size_t(b)];
     const auto band = closeCycleGap(builder.mesh.vertices, builder.openRings[a], s.nodes[size_t(atA)],
                                     builder.openRings[b], s.nodes[size_t(atB)]);
-    for (const auto& t : band) builder.mesh.faces.push_back({t[0], t[1], t[2]});
+    builder.strips.emplace_back();
+    for (const auto& t : band) {
+      builder.strips.back().push_back(builder.mesh.faces.size());
+      builder.mesh.faces.push_back({t[0], t[1], t[2]});
+    }
   }
   // Extension 3: an ellipsoid node maps the unit sphere to its ellipsoid.
   if (!s.ellipsoidAxes.empty())
@@ -542,6 +550,7 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
   // against their neighbours, and so can the cycle bands; the surface is orientable, so it gets one
   // consistent orientation, outward (OpenMesh's subdivision needs it).
   result.reorientedFaces = orientPolygonsOutward(builder.mesh.vertices, builder.mesh.faces);
+  if (p.pairTriangles) result.pairedTriangles = pairStripTriangles(builder.mesh.vertices, builder.mesh.faces, builder.strips);
   result.mesh = std::move(builder.mesh);
   result.mesh.vertexNode.resize(builder.owner.size());
   for (size_t v = 0; v < builder.owner.size(); ++v) result.mesh.vertexNode[v] = prepared.origin[size_t(builder.owner[v])];

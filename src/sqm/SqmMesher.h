@@ -1,6 +1,7 @@
 // SqmMesher: Skeleton to Quad-dominant Mesh (Bærentzen et al. 2012) with the extensions of the CESCG 2014
 // paper and the thesis chapter: a skeleton with a radius per node becomes a closed manifold mesh of quads,
-// with triangles only in the fans that close leaves.
+// with triangles only in the fans that close leaves and the bands that close cycles; these are joined
+// in pairs into quads by default (TrianglePairing), leaving a triangle only where a ring is odd.
 //
 // Steps per connected component (section numbers of the CESCG paper): the tree and its root (ext. 1),
 // straightening into the bind pose (4), branch node polyhedra (BNPs) generated and refined in
@@ -51,6 +52,9 @@ struct SqmParameters {
   int linearRingVertices = 8;  // N of extension 2
   bool capsules = false;       // extension 4
   int capsuleSteps = 4;        // nodes added beyond each leaf for its capsule
+  // Neighbouring triangles of the leaf fans and cycle bands joined into quads where the quad is fair
+  // (TrianglePairing): beyond the papers, whose fans stay triangles; off gives the paper's mesh.
+  bool pairTriangles = true;
   int subdivisionLevels = 0;   // stage 8: Catmull-Clark levels with cone projection (SqmRefinement)
   SharpScaling sharpScaling;   // stage 8: Bézier radius scaling near sharp vertices (SqmRefinement)
 };
@@ -67,6 +71,7 @@ struct SqmResult {
   int branchNodes = 0, connectionNodes = 0, leafNodes = 0;
   int reorientedFaces = 0;  // faces turned over by the final orientation repair (-1: not orientable)
   int mergedNodes = 0;      // nodes inside a neighbouring branch node's sphere, merged into it (a repair)
+  int pairedTriangles = 0;  // quads made of two fan or band triangles (SqmParameters::pairTriangles)
   double straighteningSeconds = 0, generationSeconds = 0, refinementSeconds = 0, joiningSeconds = 0,
          placementSeconds = 0, subdivisionSeconds = 0;
   std::string error;

@@ -184,10 +184,17 @@ TEST(SqmMesher, LinearSkeletonGetsNVertexRings) {
   p.linearRingVertices = 6;
   const auto r = medial::sqmMesh(s, p);
   expectClosedQuadDominant(s, r);
-  // 21 connection nodes, 6 vertices each, two fan apexes; 20 rings of quads and two fans.
+  // 21 connection nodes, 6 vertices each, two apexes; 20 rings of quads and two fans of 6 triangles,
+  // joined in pairs into 3 quads each.
   EXPECT_EQ(r.mesh.vertices.size(), 21u * 6 + 2);
-  EXPECT_EQ(r.mesh.quadCount(), 20 * 6);
-  EXPECT_EQ(r.mesh.faces.size(), 20u * 6 + 12);
+  EXPECT_EQ(r.mesh.quadCount(), 20 * 6 + 2 * 3);
+  EXPECT_EQ(r.mesh.faces.size(), 20u * 6 + 2 * 3);
+  EXPECT_EQ(r.pairedTriangles, 6);
+  p.pairTriangles = false;  // the paper's fans
+  const auto fans = medial::sqmMesh(s, p);
+  expectClosedQuadDominant(s, fans);
+  EXPECT_EQ(fans.mesh.quadCount(), 20 * 6);
+  EXPECT_EQ(fans.mesh.faces.size(), 20u * 6 + 12);
 }
 
 TEST(SqmMesher, LongChainsAreWalkedWithoutRecursion) {
@@ -299,8 +306,10 @@ TEST(SqmMesher, CatmullClarkRefinementStaysClosedOnTheCones) {
     for (const auto& f : coarse.mesh.faces) expected += f.size() * 4;
     EXPECT_EQ(fine.mesh.faces.size(), expected);
     // Every vertex lies on the truncated cone of some edge (radius interpolated along the edge), or in a
-    // crease where two cones meet, inside one: never outside all. Most lie on a cone (measured: 72 % on
-    // the star, 74 % on the Y; the rest in the creases between arms).
+    // crease where two cones meet, inside one: never outside all. Many lie on a cone (measured: 74 % on
+    // the star, 56 % on the Y; the rest in the creases between arms, and on the Y along its leaf tubes,
+    // where the quads of the paired fans run from the ring to the apex inside the tube: 74 % with the
+    // paper's triangle fans, whose refined tips stay flat discs).
     int onACone = 0;
     for (const auto& v : fine.mesh.vertices) {
       double gap = INFINITY, deepest = INFINITY;
@@ -314,7 +323,7 @@ TEST(SqmMesher, CatmullClarkRefinementStaysClosedOnTheCones) {
       EXPECT_LT(deepest, 1e-9);
       onACone += gap < 1e-9;
     }
-    EXPECT_GT(onACone, 0.6 * double(fine.mesh.vertices.size()));
+    EXPECT_GT(onACone, 0.5 * double(fine.mesh.vertices.size()));
   }
 }
 
