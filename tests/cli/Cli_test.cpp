@@ -240,6 +240,18 @@ TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
   auto merged = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/quadruped.vtp") + " -o " + dir + "/q.vtp --quiet"));
   EXPECT_EQ(merged.exitCode, 0) << merged.err;
   EXPECT_NE(merged.err.find("merged into it"), std::string::npos) << merged.err;
+  // The worm's two leaf fans of 8: four quads each by default, eight triangles with --triangle-fans.
+  auto countTriangles = [&](const std::string& path) {
+    std::ifstream in(path);
+    int triangles = 0;
+    while (std::getline(in, line)) triangles += line.rfind("f ", 0) == 0 && std::count(line.begin(), line.end(), ' ') == 3;
+    return triangles;
+  };
+  for (const char* option : {"", " --triangle-fans"}) {
+    auto worm = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/worm.vtp") + " -o " + dir + "/w.obj --quiet" + option));
+    ASSERT_EQ(worm.exitCode, 0) << worm.err;
+    EXPECT_EQ(countTriangles(dir + "/w.obj"), *option ? 16 : 0) << option;
+  }
 }
 
 TEST(Cli, CenterlineOfAPhantomAndItsErrors) {
