@@ -8,6 +8,7 @@
 //   peeled      the usual workaround: the mesh at opacity 0.3 over the skeleton, dual depth peeling
 //   pass, off   the ghost pass installed with Mode Off (its delegate alone)
 //   ghost S     the ghost pass at MapScale S (1, 0.5, 0.25)
+//   layered     the ghost pass at MapScale 0.5 with LayeredGhosts (every occluder's shader writes depth)
 // Prints medians and the ratios ghost / plain (paper: <= 2, goal: <= 1.3) and ghost / peeled.
 //   medial_bench_ghost [--frames N] [--size WxH] [--triangles T] [MESH]   (default: armadillo, else torus)
 #include "vtkMedialContractionSkeleton.h"
@@ -81,7 +82,7 @@ vtkSmartPointer<vtkPolyData> subdivideTo(vtkPolyData* mesh, vtkIdType target) {
   return loop->GetOutput();
 }
 
-enum class Config { Plain, Peeled, PassOff, Ghost };
+enum class Config { Plain, Peeled, PassOff, Ghost, Layered };
 
 // One configuration's scene in its own offscreen window, and its frame times.
 struct Setup {
@@ -111,10 +112,11 @@ std::unique_ptr<Setup> makeSetup(const std::string& name, const Options& o, vtkP
   scene->AddData(context);
   vtkProp3D* bones = scene->AddData(skeleton);
   vtkRenderer* renderer = scene->GetRenderer();
-  if (config == Config::Ghost || config == Config::PassOff) {
+  if (config != Config::Plain && config != Config::Peeled) {
     scene->SetImportance(bones, 1.0);
     scene->GetGhostPass()->SetMapScale(mapScale);
     if (config == Config::PassOff) scene->GetGhostPass()->SetModeToOff();
+    scene->GetGhostPass()->SetLayeredGhosts(config == Config::Layered);
   }
   setup->window = vtkSmartPointer<vtkRenderWindow>::New();
   vtkRenderWindow* window = setup->window;
@@ -167,6 +169,7 @@ int main(int argc, char** argv) {
     std::snprintf(name, sizeof name, "ghost %.2f", scale);
     setups.push_back(makeSetup(name, o, context, skeleton, Config::Ghost, scale));
   }
+  setups.push_back(makeSetup("layered 0.50", o, context, skeleton, Config::Layered, 0.5));
   for (int i = 0; i < o.frames; ++i)
     for (auto& setup : setups) {
       setup->scene->GetRenderer()->GetActiveCamera()->Azimuth(2.0);

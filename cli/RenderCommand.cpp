@@ -1,6 +1,7 @@
 // `medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION] [--skeleton-scale S]
 //                [--mesh-opacity A] [--ghost INPUT]... [--cutaway] [--ghost-opacity A]
-//                [--ghost-importance I,...] [--ghost-conflict gradual|depth] [--ghost-map-scale S]`
+//                [--ghost-importance I,...] [--ghost-conflict gradual|depth] [--ghost-map-scale S]
+//                [--ghost-layers]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "PrivateDisplay.h"
@@ -46,6 +47,7 @@ struct GhostOptions {
   double opacity = 0.25;
   bool depthSorting = false;
   double mapScale = 0.5;
+  bool layers = false;
 };
 
 GhostOptions parseGhostOptions(const ParsedArgs& parsed) {
@@ -59,6 +61,8 @@ GhostOptions parseGhostOptions(const ParsedArgs& parsed) {
       if (!(value > 0 && value <= 1)) throw UsageError("--ghost-importance values must be in (0, 1]");
   }
   ghost.cutaway = parsed.has("--cutaway");
+  ghost.layers = parsed.has("--ghost-layers");
+  if (ghost.layers && ghost.inputs.empty()) throw UsageError("--ghost-layers needs --ghost INPUT");
   ghost.opacity = parseFraction(parsed, "--ghost-opacity", 0.25, 0, 1, "[0, 1]");
   ghost.mapScale = parseFraction(parsed, "--ghost-map-scale", 0.5, 0.05, 1, "[0.05, 1]");
   const std::string conflict = parsed.value("--ghost-conflict", "gradual");
@@ -74,7 +78,7 @@ int runRender(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args, {{"-o", "--output", "--size", "--camera", "--skeleton-scale", "--mesh-opacity", "--ghost", "--ghost-opacity",
               "--ghost-importance", "--ghost-conflict", "--ghost-map-scale"},
-             {"--quiet", "--timings", "--cutaway"}});
+             {"--quiet", "--timings", "--cutaway", "--ghost-layers"}});
   if (parsed.positional.empty()) throw UsageError("render needs at least one INPUT file");
   std::string output = parsed.value("-o", parsed.value("--output"));
   if (output.empty()) throw UsageError("render needs -o IMAGE.png");
@@ -118,6 +122,7 @@ int runRender(const std::vector<std::string>& args) {
     pass->SetGhostOpacity(ghost.opacity);
     pass->SetConflict(ghost.depthSorting ? vtkMedialGhostPass::DepthSorting : vtkMedialGhostPass::GradualImportance);
     pass->SetMapScale(ghost.mapScale);
+    pass->SetLayeredGhosts(ghost.layers);
   }
 
   timings.start("display");

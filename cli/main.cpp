@@ -122,7 +122,8 @@ const std::vector<Command>& commands() {
        "usage: medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION]\n"
        "                     [--skeleton-scale S] [--mesh-opacity A]\n"
        "                     [--ghost INPUT]... [--cutaway] [--ghost-opacity A] [--ghost-importance I,...]\n"
-       "                     [--ghost-conflict gradual|depth] [--ghost-map-scale S] [--quiet] [--timings]\n"
+       "                     [--ghost-conflict gradual|depth] [--ghost-map-scale S] [--ghost-layers]\n"
+       "                     [--quiet] [--timings]\n"
        "\n"
        "Renders every INPUT (meshes: .vtp .vtk .vtu .obj .ply .stl .off; skeletons: .vtp .swc, drawn as\n"
        "tubes from their Radius; volumes: .nii .nii.gz .mha .mhd .nrrd .inr .inr.gz .vti .inv3 or a DICOM\n"
@@ -141,6 +142,8 @@ const std::vector<Command>& commands() {
        "  --ghost-conflict C       gradual: the more important object shows through the less (default);\n"
        "                           depth: the nearer object of interest wins\n"
        "  --ghost-map-scale S      importance-map resolution as a fraction of the image's (default 0.5)\n"
+       "  --ghost-layers           every occluding layer in front of an object of interest shows, not\n"
+       "                           only the one drawn last (slower: about 0.2 of a frame in software GL)\n"
        "  --quiet                  no progress line\n"
        "  --timings                print stage times as JSON on stdout\n"
        "Without an X display, a private Xvfb is started (package xvfb).\n",

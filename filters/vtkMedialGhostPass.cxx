@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 vtkStandardNewMacro(vtkMedialGhostPass);
@@ -130,6 +131,7 @@ void vtkMedialGhostPass::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "MapScale: " << this->MapScale << "\n";
   os << indent << "BorderWidth: " << this->BorderWidth << "\n";
   os << indent << "Translucency: " << translucencies[this->Translucency] << "\n";
+  os << indent << "LayeredGhosts: " << this->LayeredGhosts << "\n";
   os << indent << "DelegatePass: " << (this->UserDelegate ? this->UserDelegate->GetClassName() : "(default)") << "\n";
 }
 
@@ -154,6 +156,15 @@ double vtkMedialGhostPass::GetImportance(vtkProp* prop) {
   vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
   return keys && keys->Has(IMPORTANCE()) ? keys->Get(IMPORTANCE()) : 0.0;
 }
+
+void vtkMedialGhostPass::SetLayeredGhosts(bool layered) {
+  if (this->LayeredGhosts == layered) return;
+  this->LayeredGhosts = layered;
+  this->ShaderStageTime.Modified();
+  this->Modified();
+}
+
+vtkMTimeType vtkMedialGhostPass::GetShaderStageMTime() { return this->ShaderStageTime.GetMTime(); }
 
 void vtkMedialGhostPass::SetDelegatePass(vtkRenderPass* pass) {
   if (this->UserDelegate == pass) return;
@@ -210,6 +221,13 @@ void vtkMedialGhostPass::Render(const vtkRenderState* s) {
   std::stable_sort(props.begin(), props.end(),
                    [](vtkProp* a, vtkProp* b) { return GetImportance(a) > GetImportance(b); });
   const int interestCount = static_cast<int>(std::count_if(props.begin(), props.end(), isInterest));
+  std::vector<vtkProp*> interest;
+  std::copy_if(props.begin(), props.end(), std::back_inserter(interest), isInterest);
+  std::sort(interest.begin(), interest.end());
+  if (interest != this->ShadedInterest) {  // props whose shaders write depth change: rebuild them
+    this->ShadedInterest = interest;
+    this->ShaderStageTime.Modified();
+  }
 
   const bool plain = this->Mode == Off || interestCount == 0 || width <= 0 || height <= 0 || !window ||
                      renderer->GetSelector() != nullptr;
@@ -244,6 +262,22 @@ void vtkMedialGhostPass::Render(const vtkRenderState* s) {
   this->PostRender(&sorted);
 }
 
+void vtkMedialGhostPass::MapScissor(int scissor[4]) const {
+  // The map texels under the objects of interest's projected boxes (GhostRectangle), grown by the
+  // filter's reach: the only texels the scene looks up, so the only ones drawn, filtered and cleared.
+  const int reach = this->FilterRadius() + 2;
+  for (int axis = 0; axis < 2; ++axis) {
+    const int size = axis == 0 ? this->Gpu->Width : this->Gpu->Height;
+    const double scale = static_cast<double>(size) / this->Viewport[2 + axis];
+    const int low = static_cast<int>(std::floor((this->GhostRectangle[axis] - this->Viewport[axis]) * scale)) - reach;
+    const int high = static_cast<int>(std::ceil((this->GhostRectangle[2 + axis] - this->Viewport[axis]) * scale)) + reach;
+    scissor[axis] = std::max(0, low);
+    scissor[2 + axis] = std::max(0, std::min(size, high) - scissor[axis]);
+  }
+}
+
+int vtkMedialGhostPass::FilterRadius() const { return static_cast<int>(std::lround(this->BorderWidth * this->MapScale)); }
+
 bool vtkMedialGhostPass::RenderImportanceMap(const vtkRenderState* s, vtkOpenGLRenderWindow* window) {
   Resources& gpu = *this->Gpu;
   const int width = std::max(1, static_cast<int>(std::lround(this->Viewport[2] * this->MapScale)));
@@ -273,6 +307,7 @@ bool vtkMedialGhostPass::RenderImportanceMap(const vtkRenderState* s, vtkOpenGLR
   vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
   vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
 
   gpu.Framebuffer->SaveCurrentBindingsAndBuffers();
   gpu.Framebuffer->Bind();
@@ -282,7 +317,10 @@ bool vtkMedialGhostPass::RenderImportanceMap(const vtkRenderState* s, vtkOpenGLR
   const bool complete = gpu.Framebuffer->StartNonOrtho(width, height);
   if (complete) {
     state->vtkglViewport(0, 0, width, height);
-    state->vtkglScissor(0, 0, width, height);
+    int scissor[4];
+    this->MapScissor(scissor);
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    state->vtkglScissor(scissor[0], scissor[1], scissor[2], scissor[3]);
     state->vtkglClearColor(0, 0, 0, 0);
     state->vtkglDepthMask(GL_TRUE);
     state->vtkglClearDepth(1.0);
@@ -334,20 +372,12 @@ bool vtkMedialGhostPass::FilterImportanceMap(vtkOpenGLRenderWindow* window) {
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_BLEND);
 
-  // The border is given in viewport pixels; the map is MapScale of it. Only the map texels under the
-  // objects of interest's projected boxes are filtered (scissor); the rest is cleared to zero.
-  const int radius = static_cast<int>(std::lround(this->BorderWidth * this->MapScale));
+  // The border is given in viewport pixels; the map is MapScale of it. Only the texels under the
+  // objects of interest's projected boxes are filtered (MapScissor); no others are ever looked up.
+  const int radius = this->FilterRadius();
   int scissor[4];
-  for (int axis = 0; axis < 2; ++axis) {
-    const double scale = static_cast<double>(axis == 0 ? gpu.Width : gpu.Height) / this->Viewport[2 + axis];
-    const int low = static_cast<int>(std::floor((this->GhostRectangle[axis] - this->Viewport[axis]) * scale)) - radius - 2;
-    const int high = static_cast<int>(std::ceil((this->GhostRectangle[2 + axis] - this->Viewport[axis]) * scale)) + radius + 2;
-    scissor[axis] = std::max(0, low);
-    scissor[2 + axis] = std::max(0, std::min(axis == 0 ? gpu.Width : gpu.Height, high) - scissor[axis]);
-  }
-  vtkOpenGLState::ScopedglClearColor savedClearColor(state);
+  this->MapScissor(scissor);
   vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
-  state->vtkglClearColor(0, 0, 0, 0);
   const struct {
     vtkTextureObject* from;
     vtkTextureObject* to;
@@ -362,8 +392,6 @@ bool vtkMedialGhostPass::FilterImportanceMap(vtkOpenGLRenderWindow* window) {
     complete = gpu.Framebuffer->StartNonOrtho(gpu.Width, gpu.Height) && complete;
     if (complete) {
       state->vtkglViewport(0, 0, gpu.Width, gpu.Height);
-      state->vtkglDisable(GL_SCISSOR_TEST);
-      state->vtkglClear(GL_COLOR_BUFFER_BIT);
       state->vtkglEnable(GL_SCISSOR_TEST);
       state->vtkglScissor(scissor[0], scissor[1], scissor[2], scissor[3]);
       step.from->Activate();
@@ -394,11 +422,14 @@ bool vtkMedialGhostPass::PreReplaceShaderValues(std::string&, std::string&, std:
 }
 
 bool vtkMedialGhostPass::PostReplaceShaderValues(std::string&, std::string&, std::string& fragmentShader,
-                                                 vtkAbstractMapper*, vtkProp*) {
+                                                 vtkAbstractMapper*, vtkProp* prop) {
   if (fragmentShader.find(medial::ghost::kImplementationTag) == std::string::npos) return true;
   const bool withSilhouette = fragmentShader.find("normalVCVSOutput") != std::string::npos;
-  // VTK's template mentions gl_FragDepth in a comment; only an assignment means it is already written.
-  const bool writesDepth = fragmentShader.find("gl_FragDepth =") == std::string::npos &&
+  // Objects of interest write depth (gradual importance orders the map by it); context props only
+  // with LayeredGhosts: a shader that writes depth loses early depth testing. VTK's template mentions
+  // gl_FragDepth in a comment; only an assignment means it is already written.
+  const bool writesDepth = (this->LayeredGhosts || isInterest(prop)) &&
+                           fragmentShader.find("gl_FragDepth =") == std::string::npos &&
                            fragmentShader.find("gl_FragDepth=") == std::string::npos;
   vtkShaderProgram::Substitute(fragmentShader, medial::ghost::kImplementationTag,
                                medial::ghost::fragmentImplementation(withSilhouette, writesDepth));

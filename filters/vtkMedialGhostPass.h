@@ -18,8 +18,9 @@
  * ghosted with an opacity that grows with its importance (mix(GhostOpacity, 1, own / map importance)).
  *
  * Ghosted fragments of opaque props are blended in the opaque step over the objects of interest, which are
- * drawn first, most important first; they write the map's depth, not their own, so every layer between
- * the eye and the object of interest shows (no sorting among those layers, as in the paper). Translucent
+ * drawn first, most important first, so the objects always show; with LayeredGhosts they write the map's
+ * depth, not their own, so every layer between the eye and the object shows too (no sorting among those
+ * layers, as in the paper), at the price of early depth testing. Translucent
  * props keep going through the delegate's translucent step (Translucency: blended, dual depth peeling, or
  * order-independent), their alpha multiplied by the same ghost factor.
  *
@@ -32,8 +33,10 @@
 #include "MedialFiltersModule.h"
 #include "vtkOpenGLRenderPass.h"
 #include "vtkSmartPointer.h"
+#include "vtkTimeStamp.h"
 
 #include <memory>
+#include <vector>
 
 class vtkInformationDoubleKey;
 class vtkProp;
@@ -89,6 +92,17 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
   vtkSetClampMacro(Translucency, int, Blended, OrderIndependent);
   vtkGetMacro(Translucency, int);
 
+  /// Whether every occluding layer in front of an object of interest shows (default off). On: a ghosted
+  /// fragment of an opaque prop writes the importance map's depth instead of its own, so layers behind
+  /// it but still in front of the object are drawn too (unsorted, as in the paper). That makes every
+  /// opaque prop's shader write gl_FragDepth, which turns off early depth testing: on this machine's
+  /// software OpenGL it costs about a fifth of a frame (medial_bench_ghost). Off: a ghosted fragment
+  /// keeps its own depth, so where two occluding layers overlap in front of the object, the one drawn
+  /// second shows only if it is the nearer; the object itself always shows (it is drawn first).
+  void SetLayeredGhosts(bool layered);
+  vtkGetMacro(LayeredGhosts, bool);
+  vtkBooleanMacro(LayeredGhosts, bool);
+
   /// The pass that renders the scene (default: a vtkRenderStepsPass built for Translucency).
   void SetDelegatePass(vtkRenderPass* pass);
   vtkRenderPass* GetDelegatePass();
@@ -111,6 +125,9 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
                                std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
                            vtkOpenGLVertexArrayObject* vao = nullptr) override;
+  /// Changes when a prop's shader must be rebuilt: LayeredGhosts, or the set of objects of interest
+  /// changed (their shaders write depth, context props' only with LayeredGhosts).
+  vtkMTimeType GetShaderStageMTime() override;
 
  protected:
   vtkMedialGhostPass();
@@ -123,6 +140,8 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
   vtkRenderPass* ActiveDelegate(int translucency);
   bool RenderImportanceMap(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   bool FilterImportanceMap(vtkOpenGLRenderWindow* window);
+  int FilterRadius() const;
+  void MapScissor(int scissor[4]) const;
 
   int Mode = Ghost;
   double GhostOpacity = 0.25;
@@ -131,6 +150,7 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
   double MapScale = 0.5;
   int BorderWidth = 2;
   int Translucency = Blended;
+  bool LayeredGhosts = false;
   int LastInterestCount = 0;
   int LastMapSize[2] = {0, 0};
 
@@ -143,4 +163,6 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
   int Phase = 0;  // 0 idle, 1 drawing the importance map, 2 drawing the scene
   int Viewport[4] = {0, 0, 0, 0};
   float GhostRectangle[4] = {0, 0, 0, 0};  // window pixels where the map can matter this frame
+  std::vector<vtkProp*> ShadedInterest;    // objects of interest when the shaders were last chosen
+  vtkTimeStamp ShaderStageTime;
 };

@@ -19,6 +19,7 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QAction>
 #include <QComboBox>
 #include <QDateTime>
 #include <QDockWidget>
@@ -235,6 +236,15 @@ void MainWindow::buildGhostToolBar() {
   ghostOpacity_->setMaximumWidth(160);
   ghostOpacity_->setToolTip("Opacity of an occluder in front of an object of interest (default 0.25)");
   bar->addWidget(ghostOpacity_);
+  QAction* layers = bar->addAction("Layers");
+  layers->setObjectName("ghostLayers");
+  layers->setCheckable(true);
+  layers->setToolTip("Show every occluding layer in front of an object of interest, not only the one drawn "
+                     "last (slower on software OpenGL)");
+  connect(layers, &QAction::toggled, this, [this](bool on) {
+    scene_->GetGhostPass()->SetLayeredGhosts(on);
+    render();
+  });
   connect(ghostMode_, &QComboBox::currentIndexChanged, this, &MainWindow::setGhostMode);
   connect(ghostOpacity_, &QSlider::valueChanged, this, [this](int v) { setGhostOpacity(v / 100.0); });
 }

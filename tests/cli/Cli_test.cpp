@@ -445,7 +445,9 @@ TEST(Cli, RenderGhostShowsTheSkeletonThroughItsMesh) {
   auto added = renderTo("added.png", "--ghost " + skeleton);  // a --ghost file not listed is added
   auto cutaway = renderTo("cutaway.png", skeleton + " --ghost " + skeleton + " --cutaway");
   auto faint = renderTo("faint.png", skeleton + " --ghost " + skeleton + " --ghost-opacity 0.8");
-  ASSERT_TRUE(plain && ghost && added && cutaway && faint);
+  auto layered = renderTo("layered.png", skeleton + " --ghost " + skeleton + " --ghost-layers");
+  ASSERT_TRUE(plain && ghost && added && cutaway && faint && layered);
+  EXPECT_FALSE(compareImages(layered, plain).passed) << "--ghost-layers lost the ghost";
   EXPECT_FALSE(compareImages(ghost, plain).passed) << "the ghost changed nothing";
   EXPECT_TRUE(compareImages(added, ghost, 8, 0.002).passed) << "--ghost of an unlisted file differs";
   EXPECT_FALSE(compareImages(cutaway, ghost, 15, 0.002).passed) << "cutaway looks like ghost";
@@ -456,7 +458,7 @@ TEST(Cli, RenderGhostOptionErrors) {
   const std::string mesh = dataPath("meshes/torus.off");
   for (const char* bad : {"--ghost-importance 1", "--ghost x.vtp --ghost-importance 1,1", "--ghost x.vtp --ghost-importance 0",
                           "--ghost x.vtp --ghost-opacity 2", "--ghost x.vtp --ghost-conflict closest",
-                          "--ghost x.vtp --ghost-map-scale 0", "--ghost"}) {
+                          "--ghost x.vtp --ghost-map-scale 0", "--ghost", "--ghost-layers"}) {
     auto r = runCommand(medialCommand("render " + mesh + " -o out.png " + bad));
     EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.err;
   }

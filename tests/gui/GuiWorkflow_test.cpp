@@ -15,6 +15,7 @@
 #include "vtkMedialGhostPass.h"
 #include "vtkMedialScene.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QElapsedTimer>
@@ -182,6 +183,12 @@ TEST_F(GuiWorkflow, SkeletonGhostViewSqmAndRig) {
   window->setGhostMode(vtkMedialGhostPass::Ghost);
   EXPECT_GT(screenshot("torus-ghost"), 0.05);
   EXPECT_EQ(window->scene()->GetGhostPass()->GetLastInterestCount(), 1);
+  auto* layers = window->findChild<QAction*>("ghostLayers");
+  ASSERT_NE(layers, nullptr);
+  layers->setChecked(true);
+  EXPECT_TRUE(window->scene()->GetGhostPass()->GetLayeredGhosts());
+  EXPECT_GT(screenshot("torus-ghost-layers"), 0.05);
+  layers->setChecked(false);
   window->setGhostMode(vtkMedialGhostPass::Cutaway);
   EXPECT_GT(screenshot("torus-cutaway"), 0.05);
 

@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 namespace {
 
@@ -190,6 +191,57 @@ TEST(GhostView, GradualImportanceShowsBothNestedObjects) {
   EXPECT_GT(countHues(depth).red, 0.05);
   const auto comparison = compareWithBaseline(gradual, "ghost-gradual.png");
   EXPECT_TRUE(comparison.passed) << comparison.message;
+}
+
+TEST(GhostView, ShadersAreRebuiltWhenTheObjectsOfInterestOrLayersChange) {
+  MEDIAL_REQUIRE_DISPLAY();
+  // Objects of interest write depth in their shaders, context props do not (unless LayeredGhosts): the
+  // pass's shader-stage time must move when either changes, so that VTK's mappers rebuild them.
+  auto scene = vtkSmartPointer<vtkMedialScene>::New();
+  scene->AddData(box(4.0));
+  vtkProp3D* large = scene->AddData(sphere(1.4));
+  vtkProp3D* small = scene->AddData(sphere(0.7, 0.1, 0.1, 0.2));
+  scene->SetImportance(small, 1.0);
+  vtkMedialGhostPass* pass = scene->GetGhostPass();
+  ASSERT_NE(render(scene, "stage-1.png"), nullptr);
+  const vtkMTimeType first = pass->GetShaderStageMTime();
+  ASSERT_NE(render(scene, "stage-2.png"), nullptr);
+  EXPECT_EQ(pass->GetShaderStageMTime(), first);  // nothing changed: no rebuild
+  scene->SetImportance(large, 0.25);
+  auto late = render(scene, "stage-3.png");
+  ASSERT_NE(late, nullptr);
+  const vtkMTimeType second = pass->GetShaderStageMTime();
+  EXPECT_GT(second, first);
+  pass->SetLayeredGhosts(true);
+  EXPECT_GT(pass->GetShaderStageMTime(), second);
+  pass->SetLayeredGhosts(false);
+  // And the picture is the one of the scene built with its importances from the start.
+  const auto comparison = compareWithBaseline(late, "ghost-gradual.png");
+  EXPECT_TRUE(comparison.passed) << comparison.message;
+}
+
+TEST(GhostView, LayeredGhostsShowEveryOccludingLayer) {
+  MEDIAL_REQUIRE_DISPLAY();
+  // Two nested boxes (ivory, then red) in front of the sphere (blue): the outer one is drawn first.
+  // Without layers, its ghosted fragments keep their depth and hide the inner box's; with layers, both
+  // boxes tint the sphere.
+  auto centreOf = [](bool layered) {
+    auto scene = vtkSmartPointer<vtkMedialScene>::New();
+    scene->AddData(box(4.0));
+    scene->AddData(box(3.0));
+    scene->SetImportance(scene->AddData(sphere(1.0)), 1.0);
+    scene->GetGhostPass()->SetLayeredGhosts(layered);
+    auto image = render(scene, layered ? "layered.png" : "unlayered.png");
+    EXPECT_NE(image, nullptr);
+    const auto centre = meanColorAtCentre(image, 8);
+    EXPECT_GT(centre[2], centre[0] + 20);  // the sphere shows either way
+    return centre;
+  };
+  const auto single = centreOf(false), layered = centreOf(true);
+  std::printf("centre without layers %.0f %.0f %.0f, with %.0f %.0f %.0f\n", single[0], single[1], single[2],
+              layered[0], layered[1], layered[2]);
+  EXPECT_GT(single[2] - layered[2], 15.0);  // less of the blue sphere: two layers over it
+  EXPECT_GT(layered[0] - single[0], 5.0);   // the inner, red box among them
 }
 
 TEST(GhostView, SkeletonShowsThroughItsMesh) {
