@@ -1,5 +1,5 @@
 // `medial sqm SKELETON.vtp|.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME] [--capsule]
-//              [--triangle-fans] [--ring-vertices N] [--subdivide K] [--sharp-scale S]`
+//              [--triangle-fans] [--ring-vertices N] [--subdivide K] [--sharp-scale S] [--no-fold-repair]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "Progress.h"
@@ -21,7 +21,7 @@ namespace medial::cli {
 int runSqm(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args, {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale"},
-             {"--capsule", "--triangle-fans", "--quiet", "--timings"}});
+             {"--capsule", "--triangle-fans", "--no-fold-repair", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sqm needs exactly one SKELETON file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -53,6 +53,7 @@ int runSqm(const std::vector<std::string>& args) {
   }
   filter->SetCapsules(parsed.has("--capsule"));
   filter->SetPairTriangles(!parsed.has("--triangle-fans"));
+  filter->SetFoldRepair(!parsed.has("--no-fold-repair"));
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
@@ -67,6 +68,9 @@ int runSqm(const std::vector<std::string>& args) {
   if (filter->GetMergedNodes() > 0)
     std::fprintf(stderr, "medial sqm: note: %d node%s inside a neighbouring branch node's sphere merged into it\n",
                  filter->GetMergedNodes(), filter->GetMergedNodes() == 1 ? "" : "s");
+  if (filter->GetFoldRepairedVertices() > 0)
+    std::fprintf(stderr, "medial sqm: note: %d refined vert%s moved off the cones, where faces cut each other\n",
+                 filter->GetFoldRepairedVertices(), filter->GetFoldRepairedVertices() == 1 ? "ex" : "ices");
 
   timings.start("write");
   writePolyData(filter->GetOutput(), output);

@@ -78,7 +78,7 @@ const std::vector<Command>& commands() {
       {"sqm", "quad-dominant tube mesh of a skeleton with radii (SQM)",
        "usage: medial sqm SKELETON.vtp|SKELETON.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME]\n"
        "                  [--capsule] [--triangle-fans] [--ring-vertices N] [--subdivide K]\n"
-       "                  [--sharp-scale S] [--quiet] [--timings]\n\n"
+       "                  [--sharp-scale S] [--no-fold-repair] [--quiet] [--timings]\n\n"
        "Turns a skeleton with a Radius per node into a closed manifold mesh of quads (a triangle only where\n"
        "a leaf's or a cycle's ring is odd), by SQM with the extensions of the CESCG 2014 paper (re-rooting,\n"
        "linear skeletons, ellipsoid nodes from EllipsoidAxes, capsules, cycles). Every component is meshed.\n"
@@ -94,6 +94,9 @@ const std::vector<Command>& commands() {
        "  --sharp-scale S           with --subdivide: scale the cone radius near a sharp vertex (two faces\n"
        "                            at an acute angle) by a Bezier curve from S (0.05-1) there to 1 one\n"
        "                            radius away (the paper's radius scaling; off without this option)\n"
+       "  --no-fold-repair          with --subdivide: keep every refined vertex on its cone even where\n"
+       "                            faces then cut each other (by default their vertices move back towards\n"
+       "                            the plain Catmull-Clark surface until none do)\n"
        "  --quiet                   no progress line\n"
        "  --timings                 print stage times as JSON on stdout\n",
        runSqm},

@@ -24,6 +24,7 @@ void vtkMedialSQM::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "PairTriangles: " << this->PairTriangles << "\n";
   os << indent << "SubdivisionLevels: " << this->SubdivisionLevels << "\n";
   os << indent << "SharpScaling: " << this->SharpScaling << " (minimum " << this->SharpMinimumScale << ")\n";
+  os << indent << "FoldRepair: " << this->FoldRepair << "\n";
 }
 
 void vtkMedialSQM::SetSmoothing(const std::string& name) {
@@ -60,6 +61,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     return 0;
   }
   this->MergedNodes = 0;
+  this->FoldRepairedVertices = 0;
   medial::SqmParameters p;
   medial::parseLieSmoothing(this->Smoothing, p.smoothing);
   medial::parseRingPairing(this->Pairing, p.pairing);
@@ -68,6 +70,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   p.pairTriangles = this->PairTriangles;
   p.subdivisionLevels = this->SubdivisionLevels;
   p.sharpScaling.enabled = this->SharpScaling;
+  p.foldRepair = this->FoldRepair;
   p.sharpScaling.minimumScale = this->SharpMinimumScale;
   const medial::SqmResult result = medial::sqmMesh(skeleton, p, [this](double f) {
     this->UpdateProgress(f);
@@ -78,6 +81,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     return 0;
   }
   this->MergedNodes = result.mergedNodes;
+  this->FoldRepairedVertices = result.foldRepairedVertices;
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   for (const auto& v : result.mesh.vertices) points->InsertNextPoint(v.x(), v.y(), v.z());

@@ -57,10 +57,17 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkBooleanMacro(SharpScaling, bool);
   vtkSetClampMacro(SharpMinimumScale, double, 0.05, 1.0);
   vtkGetMacro(SharpMinimumScale, double);
+  /// With subdivision: where the cone projection makes faces cut each other, their vertices go back
+  /// towards their plain Catmull-Clark points until none do (default on; SqmRefinement.h).
+  vtkSetMacro(FoldRepair, bool);
+  vtkGetMacro(FoldRepair, bool);
+  vtkBooleanMacro(FoldRepair, bool);
 
   // After an update: how many nodes lay inside a neighbouring branch node's sphere and were merged into it
   // (the repair above).
   vtkGetMacro(MergedNodes, int);
+  // After an update with subdivision: refined vertices the fold repair moved off their cones.
+  vtkGetMacro(FoldRepairedVertices, int);
 
  protected:
   vtkMedialSQM() = default;
@@ -80,4 +87,6 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   bool SharpScaling = false;
   double SharpMinimumScale = 0.8;
   int MergedNodes = 0;
+  bool FoldRepair = true;
+  int FoldRepairedVertices = 0;
 };

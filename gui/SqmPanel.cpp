@@ -32,6 +32,9 @@ std::vector<Parameter> sqmParameters() {
                 "With subdivision: shrink the cone radius near sharp vertices by a Bézier curve (CESCG 2014, "
                 "Tessellation)"),
       P::real("SharpMinimumScale", "Sharp scale", 0.8, 0.05, 1.0, 2, "Radius factor at a sharp vertex"),
+      P::toggle("FoldRepair", "Repair folds", true,
+                "With subdivision: where the projection onto the cones makes faces cut each other, move their "
+                "vertices back towards the plain Catmull-Clark surface"),
   };
 }
 
@@ -73,6 +76,7 @@ vtkSmartPointer<vtkAlgorithm> SqmPanel::makeFilter(SceneObject* input, QString&)
   filter->SetPairTriangles(form()->isOn("PairTriangles"));
   filter->SetSubdivisionLevels(subdivision_->value());
   filter->SetSharpScaling(form()->isOn("SharpScaling"));
+  filter->SetFoldRepair(form()->isOn("FoldRepair"));
   filter->SetSharpMinimumScale(form()->value("SharpMinimumScale"));
   return filter;
 }
@@ -88,13 +92,16 @@ void SqmPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
   }
   if (SceneObject* result = objects()->add(name, mesh)) objects()->setOpacity(result, opacity);
   const int merged = static_cast<vtkMedialSQM*>(filter)->GetMergedNodes();
-  emit message(QString("SQM: %1 faces, %2 vertices, subdivision %3%4")
+  const int unfolded = static_cast<vtkMedialSQM*>(filter)->GetFoldRepairedVertices();
+  emit message(QString("SQM: %1 faces, %2 vertices, subdivision %3%4%5")
                    .arg(mesh->GetNumberOfPolys())
                    .arg(mesh->GetNumberOfPoints())
                    .arg(subdivision_->value())
                    .arg(merged > 0 ? QString("; %1 nodes inside a neighbouring branch node's sphere merged into it")
                                          .arg(merged)
-                                   : QString()));
+                                   : QString())
+                   .arg(unfolded > 0 ? QString("; %1 refined vertices moved off their cones to undo folds").arg(unfolded)
+                                     : QString()));
 }
 
 }  // namespace medial::gui

@@ -562,7 +562,7 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
       if (!prepared.pseudo[size_t(e[0])] && !prepared.pseudo[size_t(e[1])]) cones.edges.push_back(e);
     for (const auto& [a, b] : prepared.cycleCuts) cones.edges.push_back({prepared.origin[size_t(a)], prepared.origin[size_t(b)]});
     const auto clock = Clock::now();
-    refineSqmMesh(result.mesh, cones, p.subdivisionLevels, p.sharpScaling);
+    refineSqmMesh(result.mesh, cones, p.subdivisionLevels, p.sharpScaling, p.foldRepair, &result.foldRepairedVertices);
     for (int& node : result.mesh.vertexNode) node = prepared.origin[size_t(node)];
     result.subdivisionSeconds += secondsSince(clock);
   }

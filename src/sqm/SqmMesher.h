@@ -57,6 +57,7 @@ struct SqmParameters {
   bool pairTriangles = true;
   int subdivisionLevels = 0;   // stage 8: Catmull-Clark levels with cone projection (SqmRefinement)
   SharpScaling sharpScaling;   // stage 8: Bézier radius scaling near sharp vertices (SqmRefinement)
+  bool foldRepair = true;      // stage 8: refined vertices of faces that cut others back towards Catmull-Clark
 };
 
 struct SqmMesh {
@@ -72,6 +73,7 @@ struct SqmResult {
   int reorientedFaces = 0;  // faces turned over by the final orientation repair (-1: not orientable)
   int mergedNodes = 0;      // nodes inside a neighbouring branch node's sphere, merged into it (a repair)
   int pairedTriangles = 0;  // quads made of two fan or band triangles (SqmParameters::pairTriangles)
+  int foldRepairedVertices = 0;  // refined vertices moved off their cones by the fold repair
   double straighteningSeconds = 0, generationSeconds = 0, refinementSeconds = 0, joiningSeconds = 0,
          placementSeconds = 0, subdivisionSeconds = 0;
   std::string error;

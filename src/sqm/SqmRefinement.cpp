@@ -1,5 +1,7 @@
 #include "sqm/SqmRefinement.h"
 
+#include "mesh/SelfIntersections.h"
+
 #include <Eigen/LU>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
@@ -122,7 +124,49 @@ double sharpScaleFactor(double t, double s) {
   return s * u * u * u + 3 * s * t * u * u + 3 * t * t * u + t * t * t;
 }
 
-int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling) {
+namespace {
+
+// Fold repair (beyond the paper): the projection onto the cones can fold the refined surface where
+// cones of different edges crowd (a thin tube leaving a flat ellipsoid, a right-angle bend), while the
+// plain Catmull-Clark points of a base mesh that does not cut itself hardly ever do. Each vertex of a
+// face that cuts another goes back halfway from its projection towards its Catmull-Clark point, as often
+// as needed (at most kFoldRepairSteps times, then all the way); every other vertex stays on its cone.
+constexpr int kFoldRepairSteps = 6;
+
+int repairFolds(PolyMesh& poly, const std::vector<Eigen::Vector3d>& smooth, const std::vector<Eigen::Vector3d>& projected) {
+  std::vector<std::vector<int>> faces;
+  for (auto f : poly.faces()) {
+    faces.emplace_back();
+    for (auto v : poly.fv_range(f)) faces.back().push_back(v.idx());
+  }
+  std::vector<Eigen::Vector3d> points = projected;
+  std::vector<double> weight(points.size(), 1.0);  // 1: on the cone, 0: the Catmull-Clark point
+  int moved = 0;
+  for (int step = 0; step <= kFoldRepairSteps; ++step) {
+    const auto pairs = selfIntersectingFaces(points, faces);
+    if (pairs.empty()) break;
+    std::vector<bool> folded(points.size(), false);
+    for (const auto& [a, b] : pairs)
+      for (int f : {a, b})
+        for (int v : faces[size_t(f)]) folded[size_t(v)] = true;
+    for (size_t v = 0; v < points.size(); ++v) {
+      if (!folded[v]) continue;
+      moved += weight[v] == 1.0;
+      weight[v] = step < kFoldRepairSteps ? 0.5 * weight[v] : 0.0;
+      points[v] = smooth[v] + weight[v] * (projected[v] - smooth[v]);
+    }
+  }
+  for (auto v : poly.vertices()) {
+    const Eigen::Vector3d& p = points[size_t(v.idx())];
+    poly.set_point(v, PolyMesh::Point(p.x(), p.y(), p.z()));
+  }
+  return moved;
+}
+
+}  // namespace
+
+int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling, bool foldRepair,
+                  int* repairedVertices) {
   if (levels <= 0 || mesh.faces.empty()) return 0;
   PolyMesh poly;
   std::vector<PolyMesh::VertexHandle> handles;
@@ -138,14 +182,21 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
     catmullClark.attach(poly);
     catmullClark(1);
     catmullClark.detach();
+    std::vector<Eigen::Vector3d> smooth, projected;
     for (auto v : poly.vertices()) {
       const Eigen::Vector3d p = toEigen(poly.point(v));
-      Eigen::Vector3d q;
+      smooth.push_back(p);
+      Eigen::Vector3d q = p;
       const ConePoint cone = nearestCone(p, skeleton, q);
-      if (!cone.found) continue;
-      if (!sharp.empty())  // the paper's scaling, on the nearest cone
+      if (cone.found && !sharp.empty())  // the paper's scaling, on the nearest cone
         q = cone.axis + cone.radius * sharpScaleFactor(distanceToNearest(p, sharp) / cone.radius, scaling.minimumScale) * cone.radial;
+      if (!cone.found) q = p;
+      projected.push_back(q);
       poly.set_point(v, PolyMesh::Point(q.x(), q.y(), q.z()));
+    }
+    if (foldRepair) {
+      const int moved = repairFolds(poly, smooth, projected);
+      if (repairedVertices) *repairedVertices += moved;
     }
   }
   // Back to plain arrays; a vertex belongs to the node nearest to it.
