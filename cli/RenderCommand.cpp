@@ -1,7 +1,7 @@
 // `medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION] [--skeleton-scale S]
 //                [--mesh-opacity A] [--ghost INPUT]... [--cutaway] [--ghost-opacity A]
 //                [--ghost-importance I,...] [--ghost-conflict gradual|depth] [--ghost-map-scale S]
-//                [--ghost-layers]`
+//                [--ghost-layers] [--volume-rendering STYLE]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "PrivateDisplay.h"
@@ -11,6 +11,7 @@
 
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"
+#include "MedialVolumeRendering.h"
 #include "vtkMedialGhostPass.h"
 #include "vtkMedialScene.h"
 
@@ -77,7 +78,7 @@ GhostOptions parseGhostOptions(const ParsedArgs& parsed) {
 int runRender(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args, {{"-o", "--output", "--size", "--camera", "--skeleton-scale", "--mesh-opacity", "--ghost", "--ghost-opacity",
-              "--ghost-importance", "--ghost-conflict", "--ghost-map-scale"},
+              "--ghost-importance", "--ghost-conflict", "--ghost-map-scale", "--volume-rendering"},
              {"--quiet", "--timings", "--cutaway", "--ghost-layers"}});
   if (parsed.positional.empty()) throw UsageError("render needs at least one INPUT file");
   std::string output = parsed.value("-o", parsed.value("--output"));
@@ -93,12 +94,17 @@ int runRender(const std::vector<std::string>& args) {
   }
   const double meshOpacity = parseFraction(parsed, "--mesh-opacity", 1.0, 0, 1, "[0, 1]");
   const GhostOptions ghost = parseGhostOptions(parsed);
+  medial::VolumeStyle volumeStyle = medial::VolumeStyle::Slices;
+  if (parsed.has("--volume-rendering") && !medial::parseVolumeStyle(parsed.value("--volume-rendering"), volumeStyle))
+    throw UsageError("--volume-rendering must be slices, ct-bone, ct-soft-tissue or full-range, got '" +
+                     parsed.value("--volume-rendering") + "'");
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
   auto scene = vtkSmartPointer<vtkMedialScene>::New();
   scene->SetSkeletonRadiusScale(skeletonScale);
   scene->SetMeshOpacity(meshOpacity);
+  scene->SetVolumeStyle(static_cast<int>(volumeStyle));
   std::map<std::string, vtkProp3D*> propOfFile;
   auto addFile = [&](const std::string& input) {
     timings.start("read");

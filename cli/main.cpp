@@ -126,7 +126,7 @@ const std::vector<Command>& commands() {
        "                     [--skeleton-scale S] [--mesh-opacity A]\n"
        "                     [--ghost INPUT]... [--cutaway] [--ghost-opacity A] [--ghost-importance I,...]\n"
        "                     [--ghost-conflict gradual|depth] [--ghost-map-scale S] [--ghost-layers]\n"
-       "                     [--quiet] [--timings]\n"
+       "                     [--volume-rendering STYLE] [--quiet] [--timings]\n"
        "\n"
        "Renders every INPUT (meshes: .vtp .vtk .vtu .obj .ply .stl .off; skeletons: .vtp .swc, drawn as\n"
        "tubes from their Radius; volumes: .nii .nii.gz .mha .mhd .nrrd .inr .inr.gz .vti .inv3 or a DICOM\n"
@@ -147,6 +147,9 @@ const std::vector<Command>& commands() {
        "  --ghost-map-scale S      importance-map resolution as a fraction of the image's (default 0.5)\n"
        "  --ghost-layers           every occluding layer in front of an object of interest shows, not\n"
        "                           only the one drawn last (slower: about 0.2 of a frame in software GL)\n"
+       "  --volume-rendering STYLE volumes as a ray-cast rendering instead of three slices: ct-bone,\n"
+       "                           ct-soft-tissue or full-range (transfer-function presets); ghosted like\n"
+       "                           any occluder in front of --ghost objects\n"
        "  --quiet                  no progress line\n"
        "  --timings                print stage times as JSON on stdout\n"
        "Without an X display, a private Xvfb is started (package xvfb).\n",

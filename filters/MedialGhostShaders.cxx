@@ -68,6 +68,56 @@ std::string fragmentImplementation(bool withSilhouette, bool writesDepth) {
   return code;
 }
 
+namespace {
+
+// Where VTK 9.1's raycasterfs.glsl, expanded for composite blending, starts marching and composites a
+// sample (vtkVolumeShaderComposer.h).
+const char* const kRayStart = "g_currentT = 0.0;";
+const char* const kSampleComposite = "g_srcColor.rgb *= g_srcColor.a;";
+
+const char* const kVolumeStart = R"(g_currentT = 0.0;
+  // Medial ghost view: the importance map at this pixel gives how much, and up to which step of the ray.
+  // Over the object of interest (full coverage) the whole ray: it ends at the object, or at an opaque
+  // prop in front of it (the depth buffer). In the feathered border, up to the map's depth (the nearest
+  // object depth around), carried back along the ray like VTK's depth-buffer termination.
+  if (medialGhostPhase == 2 && all(greaterThanEqual(gl_FragCoord.xy, medialGhostRect.xy)) &&
+      all(lessThanEqual(gl_FragCoord.xy, medialGhostRect.zw)))
+  {
+    vec4 medialMap = texture(medialGhostMap, (gl_FragCoord.xy - medialGhostViewport.xy) / medialGhostViewport.zw);
+    if (medialMap.b > 0.0 && medialMap.r > medialGhostImportance)
+    {
+      medialGhostCap = mix(1.0, mix(medialGhostOpacity, 1.0, medialGhostImportance / medialMap.r),
+                           clamp(medialMap.b, 0.0, 1.0));
+      vec4 medialEnd = WindowToNDC(gl_FragCoord.x, gl_FragCoord.y, medialMap.g);
+      medialEnd = ip_inverseTextureDataAdjusted * in_inverseVolumeMatrix[0] * in_inverseModelViewMatrix *
+                  in_inverseProjectionMatrix * medialEnd;
+      medialGhostSteps = medialMap.b >= 1.0 ? g_terminatePointMax + 1.0
+                                            : length(medialEnd.xyz / medialEnd.w - g_dataPos.xyz) / length(g_dirStep);
+    }
+  }
+)";
+
+// In front of the object, a sample adds only what keeps the ray's opacity within the cap.
+const char* const kVolumeSample = R"(if (g_currentT < medialGhostSteps)
+          g_srcColor.a = min(g_srcColor.a, max(0.0, (medialGhostCap - g_fragColor.a) / max(1.0 - g_fragColor.a, 1e-6)));
+        g_srcColor.rgb *= g_srcColor.a;)";
+
+}  // namespace
+
+bool ghostVolumeShader(std::string& fragmentShader) {
+  if (fragmentShader.find("castRay(") == std::string::npos ||
+      fragmentShader.find("//VTK::Output::Dec") == std::string::npos ||
+      fragmentShader.find(kRayStart) == std::string::npos || fragmentShader.find(kSampleComposite) == std::string::npos)
+    return false;
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
+                               std::string("//VTK::Output::Dec\n") + kFragmentDeclarations +
+                                   "float medialGhostCap = 1.0;     // the ray's opacity in front of the object\n"
+                                   "float medialGhostSteps = -1.0;  // up to this step\n");
+  vtkShaderProgram::Substitute(fragmentShader, kRayStart, kVolumeStart);
+  vtkShaderProgram::Substitute(fragmentShader, kSampleComposite, kVolumeSample);
+  return true;
+}
+
 std::string mapFilterFragmentShader() {
   std::string source = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
   vtkShaderProgram::Substitute(source, "//VTK::FSQ::Decl",

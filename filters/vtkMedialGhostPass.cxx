@@ -423,6 +423,7 @@ bool vtkMedialGhostPass::PreReplaceShaderValues(std::string&, std::string&, std:
 
 bool vtkMedialGhostPass::PostReplaceShaderValues(std::string&, std::string&, std::string& fragmentShader,
                                                  vtkAbstractMapper*, vtkProp* prop) {
+  if (medial::ghost::ghostVolumeShader(fragmentShader)) return true;  // a CT volume as context
   if (fragmentShader.find(medial::ghost::kImplementationTag) == std::string::npos) return true;
   const bool withSilhouette = fragmentShader.find("normalVCVSOutput") != std::string::npos;
   // Objects of interest write depth (gradual importance orders the map by it); context props only

@@ -24,9 +24,13 @@
  * props keep going through the delegate's translucent step (Translucency: blended, dual depth peeling, or
  * order-independent), their alpha multiplied by the same ghost factor.
  *
+ * A volume rendered by VTK's GPU ray caster (composite blending; vtkMedialScene's VolumeStyle, the GUI's
+ * volume rendering) is context too: over an object of interest the samples of each ray in front of it
+ * may together make it only GhostOpacity opaque (0 in Cutaway mode), feathered like a fragment.
+ *
  * With Mode Off, no object of interest, a zero-size viewport, or during hardware selection (picking) the
- * pass renders the scene exactly like its delegate. Objects of interest must be vtkActors (assemblies and
- * volumes render as context); a CT volume is not ghosted.
+ * pass renders the scene exactly like its delegate. Objects of interest must be vtkActors (assemblies,
+ * volume slices and ray-cast volumes render as context).
  */
 #pragma once
 

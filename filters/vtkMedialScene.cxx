@@ -1,5 +1,7 @@
 #include "vtkMedialScene.h"
 
+#include "MedialVolumeRendering.h"
+
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"
 #include "MedialSkeletonData.h"
@@ -9,6 +11,7 @@
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
 #include <vtkAssembly.h>
+#include <vtkVolume.h>
 #include <vtkCamera.h>
 #include <vtkCellData.h>
 #include <vtkCleanPolyData.h>
@@ -72,6 +75,7 @@ void vtkMedialScene::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SkeletonRadiusScale: " << this->SkeletonRadiusScale << "\n";
   os << indent << "MeshOpacity: " << this->MeshOpacity << "\n";
+  os << indent << "VolumeStyle: " << medial::volumeStyleName(static_cast<medial::VolumeStyle>(this->VolumeStyle)) << "\n";
   os << indent << "GhostPass: " << (this->GhostPass ? "installed" : "(none)") << "\n";
 }
 
@@ -202,6 +206,11 @@ vtkProp3D* vtkMedialScene::AddSkeleton(vtkPolyData* skeleton, const double rgb[3
 }
 
 vtkProp3D* vtkMedialScene::AddVolume(vtkImageData* image) {
+  if (this->VolumeStyle != 0) {
+    vtkSmartPointer<vtkVolume> volume = medial::makeVolumeRendering(image, static_cast<medial::VolumeStyle>(this->VolumeStyle));
+    this->Renderer->AddVolume(volume);
+    return volume;
+  }
   // Window from the 1st to the 99th percentile would be nicer; the full range shows every structure.
   double range[2];
   image->GetPointData()->GetScalars()->GetRange(range, 0);

@@ -41,6 +41,13 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   vtkSetMacro(SkeletonRadiusScale, double);
   vtkGetMacro(SkeletonRadiusScale, double);
 
+  /// How volumes added after this call are drawn: 0 three orthogonal slices with an outline (default),
+  /// else a ray-cast volume rendering with a preset: 1 CT bone, 2 CT soft tissue and skin, 3 the image's
+  /// full range (MedialVolumeRendering). A volume rendering is context to the ghost pass: it is ghosted
+  /// or cut away in front of objects of interest like any occluder.
+  vtkSetClampMacro(VolumeStyle, int, 0, 3);
+  vtkGetMacro(VolumeStyle, int);
+
   /// Opacity of meshes added after this call (default 1). Below 1 a mesh shows what lies inside it
   /// (a skeleton, a centerline); translucency is sorted by depth peeling.
   vtkSetClampMacro(MeshOpacity, double, 0.0, 1.0);
@@ -90,5 +97,6 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   int ColorIndex = 0;
   double SkeletonRadiusScale = 1.0;
   double MeshOpacity = 1.0;
+  int VolumeStyle = 0;
   void* DisplayId = nullptr;
 };

@@ -1,5 +1,4 @@
-// VolumeRendering: a ray-cast 3-D rendering of a volume (vtkSmartVolumeMapper: GPU ray casting, which
-// Mesa's llvmpipe also runs) with transfer-function presets for CT and for any other scalar volume.
+// VolumeRendering: the GUI's names for the ray-cast volume presets of filters/MedialVolumeRendering.
 #pragma once
 
 #include <QStringList>

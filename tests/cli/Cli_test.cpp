@@ -454,11 +454,33 @@ TEST(Cli, RenderGhostShowsTheSkeletonThroughItsMesh) {
   EXPECT_FALSE(compareImages(faint, ghost, 20, 0.002).passed) << "--ghost-opacity changed nothing";
 }
 
+TEST(Cli, RenderGhostsAVolumeRendering) {
+  MEDIAL_REQUIRE_DISPLAY();
+  // The helix phantom drawn by ray casting (full-range preset) hides its axis; the ghost shows it.
+  const std::string dir = scratchDir("cli-ghost-volume");
+  const std::string volume = dataPath("volumes/tubes/helix.nii.gz"), axis = dataPath("volumes/tubes/helix-axis.vtp");
+  auto renderTo = [&](const std::string& name, const std::string& options) {
+    const std::string png = dir + "/" + name;
+    auto r = runCommand(medialCommand("render " + volume + " " + axis + " --volume-rendering full-range " + options +
+                                      " -o " + png + " --size 200x150 --quiet"));
+    EXPECT_EQ(r.exitCode, 0) << options << ": " << r.err;
+    vtkSmartPointer<vtkImageData> image;
+    image.TakeReference(loadPng(png));
+    return image;
+  };
+  auto plain = renderTo("plain.png", ""), ghost = renderTo("ghost.png", "--ghost " + axis);
+  auto slices = renderTo("slices.png", "--volume-rendering slices");
+  ASSERT_TRUE(plain && ghost && slices);
+  EXPECT_FALSE(compareImages(ghost, plain, 15, 0.002).passed) << "the ghost changed nothing";
+  EXPECT_FALSE(compareImages(slices, plain, 15, 0.002).passed) << "slices look like the volume rendering";
+}
+
 TEST(Cli, RenderGhostOptionErrors) {
   const std::string mesh = dataPath("meshes/torus.off");
   for (const char* bad : {"--ghost-importance 1", "--ghost x.vtp --ghost-importance 1,1", "--ghost x.vtp --ghost-importance 0",
                           "--ghost x.vtp --ghost-opacity 2", "--ghost x.vtp --ghost-conflict closest",
-                          "--ghost x.vtp --ghost-map-scale 0", "--ghost", "--ghost-layers"}) {
+                          "--ghost x.vtp --ghost-map-scale 0", "--ghost", "--ghost-layers",
+                          "--volume-rendering mri"}) {
     auto r = runCommand(medialCommand("render " + mesh + " -o out.png " + bad));
     EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.err;
   }

@@ -15,8 +15,10 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProp3D.h>
+#include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkRTAnalyticSource.h>
 #include <vtkSphereSource.h>
 
 #include <array>
@@ -266,6 +268,39 @@ TEST(GhostView, SkeletonShowsThroughItsMesh) {
   EXPECT_GT(countHues(ghosted).red, 0.02);
   const auto comparison = compareWithBaseline(ghosted, "ghost-torus-skeleton.png");
   EXPECT_TRUE(comparison.passed) << comparison.message;
+}
+
+TEST(GhostView, AVolumeRenderingIsGhostedAndCutAwayLikeAnOccluder) {
+  MEDIAL_REQUIRE_DISPLAY();
+  // A ray-cast volume (grey to ivory, VTK's analytic wavelet over 81^3 voxels, full-range preset) around
+  // a red sphere of interest: hidden without the pass, tinted through the ghost, clear in the cutaway.
+  auto wavelet = vtkSmartPointer<vtkRTAnalyticSource>::New();
+  wavelet->SetWholeExtent(-40, 40, -40, 40, -40, 40);
+  wavelet->Update();
+  auto centreOf = [&](int mode, const std::string& name) {
+    auto scene = vtkSmartPointer<vtkMedialScene>::New();
+    scene->SetVolumeStyle(3);
+    EXPECT_NE(scene->AddData(wavelet->GetOutput()), nullptr);
+    vtkProp3D* ball = scene->AddData(sphere(12.0));
+    vtkActor::SafeDownCast(ball)->GetProperty()->SetColor(1.0, 0.1, 0.1);
+    scene->SetImportance(ball, 1.0);
+    scene->GetGhostPass()->SetMode(mode);
+    auto image = render(scene, name);
+    EXPECT_NE(image, nullptr);
+    if (mode == vtkMedialGhostPass::Cutaway) {
+      const auto comparison = compareWithBaseline(image, "ghost-volume-cutaway.png");
+      EXPECT_TRUE(comparison.passed) << comparison.message;
+    }
+    const auto c = meanColorAtCentre(image, 6);
+    return c[0] - c[2];  // the sphere: red far above blue; the volume: about equal
+  };
+  const double off = centreOf(vtkMedialGhostPass::Off, "volume-off.png");
+  const double ghost = centreOf(vtkMedialGhostPass::Ghost, "volume-ghost.png");
+  const double cutaway = centreOf(vtkMedialGhostPass::Cutaway, "volume-cutaway.png");
+  std::printf("red - blue at the centre: off %.0f, ghost %.0f, cutaway %.0f\n", off, ghost, cutaway);
+  EXPECT_LT(off, 30.0);
+  EXPECT_GT(ghost, off + 60.0);
+  EXPECT_GT(cutaway, ghost + 20.0);
 }
 
 TEST(GhostView, NoInterestObjectRendersPlainlyWithoutError) {
