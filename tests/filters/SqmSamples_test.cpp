@@ -12,6 +12,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <Eigen/Dense>
+
+#include <vtkCell.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkIdList.h>
@@ -25,6 +28,7 @@
 #include <cstdio>
 #include <set>
 #include <utility>
+#include <vector>
 
 namespace {
 
@@ -111,6 +115,42 @@ TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {
     }
   }
   EXPECT_GT(volume, 0);
+
+  // Before refinement every vertex lies on its node's sphere (ellipsoid with EllipsoidAxes: |A^-1 (v - c)|
+  // = 1), but the leaf apexes at their nodes' centres. A branch node that swallowed a neighbour keeps the
+  // larger of the two radii (SqmMesher), so a neighbour's radius also counts.
+  vtkPolyData* skeleton = vtkPolyData::SafeDownCast(reader->GetOutput());
+  vtkDataArray* radius = skeleton->GetPointData()->GetArray("Radius");
+  vtkDataArray* axes = skeleton->GetPointData()->GetArray("EllipsoidAxes");
+  std::vector<std::vector<double>> radii(size_t(skeleton->GetNumberOfPoints()));
+  for (vtkIdType k = 0; k < skeleton->GetNumberOfPoints(); ++k) radii[size_t(k)].push_back(radius->GetComponent(k, 0));
+  for (vtkIdType c = 0; c < skeleton->GetNumberOfCells(); ++c) {
+    vtkIdList* ids = skeleton->GetCell(c)->GetPointIds();
+    for (vtkIdType k = 0; k + 1 < ids->GetNumberOfIds(); ++k) {
+      radii[size_t(ids->GetId(k))].push_back(radius->GetComponent(ids->GetId(k + 1), 0));
+      radii[size_t(ids->GetId(k + 1))].push_back(radius->GetComponent(ids->GetId(k), 0));
+    }
+  }
+  int offSphere = 0;
+  for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v) {
+    const vtkIdType node = static_cast<vtkIdType>(owner->GetComponent(v, 0));
+    double p[3], c[3];
+    mesh->GetPoint(v, p);
+    skeleton->GetPoint(node, c);
+    Eigen::Vector3d offset(p[0] - c[0], p[1] - c[1], p[2] - c[2]);
+    if (offset.norm() < 1e-9) continue;  // a leaf apex
+    bool onSphere = false;
+    if (axes) {
+      Eigen::Matrix3d a;
+      for (int r = 0; r < 3; ++r)
+        for (int k = 0; k < 3; ++k) a(r, k) = axes->GetComponent(node, 3 * r + k);
+      onSphere = std::abs((a.inverse() * offset).norm() - 1.0) < 1e-6;
+    } else {
+      for (double r : radii[size_t(node)]) onSphere |= std::abs(offset.norm() / r - 1.0) < 1e-6;
+    }
+    offSphere += !onSphere;
+  }
+  EXPECT_EQ(offSphere, 0) << "vertices off their node's sphere";
 
   const size_t pairs = selfIntersectingPairs(mesh);
   EXPECT_LE(int(pairs), sample.maxIntersectingPairs);
