@@ -131,7 +131,9 @@ def write_hand_swc(path):
     next_id = 3
     bases = [(-1.6, 1.4, 0.6), (-1.0, 3.1, 0.0), (-0.3, 3.4, 0.0), (0.4, 3.3, 0.0), (1.1, 2.9, 0.0)]
     lengths = [(1.1, 0.9, 0.7), (1.4, 0.9, 0.7), (1.5, 1.0, 0.8), (1.4, 0.9, 0.7), (1.1, 0.7, 0.6)]
-    radii = [0.42, 0.36, 0.38, 0.36, 0.30]
+    # Neighbouring finger bases 0.71-0.81 apart: their radii sum to less, so their tubes do not overlap
+    # (overlapping tubes of different branches make any tube mesh cut itself).
+    radii = [0.42, 0.33, 0.34, 0.33, 0.30]
     for finger, ((bx, by, bz), segs, r) in enumerate(zip(bases, lengths, radii)):
         parent = 2
         x, y, z = bx, by, bz
