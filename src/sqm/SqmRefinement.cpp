@@ -186,11 +186,12 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
     for (auto v : poly.vertices()) {
       const Eigen::Vector3d p = toEigen(poly.point(v));
       smooth.push_back(p);
-      Eigen::Vector3d q = p;
+      Eigen::Vector3d q;
       const ConePoint cone = nearestCone(p, skeleton, q);
-      if (cone.found && !sharp.empty())  // the paper's scaling, on the nearest cone
+      if (!cone.found)
+        q = p;
+      else if (!sharp.empty())  // the paper's scaling, on the nearest cone
         q = cone.axis + cone.radius * sharpScaleFactor(distanceToNearest(p, sharp) / cone.radius, scaling.minimumScale) * cone.radial;
-      if (!cone.found) q = p;
       projected.push_back(q);
       poly.set_point(v, PolyMesh::Point(q.x(), q.y(), q.z()));
     }
