@@ -220,9 +220,9 @@ void vtkMedialGhostPass::Render(const vtkRenderState* s) {
   std::vector<vtkProp*> props(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
   std::stable_sort(props.begin(), props.end(),
                    [](vtkProp* a, vtkProp* b) { return GetImportance(a) > GetImportance(b); });
-  const int interestCount = static_cast<int>(std::count_if(props.begin(), props.end(), isInterest));
   std::vector<vtkProp*> interest;
   std::copy_if(props.begin(), props.end(), std::back_inserter(interest), isInterest);
+  const int interestCount = static_cast<int>(interest.size());
   std::sort(interest.begin(), interest.end());
   if (interest != this->ShadedInterest) {  // props whose shaders write depth change: rebuild them
     this->ShadedInterest = interest;
