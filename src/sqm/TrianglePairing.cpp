@@ -7,8 +7,6 @@
 #include <cmath>
 #include <map>
 #include <utility>
-#include <cstdio>
-#include <cstdlib>
 
 namespace medial {
 
