@@ -14,8 +14,9 @@ extern const char* const kFragmentDeclarations;
 extern const char* const kImplementationTag;
 
 // The per-fragment code. `withSilhouette`: the shader has a view-space normal (normalVCVSOutput);
-// `writesDepth`: the shader does not already write gl_FragDepth, so this code may.
-std::string fragmentImplementation(bool withSilhouette, bool writesDepth);
+// `writesDepth`: the shader does not already write gl_FragDepth, so this code may; `interest`: the prop
+// is an object of interest, also drawn into the importance map.
+std::string fragmentImplementation(bool withSilhouette, bool writesDepth, bool interest);
 
 // VTK's GPU ray caster (vtkOpenGLGPUVolumeRayCastMapper, composite blending) as context: where the map
 // covers a pixel, the samples of the ray in front of the object of interest may together make it only as

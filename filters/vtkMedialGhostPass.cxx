@@ -433,7 +433,7 @@ bool vtkMedialGhostPass::PostReplaceShaderValues(std::string&, std::string&, std
                            fragmentShader.find("gl_FragDepth =") == std::string::npos &&
                            fragmentShader.find("gl_FragDepth=") == std::string::npos;
   vtkShaderProgram::Substitute(fragmentShader, medial::ghost::kImplementationTag,
-                               medial::ghost::fragmentImplementation(withSilhouette, writesDepth));
+                               medial::ghost::fragmentImplementation(withSilhouette, writesDepth, isInterest(prop)));
   return true;
 }
 
