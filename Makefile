@@ -22,9 +22,9 @@ samples:
 demo: build
 	./scripts/demo
 
-# Rendering and GUI tests need an X server: xvfb-run gives them a private one.
+# Rendering and GUI tests need an X server: scripts/run-tests gives them a private one (xvfb-run).
 test: build samples
-	xvfb-run -a -s "-screen 0 1920x1200x24" ctest --preset $(PRESET) -j2
+	./scripts/run-tests $(PRESET)
 
 clean:
 	rm -rf build build-debug out

@@ -8,6 +8,7 @@
 // With no mesh: the CGAL samples under data/external (scripts/fetch-samples) and armadillo after one Loop
 // subdivision (~104k vertices). Each run is a child process (fork), so that its peak resident memory
 // (wait4's ru_maxrss) is its own.
+#include "common/Stopwatch.h"
 #include "contraction/MeshContraction.h"
 #include "contraction/SkeletonByContraction.h"
 
@@ -23,7 +24,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -87,10 +87,6 @@ Measured measure(int repeat, const std::function<RunResult()>& work) {
   return m;
 }
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 medial::TriangleMesh toTriangleMesh(const SurfaceMesh& sm) {
   medial::TriangleMesh mesh;
   mesh.vertices.resize(Eigen::Index(sm.number_of_vertices()), 3);
@@ -112,10 +108,10 @@ medial::TriangleMesh toTriangleMesh(const SurfaceMesh& sm) {
 RunResult runMedial(const medial::TriangleMesh& mesh, int contractionVertices) {
   medial::SkeletonByContractionParameters p;
   p.contractionVertices = contractionVertices;
-  const auto start = std::chrono::steady_clock::now();
+  const medial::Stopwatch start;
   const auto r = medial::skeletonByContraction(mesh, p);
   RunResult out;
-  out.seconds = secondsSince(start);
+  out.seconds = start.seconds();
   out.iterations = r.contractionIterations;
   out.factorizationSeconds = r.factorizationSeconds;
   out.nodes = r.skeleton.nodeCount();
@@ -125,7 +121,7 @@ RunResult runMedial(const medial::TriangleMesh& mesh, int contractionVertices) {
 
 // CGAL's contract_until_convergence, spelled out to count the iterations (same loop, same stop test).
 RunResult runCgal(const SurfaceMesh& input) {
-  const auto start = std::chrono::steady_clock::now();
+  const medial::Stopwatch start;
   Skeletonization mcs(input);
   const double originalArea = CGAL::Polygon_mesh_processing::area(input);
   double lastArea = 0;
@@ -140,7 +136,7 @@ RunResult runCgal(const SurfaceMesh& input) {
   }
   Skeletonization::Skeleton skeleton;
   mcs.convert_to_skeleton(skeleton);
-  out.seconds = secondsSince(start);
+  out.seconds = start.seconds();
   out.nodes = int(boost::num_vertices(skeleton));
   out.ok = true;
   return out;
@@ -149,10 +145,10 @@ RunResult runCgal(const SurfaceMesh& input) {
 RunResult runContractionOnly(const medial::TriangleMesh& mesh, medial::SparseSolverKind kind) {
   medial::ContractionParameters p;
   p.solver = kind;
-  const auto start = std::chrono::steady_clock::now();
+  const medial::Stopwatch start;
   const auto r = medial::contractMesh(mesh, p);
   RunResult out;
-  out.seconds = secondsSince(start);
+  out.seconds = start.seconds();
   out.iterations = r.iterations;
   out.factorizationSeconds = r.analyzeSeconds + r.factorizeSeconds;
   out.ok = r.ok();

@@ -11,6 +11,7 @@
 //   layered     the ghost pass at MapScale 0.5 with LayeredGhosts (every occluder's shader writes depth)
 // Prints medians and the ratios ghost / plain (paper: <= 2, goal: <= 1.3) and ghost / peeled.
 //   medial_bench_ghost [--frames N] [--size WxH] [--triangles T] [MESH]   (default: armadillo, else torus)
+#include "common/Stopwatch.h"
 #include "vtkMedialContractionSkeleton.h"
 #include "vtkMedialGhostPass.h"
 #include "vtkMedialReader.h"
@@ -27,7 +28,6 @@
 #include <vtkTriangleFilter.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -173,9 +173,9 @@ int main(int argc, char** argv) {
   for (int i = 0; i < o.frames; ++i)
     for (auto& setup : setups) {
       setup->scene->GetRenderer()->GetActiveCamera()->Azimuth(2.0);
-      const auto start = std::chrono::steady_clock::now();
+      const medial::Stopwatch stopwatch;
       setup->frame();
-      setup->times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      setup->times.push_back(stopwatch.seconds());
     }
   const double plain = setups[0]->median(), peeled = setups[1]->median();
   std::printf("%-14s %10s %14s %15s\n", "configuration", "median ms", "ratio / plain", "ratio / peeled");

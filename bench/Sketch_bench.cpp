@@ -1,4 +1,4 @@
-// Sketch skeletonization against CGAL's straight skeleton (GUIDE §5, issue 7): per part of each sketch,
+// Sketch skeletonization against CGAL's straight skeleton (docs/ARCHITECTURE.md §8, issue 7): per part of each sketch,
 // the median time of Medial's chain of stages 1-3 and 6 (stroke preparation, straight skeleton, BoundedDP,
 // refinement; no inflation) beside CGAL's interior straight skeleton alone on the same polygon: the stroke
 // as drawn (when it is simple), the stroke resampled (what a user would feed CGAL to avoid jitter) and the

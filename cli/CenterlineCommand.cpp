@@ -2,6 +2,7 @@
 //  [--profile PROFILE.csv] [--terrain TERRAIN.png] [--section-spacing K] [--section-rays N]`
 #include "Commands.h"
 #include "CommandLine.h"
+#include "FilterOptions.h"
 #include "Progress.h"
 #include "ReadInput.h"
 #include "RunFilter.h"
@@ -48,39 +49,22 @@ int runCenterline(const std::vector<std::string>& args) {
     if (!(low <= high)) throw UsageError("--threshold expects LO <= HI");
     filter->SetThreshold(low, high);
   }
-  if (parsed.has("--keep-border-parts")) filter->DropBorderPartsOff();
-  filter->SetFillHoles(parsed.has("--fill-holes"));
+  if (parsed.has("--keep-border-parts")) filter->SetBorderParts(vtkMedialTskCenterline::BORDER_PARTS_KEEP);
+  if (parsed.has("--fill-holes")) filter->FillHolesOn();
   if (parsed.has("--seed")) {
     const auto seed = parseNumbers(parsed.value("--seed"), 3, "--seed");
     filter->SetSeed(seed[0], seed[1], seed[2]);
   }
-  if (parsed.has("--antecedent-width")) {
-    const double width = parseNumbers(parsed.value("--antecedent-width"), 1, "--antecedent-width")[0];
-    if (!(width > 0)) throw UsageError("--antecedent-width must be positive");
-    filter->SetAntecedentWidth(width);
-  }
-  filter->SetDetectBranches(parsed.has("--branches"));
-  if (parsed.has("--centering")) {
-    const double passes = parseNumbers(parsed.value("--centering"), 1, "--centering")[0];
-    if (!(passes >= 0 && passes <= 20 && passes == double(int(passes))))
-      throw UsageError("--centering must be a whole number in 0..20");
-    filter->SetCenteringIterations(int(passes));
-  }
+  MEDIAL_OPTION(parsed, "--antecedent-width", filter, AntecedentWidth);
+  if (parsed.has("--branches")) filter->DetectBranchesOn();
+  MEDIAL_OPTION(parsed, "--centering", filter, CenteringIterations);
   const std::string profile = parsed.value("--profile"), terrain = parsed.value("--terrain");
   if (parsed.has("--profile") && profile.empty()) throw UsageError("--profile needs a file name");
   if (parsed.has("--terrain") && terrain.empty()) throw UsageError("--terrain needs a file name");
   if (!terrain.empty() && fileExtension(terrain) != ".png") throw UsageError("--terrain must end in .png: " + terrain);
-  filter->SetComputeSections(!profile.empty() || !terrain.empty());
-  if (parsed.has("--section-spacing")) {
-    const double k = parseNumbers(parsed.value("--section-spacing"), 1, "--section-spacing")[0];
-    if (!(k > 0)) throw UsageError("--section-spacing must be positive (mm)");
-    filter->SetSectionSpacing(k);
-  }
-  if (parsed.has("--section-rays")) {
-    const double n = parseNumbers(parsed.value("--section-rays"), 1, "--section-rays")[0];
-    if (!(n >= 4 && n <= 3600 && n == double(int(n)))) throw UsageError("--section-rays must be a whole number in 4..3600");
-    filter->SetSectionRays(int(n));
-  }
+  if (!profile.empty() || !terrain.empty()) filter->ComputeSectionsOn();
+  MEDIAL_OPTION(parsed, "--section-spacing", filter, SectionSpacing);
+  MEDIAL_OPTION(parsed, "--section-rays", filter, SectionRays);
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));

@@ -1,4 +1,4 @@
-// Argument parsing and exit codes of the `medial` command (GUIDE §3).
+// Argument parsing and exit codes of the `medial` command (docs/ARCHITECTURE.md §6).
 #pragma once
 
 #include <map>

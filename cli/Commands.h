@@ -1,4 +1,5 @@
-// The subcommands of `medial` (GUIDE §3). Each returns an exit code or throws UsageError / Failure.
+// The subcommands of `medial` (docs/ARCHITECTURE.md §6). Each returns an exit code or throws UsageError /
+// Failure.
 #pragma once
 
 #include <string>
@@ -9,7 +10,7 @@ namespace medial::cli {
 struct Command {
   const char* name;
   const char* summary;
-  const char* usage;  // the full --help text
+  std::string usage;  // the full --help text
   int (*run)(const std::vector<std::string>& args);
 };
 

@@ -1,5 +1,5 @@
 // Progress line of the `medial` command: "label  42%" redrawn on stderr when it is a terminal and
-// --quiet was not given (GUIDE §3). Observes a VTK algorithm's ProgressEvent.
+// --quiet was not given (docs/ARCHITECTURE.md §6). Observes a VTK algorithm's ProgressEvent.
 #pragma once
 
 #include <string>

@@ -2,6 +2,7 @@
 //                  [--weights] [--solver NAME] [--iterations N] [--contraction-vertices N] [--no-refine]`
 #include "Commands.h"
 #include "CommandLine.h"
+#include "FilterOptions.h"
 #include "Progress.h"
 #include "ReadInput.h"
 #include "RunFilter.h"
@@ -36,30 +37,13 @@ int runSkeleton(const std::vector<std::string>& args) {
     throw UsageError(std::string("--rig must end in one of ") + vtkMedialRigWriter::GetExtensions() + ": " + rig);
 
   auto filter = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
-  if (parsed.has("--nodes")) {
-    const double nodes = parseNumbers(parsed.value("--nodes"), 1, "--nodes")[0];
-    if (!(nodes >= 0) || nodes != int(nodes)) throw UsageError("--nodes must be a whole number >= 0");
-    filter->SetTargetNodes(int(nodes));
-  }
-  if (parsed.has("--contraction-vertices")) {
-    const double vertices = parseNumbers(parsed.value("--contraction-vertices"), 1, "--contraction-vertices")[0];
-    if (!(vertices >= 0) || vertices != int(vertices))
-      throw UsageError("--contraction-vertices must be a whole number >= 0");
-    filter->SetContractionVertices(int(vertices));
-  }
-  if (parsed.has("--iterations")) {
-    const double iterations = parseNumbers(parsed.value("--iterations"), 1, "--iterations")[0];
-    if (!(iterations >= 1) || iterations != int(iterations)) throw UsageError("--iterations must be a whole number >= 1");
-    filter->SetMaxIterations(int(iterations));
-  }
-  if (parsed.has("--solver")) {
-    auto errors = medial::ErrorCollector::Watch(filter);
-    filter->SetSolver(parsed.value("--solver"));
-    if (errors->HasErrors()) throw UsageError("--solver: " + errors->Joined());
-  }
-  filter->SetRefineEmbedding(!parsed.has("--no-refine"));
-  filter->SetRestoreCycles(!parsed.has("--no-cycle-repair"));
-  filter->SetComputeWeights(parsed.has("--rig") || parsed.has("--weights"));
+  MEDIAL_OPTION(parsed, "--nodes", filter, TargetNodes);
+  MEDIAL_OPTION(parsed, "--contraction-vertices", filter, ContractionVertices);
+  MEDIAL_OPTION(parsed, "--iterations", filter, MaxIterations);
+  setNameFromOption(parsed, "--solver", filter, [&](const std::string& name) { filter->SetSolver(name); });
+  if (parsed.has("--no-refine")) filter->RefineEmbeddingOff();
+  if (parsed.has("--no-cycle-repair")) filter->RestoreCyclesOff();
+  if (parsed.has("--rig") || parsed.has("--weights")) filter->ComputeWeightsOn();
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
@@ -71,7 +55,7 @@ int runSkeleton(const std::vector<std::string>& args) {
 
   timings.start("skeleton");
   runFilter(filter, mesh, input, "skeleton of " + input, progress);
-  for (const char* stage : {"decimation", "contraction", "factorization", "surgery", "refinement", "selection", "radii", "weights"})
+  for (const std::string& stage : vtkMedialContractionSkeleton::GetStageNames())
     timings.detail("skeleton", stage, filter->GetStageSeconds(stage));
 
   if (filter->GetRestoredCycles() > 0)

@@ -2,13 +2,14 @@
 //                [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U] [--thickness C] [--no-mesh]`
 #include "Commands.h"
 #include "CommandLine.h"
+#include "FilterOptions.h"
 #include "Progress.h"
+#include "ReadInput.h"
 #include "RunFilter.h"
 #include "Timings.h"
 #include "WriteOutput.h"
 
-#include "MedialErrorCollector.h"
-#include "vtkMedialSketchReader.h"
+#include "MedialSketchData.h"
 #include "vtkMedialSketchSkeleton.h"
 
 #include <vtkPolyData.h>
@@ -17,17 +18,6 @@
 #include <cstdio>
 
 namespace medial::cli {
-namespace {
-
-double nonNegative(const ParsedArgs& parsed, const char* option, double fallback) {
-  if (!parsed.has(option)) return fallback;
-  const double value = parseNumbers(parsed.value(option), 1, option)[0];
-  if (!(value >= 0)) throw UsageError(std::string(option) + " must be a number >= 0");
-  return value;
-}
-
-}  // namespace
-
 int runSketch(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(args, {{"-o", "--output", "--mesh", "--simplify", "--merge", "--prune", "--collapse",
                                               "--part", "--unit", "--thickness", "--resample"},
@@ -41,21 +31,13 @@ int runSketch(const std::vector<std::string>& args) {
   if (!meshOutput.empty()) requireWritableExtension(meshOutput, "--mesh");
 
   auto filter = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
-  filter->SetSimplificationThreshold(nonNegative(parsed, "--simplify", 5));
-  filter->SetMergingThreshold(nonNegative(parsed, "--merge", 30));
-  filter->SetPruningThreshold(nonNegative(parsed, "--prune", 30));
-  filter->SetCollapsingThreshold(nonNegative(parsed, "--collapse", 10));
-  filter->SetUnitLength(nonNegative(parsed, "--unit", 0));
-  if (parsed.has("--thickness")) {
-    const double c = parseNumbers(parsed.value("--thickness"), 1, "--thickness")[0];
-    if (!(c > 0)) throw UsageError("--thickness must be a number > 0");
-    filter->SetThickness(c);
-  }
-  if (parsed.has("--resample")) {
-    const double step = parseNumbers(parsed.value("--resample"), 1, "--resample")[0];
-    if (!(step > 0)) throw UsageError("--resample must be a number > 0");
-    filter->SetResampleStep(step);
-  }
+  MEDIAL_OPTION(parsed, "--simplify", filter, SimplificationThreshold);
+  MEDIAL_OPTION(parsed, "--merge", filter, MergingThreshold);
+  MEDIAL_OPTION(parsed, "--prune", filter, PruningThreshold);
+  MEDIAL_OPTION(parsed, "--collapse", filter, CollapsingThreshold);
+  MEDIAL_OPTION(parsed, "--unit", filter, UnitLength);
+  MEDIAL_OPTION(parsed, "--thickness", filter, Thickness);
+  MEDIAL_OPTION(parsed, "--resample", filter, ResampleStep);
   for (const std::string& text : parsed.all("--part")) {
     const size_t colon = text.find(':');
     if (colon == std::string::npos) throw UsageError("--part takes K:ES,EM,ET,EC (part number from 1, four thresholds)");
@@ -66,20 +48,16 @@ int runSketch(const std::vector<std::string>& args) {
       if (!(v >= 0)) throw UsageError("--part: thresholds must be numbers >= 0");
     filter->SetPartThresholds(int(k) - 1, t[0], t[1], t[2], t[3]);
   }
-  filter->SetInflate(!meshOutput.empty());
+  if (meshOutput.empty()) filter->InflateOff();
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
   timings.start("read");
-  auto reader = vtkSmartPointer<vtkMedialSketchReader>::New();
-  {
-    auto errors = medial::ErrorCollector::Watch(reader);
-    reader->SetFileName(input.c_str());
-    reader->Update();
-    if (errors->HasErrors()) throw Failure(errors->Joined());
-  }
+  const vtkSmartPointer<vtkDataObject> data = readInput(input, progress);
+  vtkPolyData* strokes = vtkPolyData::SafeDownCast(data);
+  if (!medial::isSketch(strokes)) throw Failure(input + ": not a sketch (no strokes)");
   timings.start("sketch");
-  runFilter(filter, reader->GetOutput(), input, "skeleton of " + input, progress);
+  runFilter(filter, strokes, input, "skeleton of " + input, progress);
 
   timings.start("write");
   writePolyData(filter->GetOutput(0), output);

@@ -2,6 +2,7 @@
 //              [--triangle-fans] [--ring-vertices N] [--subdivide K] [--sharp-scale S] [--no-fold-repair]`
 #include "Commands.h"
 #include "CommandLine.h"
+#include "FilterOptions.h"
 #include "Progress.h"
 #include "ReadInput.h"
 #include "RunFilter.h"
@@ -29,31 +30,15 @@ int runSqm(const std::vector<std::string>& args) {
   requireWritableExtension(output, "-o");
 
   auto filter = vtkSmartPointer<vtkMedialSQM>::New();
-  {
-    auto errors = medial::ErrorCollector::Watch(filter);
-    if (parsed.has("--smoothing")) filter->SetSmoothing(parsed.value("--smoothing"));
-    if (parsed.has("--pairing")) filter->SetPairing(parsed.value("--pairing"));
-    if (errors->HasErrors()) throw UsageError(errors->Joined());
-  }
-  if (parsed.has("--ring-vertices")) {
-    const double n = parseNumbers(parsed.value("--ring-vertices"), 1, "--ring-vertices")[0];
-    if (!(n >= 3) || n != int(n)) throw UsageError("--ring-vertices must be a whole number >= 3");
-    filter->SetLinearRingVertices(int(n));
-  }
-  if (parsed.has("--subdivide")) {
-    const double k = parseNumbers(parsed.value("--subdivide"), 1, "--subdivide")[0];
-    if (!(k >= 0 && k <= 6) || k != int(k)) throw UsageError("--subdivide must be a whole number from 0 to 6");
-    filter->SetSubdivisionLevels(int(k));
-  }
-  if (parsed.has("--sharp-scale")) {
-    const double s = parseNumbers(parsed.value("--sharp-scale"), 1, "--sharp-scale")[0];
-    if (!(s >= 0.05 && s <= 1)) throw UsageError("--sharp-scale must be a number from 0.05 to 1");
-    filter->SetSharpMinimumScale(s);
-    filter->SetSharpScaling(true);
-  }
-  filter->SetCapsules(parsed.has("--capsule"));
-  filter->SetPairTriangles(!parsed.has("--triangle-fans"));
-  filter->SetFoldRepair(!parsed.has("--no-fold-repair"));
+  setNameFromOption(parsed, "--smoothing", filter, [&](const std::string& name) { filter->SetSmoothing(name); });
+  setNameFromOption(parsed, "--pairing", filter, [&](const std::string& name) { filter->SetPairing(name); });
+  MEDIAL_OPTION(parsed, "--ring-vertices", filter, LinearRingVertices);
+  MEDIAL_OPTION(parsed, "--subdivide", filter, SubdivisionLevels);
+  MEDIAL_OPTION(parsed, "--sharp-scale", filter, SharpMinimumScale);
+  if (parsed.has("--sharp-scale")) filter->SharpScalingOn();
+  if (parsed.has("--capsule")) filter->CapsulesOn();
+  if (parsed.has("--triangle-fans")) filter->PairTrianglesOff();
+  if (parsed.has("--no-fold-repair")) filter->FoldRepairOff();
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));

@@ -7,12 +7,12 @@ namespace medial::cli {
 void Timings::start(const std::string& stage) {
   stop();
   current_ = stage;
-  begin_ = Clock::now();
+  stopwatch_.restart();
 }
 
 void Timings::stop() {
   if (current_.empty()) return;
-  const double seconds = std::chrono::duration<double>(Clock::now() - begin_).count();
+  const double seconds = stopwatch_.seconds();
   for (auto& [name, total] : stages_)  // a stage run several times (one read per input) adds up
     if (name == current_) {
       total += seconds;

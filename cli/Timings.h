@@ -1,7 +1,8 @@
-// Stage times for --timings: one JSON object of seconds on stdout (GUIDE §3).
+// Stage times for --timings: one JSON object of seconds on stdout (docs/ARCHITECTURE.md §6).
 #pragma once
 
-#include <chrono>
+#include "common/Stopwatch.h"
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,11 +20,10 @@ class Timings {
   std::string json() const;
 
  private:
-  using Clock = std::chrono::steady_clock;
   std::vector<std::pair<std::string, double>> stages_;
   std::vector<std::pair<std::string, double>> details_;
   std::string current_;
-  Clock::time_point begin_;
+  Stopwatch stopwatch_;
 };
 
 }  // namespace medial::cli

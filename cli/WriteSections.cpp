@@ -15,14 +15,16 @@
 
 #include <cstdio>
 #include <fstream>
+#include <functional>
 
 namespace medial::cli {
 
 namespace {
 
-void commit(const std::string& temporary, const std::string& path) {
+// Writes `path` atomically (no partial or temporary file left on failure), or throws Failure.
+void writeOrFail(const std::string& path, const std::function<bool(const std::string&, std::string&)>& write) {
   std::string error;
-  if (!medial::replaceFile(temporary, path, error)) throw Failure(path + ": " + error);
+  if (!medial::writeAtomically(path, write, error)) throw Failure(path + ": " + error);
 }
 
 }  // namespace
@@ -34,10 +36,12 @@ void writeProfileCsv(vtkTable* profile, const std::string& path) {
     arrays[c] = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName(columns[c]) : nullptr);
     if (!arrays[c]) throw Failure(path + ": the centerline filter gave no profile");
   }
-  const std::string temporary = medial::temporarySiblingName(path);
-  {
+  writeOrFail(path, [&](const std::string& temporary, std::string& error) {
     std::ofstream out(temporary);
-    if (!out) throw Failure(path + ": cannot create the file");
+    if (!out) {
+      error = "cannot create the file";
+      return false;
+    }
     out << "arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2\n";
     char line[256];
     for (vtkIdType row = 0; row < arrays[0]->GetNumberOfTuples(); ++row) {
@@ -46,9 +50,9 @@ void writeProfileCsv(vtkTable* profile, const std::string& path) {
                     arrays[4]->GetComponent(row, 0));
       out << line;  // NaN (no wall on some ray) is written as "nan"
     }
-    if (!out.flush()) throw Failure(path + ": cannot write the file");
-  }
-  commit(temporary, path);
+    if (!out.flush()) error = "cannot write the file";
+    return error.empty();
+  });
 }
 
 void writeTerrainPng(vtkImageData* terrain, const std::string& path) {
@@ -63,16 +67,14 @@ void writeTerrainPng(vtkImageData* terrain, const std::string& path) {
     for (int x = 0; x < grey.width; ++x)
       pixels->SetValue(vtkIdType(grey.height - 1 - y) * grey.width + x, grey.pixels[size_t(y) * grey.width + x]);
   image->GetPointData()->SetScalars(pixels);
-  const std::string temporary = medial::temporarySiblingName(path);
-  auto writer = vtkSmartPointer<vtkPNGWriter>::New();
-  writer->SetInputData(image);
-  writer->SetFileName(temporary.c_str());
-  writer->Write();
-  if (writer->GetErrorCode() != 0) {
-    std::remove(temporary.c_str());
-    throw Failure(path + ": cannot write the image");
-  }
-  commit(temporary, path);
+  writeOrFail(path, [&](const std::string& temporary, std::string& error) {
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+    writer->SetInputData(image);
+    writer->SetFileName(temporary.c_str());
+    writer->Write();
+    if (writer->GetErrorCode() != 0) error = "cannot write the image";
+    return error.empty();
+  });
 }
 
 }  // namespace medial::cli

@@ -1,6 +1,13 @@
-// `medial`: Medial's batch command (GUIDE §3). Dispatches to one subcommand per algorithm.
+// `medial`: Medial's batch command (docs/ARCHITECTURE.md §6). Dispatches to one subcommand per algorithm.
 #include "Commands.h"
 #include "CommandLine.h"
+
+#include "vtkMedialContractionSkeleton.h"
+#include "vtkMedialSQM.h"
+#include "vtkMedialSketchSkeleton.h"
+#include "vtkMedialTskCenterline.h"
+
+#include <vtkSmartPointer.h>
 
 #include <vtkLogger.h>
 #include <vtkOutputWindow.h>
@@ -9,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,26 +26,65 @@
 
 namespace medial::cli {
 
+namespace {
+
+// A help line for an option that takes one of a filter's names: "  OPTION   [lead ]a (default), b, c",
+// wrapped under the description column. The names and the default are the filter's.
+std::string namesHelp(const std::string& option, const std::string& lead, const std::string& names,
+                      const std::string& defaultName) {
+  const std::string column(28, ' ');
+  std::string text = "  " + option + std::string(26 - option.size(), ' ') + lead, line;
+  size_t start = 0;
+  while (start <= names.size()) {
+    size_t comma = names.find(',', start);
+    if (comma == std::string::npos) comma = names.size();
+    std::string name = names.substr(start, comma - start);
+    name.erase(0, name.find_first_not_of(' '));
+    std::string item = name + (name == defaultName ? " (default)" : "") + (comma < names.size() ? "," : "");
+    if (text.size() + 1 + item.size() > 100) {
+      line += text + "\n";
+      text = column;
+    } else if (text.back() != ' ') {
+      text += ' ';
+    }
+    text += item;
+    start = comma + 1;
+  }
+  return line + text + "\n";
+}
+
+// A default in the help, as short as it prints.
+std::string number(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+}  // namespace
+
+// The help texts take every default and every list of names from a fresh filter, so they cannot drift.
 const std::vector<Command>& commands() {
+  const auto contraction = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
+  const auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+  const auto tsk = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  const auto sketch = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
   static const std::vector<Command> all = {
       {"skeleton", "curve skeleton of a surface mesh by mesh contraction",
        "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig RIG.glb|RIG.fbx]\n"
        "                       [--weights] [--solver NAME] [--iterations N] [--contraction-vertices N]\n"
-       "                       [--no-refine] [--no-cycle-repair] [--quiet]\n"
-       "                       [--timings]\n\n"
+       "                       [--no-refine] [--no-cycle-repair] [--quiet] [--timings]\n\n"
        "Contracts MESH (.off .obj .ply .stl .vtp .vtk; polygons are triangulated) by constrained Laplacian\n"
        "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, III.A-D);\n"
        "with --rig, also computes heat-diffusion skinning weights (III.E) and writes a rig (III.F).\n"
        "  -o, --output SKELETON     the skeleton: .vtp (nodes, edges, Radius, Root) or .vtk .obj .ply\n"
        "  --segmentation MESH_OUT   the triangulated mesh with point data SkeletonNode (vertex -> node),\n"
        "                            and SkinWeights (one component per bone) with --rig or --weights\n"
-       "  --nodes N                 nodes kept by the selection stage (default 30; 0 keeps all)\n"
-       "  --solver NAME             cholmod-metis (default), cholmod-amd, llt-amd, ldlt-amd, llt-metis,\n"
-       "                            ldlt-metis, lu-colamd, lu-amd, lu-metis, qr-colamd, cg\n"
-       "  --iterations N            maximum contraction iterations (default 40)\n"
+       "  --nodes N                 nodes kept by the selection stage (default " + number(contraction->GetTargetNodes()) + "; 0 keeps all)\n"
+       + namesHelp("--solver NAME", "", vtkMedialContractionSkeleton::GetSolverNames(), contraction->GetSolver()) +
+       "  --iterations N            maximum contraction iterations (default " + number(contraction->GetMaxIterations()) + ")\n"
        "  --contraction-vertices N  a mesh with more vertices is decimated to N (quadric error, topology\n"
        "                            kept) before the contraction; the outputs still cover every input\n"
-       "                            vertex (default 4000; 0 contracts the mesh as it is)\n"
+       "                            vertex (default " + number(contraction->GetContractionVertices()) + "; 0 contracts the mesh as it is)\n"
        "  --no-refine               keep the nodes where the contraction put them (no III.C refinement)\n"
        "  --no-cycle-repair         leave out the cycles surgery lost (by default they are put back, so\n"
        "                            that the skeleton has as many cycles as the closed mesh has genus)\n"
@@ -49,8 +96,8 @@ const std::vector<Command>& commands() {
       {"centerline", "TSK centerline of a tubular structure in a CT or label volume",
        "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z]\n"
        "                         [--fill-holes] [--keep-border-parts] [--branches] [--antecedent-width W] [--centering N]\n"
-       "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] [--quiet]\n"
-       "                         [--timings]\n\n"
+       "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] [--section-rays N]\n"
+       "                         [--quiet] [--timings]\n\n"
        "Follows a tube (colon, vessel) in VOLUME (.nii .nii.gz .mha .mhd .nrrd .inr .vti or a DICOM folder) by\n"
        "the TSK method (WSCG 2008): layers and cylindrical clusters from P0, then three Takagi-Sugeno-Kang\n"
        "models. The structure: voxels equal to L, or within LO..HI (parts touching the volume's border are\n"
@@ -61,17 +108,17 @@ const std::vector<Command>& commands() {
        "  --seed X,Y,Z              P0 in mm (default: the lowest end of the structure)\n"
        "  --fill-holes              fill cavities of the structure first\n"
        "  --keep-border-parts       keep thresholded parts that touch the volume's border\n"
-       "  --antecedent-width W      TSK Gaussian width relative to a cluster (default 0.3)\n"
+       "  --antecedent-width W      TSK Gaussian width relative to a cluster (default " + number(tsk->GetAntecedentWidth()) + ")\n"
        "  --branches                a branching structure (vessels, airways): one polyline per branch,\n"
        "                            cell data Branch and ParentBranch (sections follow the first one)\n"
        "  --centering N             passes moving the axis to the centre of its sections (the paper's\n"
-       "                            centricity criterion; default 2, 0 = the TSK curve as is)\n"
+       "                            centricity criterion; default " + number(tsk->GetCenteringIterations()) + ", 0 = the TSK curve as is)\n"
        "  --profile PROFILE.csv     perpendicular sections every K mm: arc length, min/max diameter,\n"
        "                            perimeter (mm) and area (mm2) per row (paper section 4, Fig. 14)\n"
        "  --terrain TERRAIN.png     the unfolded wall: distance from the axis over angle (x) and arc\n"
        "                            length (y, from the top), white = far (Fig. 15)\n"
-       "  --section-spacing K       mm between sections (default 1)\n"
-       "  --section-rays N          angles per section (default 72)\n"
+       "  --section-spacing K       mm between sections (default " + number(tsk->GetSectionSpacing()) + ")\n"
+       "  --section-rays N          angles per section (default " + number(tsk->GetSectionRays()) + ")\n"
        "  --quiet                   no progress line\n"
        "  --timings                 print stage times as JSON on stdout\n",
        runCenterline},
@@ -83,13 +130,12 @@ const std::vector<Command>& commands() {
        "a leaf's or a cycle's ring is odd), by SQM with the extensions of the CESCG 2014 paper (re-rooting,\n"
        "linear skeletons, ellipsoid nodes from EllipsoidAxes, capsules, cycles). Every component is meshed.\n"
        "  -o, --output MESH         the mesh (.vtp .vtk .obj .ply .stl), with point data SkeletonNode\n"
-       "  --smoothing NAME          LIE smoothing: quaternion (default), averaging, area-laplacian,\n"
-       "                            valency-laplacian\n"
-       "  --pairing NAME            ring pairing at branch nodes: total-distance (default), distance, angle\n"
+       + namesHelp("--smoothing NAME", "LIE smoothing:", vtkMedialSQM::GetSmoothingNames(), sqm->GetSmoothing())
+       + namesHelp("--pairing NAME", "ring pairing at branch nodes:", vtkMedialSQM::GetPairingNames(), sqm->GetPairing()) +
        "  --capsule                 close leaves with capsules instead of cones to their node\n"
        "  --triangle-fans           keep the papers' triangle fans at leaves and bands at cycles (by\n"
        "                            default their triangles are joined in pairs into quads)\n"
-       "  --ring-vertices N         vertices around a skeleton without branch nodes (default 8)\n"
+       "  --ring-vertices N         vertices around a skeleton without branch nodes (default " + number(sqm->GetLinearRingVertices()) + ")\n"
        "  --subdivide K             K levels of Catmull-Clark, projected on the skeleton's cones (0-6)\n"
        "  --sharp-scale S           with --subdivide: scale the cone radius near a sharp vertex (two faces\n"
        "                            at an acute angle) by a Bezier curve from S (0.05-1) there to 1 one\n"
@@ -110,14 +156,14 @@ const std::vector<Command>& commands() {
        "the whole is refined. Lengths are sketch pixels: a thousandth of the drawing's diagonal (see --unit).\n"
        "  -o, --output SKELETON     the skeleton (.vtp: Radius, NodeType, Root, Part, Branch; .vtk .obj .ply)\n"
        "  --mesh MESH               the inflated strokes, closed triangle meshes with point data Part\n"
-       "  --simplify ES             branch simplification threshold epsilon_s (default 5)\n"
-       "  --merge EM                junction merging threshold epsilon_m (default 30)\n"
-       "  --prune ET                branch pruning threshold epsilon_t (default 30)\n"
-       "  --collapse EC             edge collapsing threshold epsilon_c (default 10)\n"
+       "  --simplify ES             branch simplification threshold epsilon_s (default " + number(sketch->GetSimplificationThreshold()) + ")\n"
+       "  --merge EM                junction merging threshold epsilon_m (default " + number(sketch->GetMergingThreshold()) + ")\n"
+       "  --prune ET                branch pruning threshold epsilon_t (default " + number(sketch->GetPruningThreshold()) + ")\n"
+       "  --collapse EC             edge collapsing threshold epsilon_c (default " + number(sketch->GetCollapsingThreshold()) + ")\n"
        "  --part K:ES,EM,ET,EC      the four thresholds for part K only (from 1); repeatable\n"
        "  --unit U                  stroke units per sketch pixel (default: diagonal / 1000)\n"
-       "  --resample STEP           stroke resampling step in sketch pixels (default 10)\n"
-       "  --thickness C             inflation thickness (default 2: round tubes)\n"
+       "  --resample STEP           stroke resampling step in sketch pixels (default " + number(sketch->GetResampleStep()) + ")\n"
+       "  --thickness C             inflation thickness (default " + number(sketch->GetThickness()) + ": round tubes)\n"
        "  --quiet                   no progress line\n"
        "  --timings                 print stage times as JSON on stdout\n",
        runSketch},
@@ -199,7 +245,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   for (const std::string& a : rest)
     if (a == "--help" || a == "-h") {
-      std::fputs(command->usage, stdout);
+      std::fputs(command->usage.c_str(), stdout);
       return kSuccess;
     }
 
@@ -214,7 +260,7 @@ int main(int argc, char** argv) {
   try {
     return command->run(rest);
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "medial %s: %s\n%s", command->name, e.what(), command->usage);
+    std::fprintf(stderr, "medial %s: %s (see 'medial %s --help')\n", command->name, e.what(), command->name);
     return kUsageError;
   } catch (const Failure& e) {
     std::fprintf(stderr, "medial %s: %s\n", command->name, e.what());

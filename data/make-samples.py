@@ -3,7 +3,7 @@
 
     data/meshes/torus.off         closed genus-1 triangle mesh (OFF, 1,152 faces)
     data/meshes/capsule.vtp       closed genus-0 triangle mesh (VTP): a bent, elongated ellipsoid
-    data/skeletons/figure.vtp     humanoid skeleton with Radius and Root (GUIDE section 2)
+    data/skeletons/figure.vtp     humanoid skeleton with Radius and Root (docs/ARCHITECTURE.md section 4)
     data/skeletons/hand.swc       hand skeleton as SWC (wrist, palm, five fingers)
 """
 import math

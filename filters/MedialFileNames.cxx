@@ -21,6 +21,8 @@ std::string fileExtension(const std::string& path) {
   return dot == std::string::npos || dot == 0 ? std::string() : name.substr(dot);
 }
 
+namespace {
+
 std::string temporarySiblingName(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
@@ -29,11 +31,20 @@ std::string temporarySiblingName(const std::string& path) {
   return dir + ".tmp-" + std::to_string(::getpid()) + "-" + name;
 }
 
-bool replaceFile(const std::string& from, const std::string& to, std::string& error) {
-  if (std::rename(from.c_str(), to.c_str()) == 0) return true;
-  error = "cannot rename " + from + " to " + to + ": " + std::strerror(errno);
-  std::remove(from.c_str());
-  return false;
+}  // namespace
+
+bool writeAtomically(const std::string& path,
+                     const std::function<bool(const std::string& temporary, std::string& error)>& write,
+                     std::string& error) {
+  const std::string temporary = temporarySiblingName(path);
+  error.clear();
+  bool ok = write(temporary, error);
+  if (ok && std::rename(temporary.c_str(), path.c_str()) != 0) {
+    error = "cannot rename " + temporary + " to " + path + ": " + std::strerror(errno);
+    ok = false;
+  }
+  if (!ok) std::remove(temporary.c_str());  // nothing to remove when the writer could not create it
+  return ok;
 }
 
 }  // namespace medial

@@ -2,10 +2,31 @@
 
 #include <vtkCellArray.h>
 #include <vtkIdList.h>
+#include <vtkIntArray.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
+#include <vtkTriangleFilter.h>
 
 namespace medial {
+
+namespace {
+
+vtkSmartPointer<vtkPoints> doublePoints() {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  return points;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> triangulated(vtkPolyData* mesh) {
+  auto triangulate = vtkSmartPointer<vtkTriangleFilter>::New();
+  triangulate->SetInputData(mesh);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  return triangulate->GetOutput();
+}
 
 TriangleMesh toTriangleMesh(vtkPolyData* triangles) {
   TriangleMesh mesh;
@@ -23,6 +44,69 @@ TriangleMesh toTriangleMesh(vtkPolyData* triangles) {
     if (ids->GetNumberOfIds() == 3) mesh.faces.row(f++) << int(ids->GetId(0)), int(ids->GetId(1)), int(ids->GetId(2));
   mesh.faces.conservativeResize(f, 3);
   return mesh;
+}
+
+std::vector<Eigen::Vector3d> pointsOf(vtkPolyData* mesh) {
+  std::vector<Eigen::Vector3d> points(size_t(mesh->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i) mesh->GetPoint(i, points[size_t(i)].data());
+  return points;
+}
+
+std::vector<std::vector<int64_t>> polygonsOf(vtkPolyData* mesh) {
+  std::vector<std::vector<int64_t>> faces;
+  faces.reserve(size_t(mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips()));
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(ids);) faces.emplace_back(ids->begin(), ids->end());
+  vtkCellArray* strips = mesh->GetStrips();
+  for (strips->InitTraversal(); strips->GetNextCell(ids);)
+    for (vtkIdType k = 0; k + 2 < ids->GetNumberOfIds(); ++k) {  // strip triangle k, alternately turned
+      if (k % 2 == 0)
+        faces.push_back({ids->GetId(k), ids->GetId(k + 1), ids->GetId(k + 2)});
+      else
+        faces.push_back({ids->GetId(k + 1), ids->GetId(k), ids->GetId(k + 2)});
+    }
+  return faces;
+}
+
+vtkSmartPointer<vtkPolyData> polyDataFromMesh(const TriangleMesh& mesh) {
+  auto points = doublePoints();
+  points->SetNumberOfPoints(mesh.vertices.rows());
+  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
+    points->SetPoint(v, mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2));
+  auto triangles = vtkSmartPointer<vtkCellArray>::New();
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
+    const vtkIdType ids[3] = {mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)};
+    triangles->InsertNextCell(3, ids);
+  }
+  auto polyData = vtkSmartPointer<vtkPolyData>::New();
+  polyData->SetPoints(points);
+  polyData->SetPolys(triangles);
+  return polyData;
+}
+
+vtkSmartPointer<vtkPolyData> polyDataFromPolygons(const std::vector<Eigen::Vector3d>& vertices,
+                                                  const std::vector<std::vector<int>>& faces) {
+  auto points = doublePoints();
+  points->SetNumberOfPoints(vtkIdType(vertices.size()));
+  for (size_t v = 0; v < vertices.size(); ++v) points->SetPoint(vtkIdType(v), vertices[v].data());
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& face : faces) {
+    polys->InsertNextCell(vtkIdType(face.size()));
+    for (int v : face) polys->InsertCellPoint(v);
+  }
+  auto polyData = vtkSmartPointer<vtkPolyData>::New();
+  polyData->SetPoints(points);
+  polyData->SetPolys(polys);
+  return polyData;
+}
+
+vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values) {
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(vtkIdType(values.size()));
+  for (size_t i = 0; i < values.size(); ++i) array->SetValue(vtkIdType(i), values[i]);
+  return array;
 }
 
 }  // namespace medial

@@ -1,13 +1,43 @@
-// Conversions between VTK polygonal meshes and the plain TriangleMesh of src/.
+// Conversions between VTK polygonal meshes and the plain meshes of src/, both ways: the one place where
+// filters, writers and tests turn a vtkPolyData into vertices and faces and back
+// (docs/ARCHITECTURE.md §4).
 #pragma once
 
 #include "mesh/TriangleMesh.h"
 
+#include <vtkSmartPointer.h>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+class vtkIntArray;
 class vtkPolyData;
 
 namespace medial {
 
+// `mesh`'s polygons and strips as triangles, its point data kept (vertices and lines left out).
+vtkSmartPointer<vtkPolyData> triangulated(vtkPolyData* mesh);
+
 // The points and the triangles of `triangles` (other cells are skipped: triangulate first).
 TriangleMesh toTriangleMesh(vtkPolyData* triangles);
+
+// The points of `mesh`.
+std::vector<Eigen::Vector3d> pointsOf(vtkPolyData* mesh);
+
+// The polygons of `mesh` as lists of point ids, then its triangle strips split into triangles (every
+// second one turned, so that all keep the strip's orientation). Lines and vertices are skipped.
+std::vector<std::vector<int64_t>> polygonsOf(vtkPolyData* mesh);
+
+// A polydata of triangles.
+vtkSmartPointer<vtkPolyData> polyDataFromMesh(const TriangleMesh& mesh);
+
+// A polydata of polygons (quads, triangles, any size), as they are: no triangulation.
+vtkSmartPointer<vtkPolyData> polyDataFromPolygons(const std::vector<Eigen::Vector3d>& vertices,
+                                                  const std::vector<std::vector<int>>& faces);
+
+// A named int array with one value per element of `values` (point or cell data).
+vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values);
 
 }  // namespace medial

@@ -25,7 +25,7 @@ bool skeletonFromPolyData(vtkPolyData* polyData, Skeleton& skeleton, std::string
     return false;
   }
   if (polyData->GetNumberOfPolys() > 0 || polyData->GetNumberOfStrips() > 0) {
-    error = "the polydata holds polygons; a skeleton has only line cells (GUIDE §2)";
+    error = "the polydata holds polygons; a skeleton has only line cells";
     return false;
   }
   const vtkIdType n = polyData->GetNumberOfPoints();

@@ -1,4 +1,4 @@
-// Conversion between the GUIDE §2 skeleton vtkPolyData and medial::Skeleton, and the checks on it.
+// Conversion between the docs/ARCHITECTURE.md §4 skeleton vtkPolyData and medial::Skeleton, and the checks on it.
 #pragma once
 
 #include "skeleton/Skeleton.h"
@@ -11,7 +11,7 @@ class vtkPolyData;
 
 namespace medial {
 
-// Array and field names of GUIDE §2.
+// Array and field names of docs/ARCHITECTURE.md §4.
 constexpr const char* kRadiusArray = "Radius";
 constexpr const char* kEllipsoidAxesArray = "EllipsoidAxes";
 constexpr const char* kNodeTypeArray = "NodeType";
@@ -25,7 +25,7 @@ bool looksLikeSkeleton(vtkPolyData* polyData);
 // Does not validate values: call validateSkeleton for that.
 bool skeletonFromPolyData(vtkPolyData* polyData, Skeleton& skeleton, std::string& error);
 
-// Builds the GUIDE §2 polydata, with `NodeType` computed. Assumes a valid skeleton.
+// Builds the docs/ARCHITECTURE.md §4 polydata, with `NodeType` computed. Assumes a valid skeleton.
 vtkSmartPointer<vtkPolyData> polyDataFromSkeleton(const Skeleton& skeleton);
 
 // The problems of validateSkeleton joined into one line ("...; ...; and 3 more").

@@ -2,6 +2,7 @@
 
 #include "MedialMeshData.h"
 #include "MedialSkeletonData.h"
+#include "common/NameList.h"
 #include "contraction/SkeletonByContraction.h"
 
 #include <vtkCellArray.h>
@@ -24,18 +25,61 @@ const char* const kStages[kStageCount] = {"decimation", "contraction", "factoriz
                                           "refinement", "selection",   "radii",         "weights"};
 }
 
-vtkMedialContractionSkeleton::vtkMedialContractionSkeleton() { this->SetNumberOfOutputPorts(2); }
+vtkMedialContractionSkeleton::vtkMedialContractionSkeleton() {
+  this->SetNumberOfOutputPorts(2);
+  const medial::SkeletonByContractionParameters defaults;
+  this->TargetNodes = defaults.targetNodes;
+  this->ContractionVertices = defaults.contractionVertices;
+  this->InitialContractionFactor = defaults.contraction.initialContractionFactor;
+  this->ContractionScale = defaults.contraction.contractionScale;
+  this->MaxContractionWeight = defaults.contraction.maxContractionWeight;
+  this->MaxAttractionWeight = defaults.contraction.maxAttractionWeight;
+  this->MaxIterations = defaults.contraction.maxIterations;
+  this->ShapeWeight = defaults.surgery.shapeWeight;
+  this->SamplingWeight = defaults.surgery.samplingWeight;
+  this->RefineEmbedding = defaults.refineEmbedding;
+  this->RestoreCycles = defaults.restoreCycles;
+  this->ComputeWeights = defaults.computeWeights;
+  this->HeatConstant = defaults.weights.heatConstant;
+  this->Solver = medial::sparseSolverName(defaults.contraction.solver);
+}
+
+medial::SkeletonByContractionParameters vtkMedialContractionSkeleton::MakeParameters() const {
+  medial::SkeletonByContractionParameters p;
+  p.targetNodes = this->TargetNodes;
+  p.contractionVertices = this->ContractionVertices;
+  p.contraction.initialContractionFactor = this->InitialContractionFactor;
+  p.contraction.contractionScale = this->ContractionScale;
+  p.contraction.maxContractionWeight = this->MaxContractionWeight;
+  p.contraction.maxAttractionWeight = this->MaxAttractionWeight;
+  p.contraction.maxIterations = this->MaxIterations;
+  p.surgery.shapeWeight = this->ShapeWeight;
+  p.surgery.samplingWeight = this->SamplingWeight;
+  p.refineEmbedding = this->RefineEmbedding;
+  p.restoreCycles = this->RestoreCycles;
+  p.computeWeights = this->ComputeWeights;
+  p.weights.heatConstant = this->HeatConstant;
+  medial::parseSparseSolverKind(this->Solver, p.contraction.solver);  // SetSolver accepts known names only
+  p.weights.solver = p.contraction.solver;
+  return p;
+}
+
+std::string vtkMedialContractionSkeleton::GetSolverNames() { return medial::joinNames(medial::sparseSolverNames()); }
 
 void vtkMedialContractionSkeleton::SetSolver(const std::string& name) {
   medial::SparseSolverKind kind;
   if (!medial::parseSparseSolverKind(name, kind)) {
-    vtkErrorMacro(<< "unknown solver '" << name << "'");
+    vtkErrorMacro(<< "unknown solver '" << name << "' (" << GetSolverNames() << ")");
     return;
   }
   if (name != this->Solver) {
     this->Solver = name;
     this->Modified();
   }
+}
+
+std::vector<std::string> vtkMedialContractionSkeleton::GetStageNames() {
+  return std::vector<std::string>(kStages, kStages + kStageCount);
 }
 
 double vtkMedialContractionSkeleton::GetStageSeconds(const std::string& stage) const {
@@ -72,32 +116,10 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
     vtkErrorMacro(<< "the input has no polygons: a surface mesh is needed");
     return 0;
   }
-
-  auto triangulate = vtkSmartPointer<vtkTriangleFilter>::New();
-  triangulate->SetInputData(input);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  vtkPolyData* triangles = triangulate->GetOutput();
+  const vtkSmartPointer<vtkPolyData> triangles = medial::triangulated(input);
   const medial::TriangleMesh mesh = medial::toTriangleMesh(triangles);
 
-  medial::SkeletonByContractionParameters p;
-  p.targetNodes = this->TargetNodes;
-  p.contractionVertices = this->ContractionVertices;
-  p.refineEmbedding = this->RefineEmbedding;
-  p.restoreCycles = this->RestoreCycles;
-  p.contraction.initialContractionFactor = this->InitialContractionFactor;
-  p.contraction.contractionScale = this->ContractionScale;
-  p.contraction.maxContractionWeight = this->MaxContractionWeight;
-  p.contraction.maxAttractionWeight = this->MaxAttractionWeight;
-  p.contraction.maxIterations = this->MaxIterations;
-  medial::parseSparseSolverKind(this->Solver, p.contraction.solver);
-  p.surgery.shapeWeight = this->ShapeWeight;
-  p.surgery.samplingWeight = this->SamplingWeight;
-  p.computeWeights = this->ComputeWeights;
-  p.weights.heatConstant = this->HeatConstant;
-  p.weights.solver = p.contraction.solver;
-
+  const medial::SkeletonByContractionParameters p = this->MakeParameters();
   const medial::SkeletonByContractionResult result = medial::skeletonByContraction(mesh, p, [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
@@ -119,11 +141,7 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
 
   skeletonOutput->ShallowCopy(medial::polyDataFromSkeleton(result.skeleton));
   meshOutput->ShallowCopy(triangles);
-  auto nodes = vtkSmartPointer<vtkIntArray>::New();
-  nodes->SetName("SkeletonNode");
-  nodes->SetNumberOfValues(triangles->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < triangles->GetNumberOfPoints(); ++i) nodes->SetValue(i, result.vertexToNode[size_t(i)]);
-  meshOutput->GetPointData()->AddArray(nodes);
+  meshOutput->GetPointData()->AddArray(medial::intArray("SkeletonNode", result.vertexToNode));
   if (this->ComputeWeights) {
     auto weights = vtkSmartPointer<vtkDoubleArray>::New();
     weights->SetName("SkinWeights");

@@ -3,7 +3,7 @@
  * @brief Curve skeleton of a surface mesh by mesh contraction (contraction paper, section III, stages 1-4).
  *
  * Input: a polygonal mesh (polygons and strips are triangulated; lines and vertices are ignored).
- * Output port 0: the skeleton of GUIDE §2 (nodes, 2-point lines, `Radius`, field data `Root`).
+ * Output port 0: the skeleton of docs/ARCHITECTURE.md §4 (nodes, 2-point lines, `Radius`, field data `Root`).
  * Output port 1: the triangulated input mesh with point data `SkeletonNode` (int: the node that absorbed
  * each vertex, -1 for vertices no face uses), the skeleton-mesh mapping and segmentation; with
  * ComputeWeights on, also `SkinWeights` (double, one component per bone: component i is the weight of the
@@ -11,8 +11,8 @@
  * array was chosen over a sparse pair: 30 bones cost 240 bytes per vertex, and VTK's colouring, probing and
  * Python's numpy view work on it directly. vtkMedialRigWriter turns both outputs into a rig file.
  *
- * Parameters carry the paper's defaults: W_L0 factor 1e-3, s_L = 2, W_L <= 2048, W_H <= 10000, w_a = 1,
- * w_b = 0.1, 30 nodes. Bad input (no triangles, NaN coordinates) gives an error and empty outputs.
+ * Parameters carry the paper's defaults, taken from medial::SkeletonByContractionParameters: W_L0 factor
+ * 1e-3, s_L = 2, W_L <= 2048, W_H <= 10000, w_a = 1, w_b = 0.1, 30 nodes. Bad input (no triangles, NaN coordinates) gives an error and empty outputs.
  * Implements medial::skeletonByContraction (src/contraction/SkeletonByContraction.h).
  */
 #pragma once
@@ -21,6 +21,11 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string>
+#include <vector>
+
+namespace medial {
+struct SkeletonByContractionParameters;
+}
 
 class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgorithm {
  public:
@@ -37,21 +42,23 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   vtkSetClampMacro(ContractionVertices, int, 0, VTK_INT_MAX);
   vtkGetMacro(ContractionVertices, int);
   /// W_L0 = factor * sqrt(mean face area) in the normalized frame (default 1e-3).
-  vtkSetMacro(InitialContractionFactor, double);
+  vtkSetClampMacro(InitialContractionFactor, double, 1e-6, 10.0);
   vtkGetMacro(InitialContractionFactor, double);
   /// s_L, the growth of W_L per iteration (default 2).
-  vtkSetMacro(ContractionScale, double);
+  vtkSetClampMacro(ContractionScale, double, 1.01, 10.0);
   vtkGetMacro(ContractionScale, double);
-  vtkSetMacro(MaxContractionWeight, double);
+  /// Upper bounds of W_L and W_H (defaults 2048 and 10000).
+  vtkSetClampMacro(MaxContractionWeight, double, 1.0, 1e6);
   vtkGetMacro(MaxContractionWeight, double);
-  vtkSetMacro(MaxAttractionWeight, double);
+  vtkSetClampMacro(MaxAttractionWeight, double, 1.0, 1e7);
   vtkGetMacro(MaxAttractionWeight, double);
+  /// Contraction iterations at most (default 40).
   vtkSetClampMacro(MaxIterations, int, 1, 1000);
   vtkGetMacro(MaxIterations, int);
   /// w_a and w_b of the surgery cost (10) (defaults 1 and 0.1).
-  vtkSetMacro(ShapeWeight, double);
+  vtkSetClampMacro(ShapeWeight, double, 0.0, 100.0);
   vtkGetMacro(ShapeWeight, double);
-  vtkSetMacro(SamplingWeight, double);
+  vtkSetClampMacro(SamplingWeight, double, 0.0, 100.0);
   vtkGetMacro(SamplingWeight, double);
   /// Move nodes to the centroid of their absorbed vertices where it lies inside (default on).
   vtkSetMacro(RefineEmbedding, bool);
@@ -67,12 +74,15 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   vtkGetMacro(ComputeWeights, bool);
   vtkBooleanMacro(ComputeWeights, bool);
   /// c of H_jj = c / d(j)^2 in the heat equilibrium (default 1, Baran and Popović).
-  vtkSetMacro(HeatConstant, double);
+  vtkSetClampMacro(HeatConstant, double, 1e-3, 100.0);
   vtkGetMacro(HeatConstant, double);
-  /// Sparse solver: cholmod-metis (default), cholmod-amd, llt-amd, ldlt-amd, llt-metis, ldlt-metis,
-  /// lu-colamd, lu-amd, lu-metis, qr-colamd, cg.
+  /// Sparse solver, one of GetSolverNames() (default cholmod-metis); an unknown name is an error and
+  /// leaves the solver as it was.
   void SetSolver(const std::string& name);
   std::string GetSolver() const { return this->Solver; }
+  /// The solvers' names, comma-separated: cholmod-metis, cholmod-amd, llt-amd, ldlt-amd, llt-metis,
+  /// ldlt-metis, lu-colamd, lu-amd, lu-metis, qr-colamd, cg.
+  static std::string GetSolverNames();
 
   /// Figures of the last update.
   vtkGetMacro(ContractionIterations, int);
@@ -85,6 +95,10 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   /// Seconds of a stage of the last update: decimation, contraction, factorization (part of the
   /// contraction), surgery, refinement, selection, radii, weights.
   double GetStageSeconds(const std::string& stage) const;
+#ifndef __VTK_WRAP__
+  /// The stages' names, in order (for C++ callers; Python names them itself).
+  static std::vector<std::string> GetStageNames();
+#endif
 
  protected:
   vtkMedialContractionSkeleton();
@@ -94,21 +108,25 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
  private:
   vtkMedialContractionSkeleton(const vtkMedialContractionSkeleton&) = delete;
   void operator=(const vtkMedialContractionSkeleton&) = delete;
+  // The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
+  medial::SkeletonByContractionParameters MakeParameters() const;
 
-  int TargetNodes = 30;
-  int ContractionVertices = 4000;
-  double InitialContractionFactor = 1e-3;
-  double ContractionScale = 2.0;
-  double MaxContractionWeight = 2048.0;
-  double MaxAttractionWeight = 10000.0;
-  int MaxIterations = 40;
-  double ShapeWeight = 1.0;
-  double SamplingWeight = 0.1;
-  bool RefineEmbedding = true;
-  bool RestoreCycles = true;
-  bool ComputeWeights = false;
-  double HeatConstant = 1.0;
-  std::string Solver = "cholmod-metis";
+  // Parameters: defaults from medial::SkeletonByContractionParameters (the constructor).
+  int TargetNodes;
+  int ContractionVertices;
+  double InitialContractionFactor;
+  double ContractionScale;
+  double MaxContractionWeight;
+  double MaxAttractionWeight;
+  int MaxIterations;
+  double ShapeWeight;
+  double SamplingWeight;
+  bool RefineEmbedding;
+  bool RestoreCycles;
+  bool ComputeWeights;
+  double HeatConstant;
+  std::string Solver;
+  // Figures of the last update.
   int ContractionIterations = 0;
   int CurveSkeletonNodes = 0;
   int ContractedVertices = 0;

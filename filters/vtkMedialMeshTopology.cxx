@@ -1,5 +1,6 @@
 #include "vtkMedialMeshTopology.h"
 
+#include "MedialMeshData.h"
 #include "mesh/MeshTopology.h"
 
 #include <vtkCellArray.h>
@@ -28,23 +29,6 @@ void vtkMedialMeshTopology::PrintSelf(ostream& os, vtkIndent indent) {
 
 namespace {
 
-void addFaces(vtkCellArray* cells, bool strips, std::vector<std::vector<int64_t>>& faces) {
-  auto ids = vtkSmartPointer<vtkIdList>::New();
-  for (cells->InitTraversal(); cells->GetNextCell(ids);) {
-    const vtkIdType n = ids->GetNumberOfIds();
-    if (!strips) {
-      faces.emplace_back(ids->begin(), ids->end());
-      continue;
-    }
-    for (vtkIdType k = 0; k + 2 < n; ++k) {  // strip triangle k, with alternating orientation
-      if (k % 2 == 0)
-        faces.push_back({ids->GetId(k), ids->GetId(k + 1), ids->GetId(k + 2)});
-      else
-        faces.push_back({ids->GetId(k + 1), ids->GetId(k), ids->GetId(k + 2)});
-    }
-  }
-}
-
 void addCount(vtkFieldData* fieldData, const char* name, vtkIdType value) {
   auto array = vtkSmartPointer<vtkIdTypeArray>::New();
   array->SetName(name);
@@ -59,10 +43,7 @@ int vtkMedialMeshTopology::RequestData(vtkInformation*, vtkInformationVector** i
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
 
-  std::vector<std::vector<int64_t>> faces;
-  faces.reserve(input->GetNumberOfPolys() + input->GetNumberOfStrips());
-  addFaces(input->GetPolys(), false, faces);
-  addFaces(input->GetStrips(), true, faces);
+  const std::vector<std::vector<int64_t>> faces = medial::polygonsOf(input);
   this->UpdateProgress(0.3);
   const medial::MeshTopology t = medial::computeMeshTopology(input->GetNumberOfPoints(), faces);
 

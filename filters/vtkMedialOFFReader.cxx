@@ -1,5 +1,7 @@
 #include "vtkMedialOFFReader.h"
 
+#include "MedialTextFile.h"
+
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkInformation.h>
@@ -18,7 +20,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -124,11 +125,12 @@ class PolygonSoupImporter : public IO::BaseImporter {
 
 // An ASCII OFF file's text without its comments ('#' to the end of a line) and blank lines: OpenMesh reads
 // none of CGAL's OFF files that open with a comment block (cube_poly, sphere966, mesh_with_colors...).
-std::string withoutComments(std::istream& in) {
+std::string withoutComments(medial::TextFile& file, bool& hadComments) {
   std::string text;
-  for (std::string line; std::getline(in, line);) {
-    line = line.substr(0, line.find('#'));
-    if (line.find_first_not_of(" \t\r") != std::string::npos) text += line + "\n";
+  hadComments = false;
+  for (std::string line; file.nextLine(line);) {
+    hadComments = hadComments || file.lineHadComment();
+    if (!medial::isBlank(line)) text += line + "\n";
   }
   return text;
 }
@@ -154,28 +156,24 @@ bool announcedCounts(const std::string& text, long& vertices, long& faces) {
 
 int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (this->FileName.empty()) {
-    vtkErrorMacro(<< "no file name given");
-    return 0;
-  }
-  if (!std::ifstream(this->FileName)) {
-    vtkErrorMacro(<< this->FileName << ": cannot open the file");
+  medial::TextFile file;
+  std::string error;
+  if (!file.open(this->FileName, error)) {
+    vtkErrorMacro(<< error);
     return 0;
   }
 
   PolygonSoupImporter soup;
   IO::Options options = IO::Options::VertexColor | IO::Options::VertexNormal;
   omerr().disable();  // OpenMesh would print its own complaints; ours name the file
-  std::ifstream file(this->FileName);
-  const std::string original((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  std::istringstream lines(original);
-  const std::string text = withoutComments(lines);
+  bool hadComments = false;
+  const std::string text = withoutComments(file, hadComments);
   long vertices = 0, faces = 0;
   const bool ascii = announcedCounts(text, vertices, faces);
   // A file with comments is read from a copy without them (OpenMesh reads colours and normals only from a
   // file, not from a stream).
   std::string path = this->FileName;
-  if (ascii && original.find('#') != std::string::npos) {
+  if (ascii && hadComments) {
     path = (std::filesystem::temp_directory_path() /
             ("medial-off-" + std::to_string(::getpid()) + "-" + std::to_string(uintptr_t(this)) + ".off"))
                .string();

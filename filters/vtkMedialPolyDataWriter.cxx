@@ -16,6 +16,7 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include <cstdio>
+#include <fstream>
 #include <functional>
 
 vtkStandardNewMacro(vtkMedialPolyDataWriter);
@@ -50,10 +51,10 @@ void vtkMedialPolyDataWriter::WriteData() {
     this->SetErrorCode(vtkErrorCode::UnrecognizedFileTypeError);
     return;
   }
-  const std::string temporary = medial::temporarySiblingName(this->FileName);
   std::string error;
-  if (!this->WriteTo(temporary, extension) || !medial::replaceFile(temporary, this->FileName, error)) {
-    std::remove(temporary.c_str());
+  // WriteTo reports its own errors; `error` then stays empty.
+  const auto write = [&](const std::string& temporary, std::string&) { return this->WriteTo(temporary, extension); };
+  if (!medial::writeAtomically(this->FileName, write, error)) {
     if (!error.empty()) vtkErrorMacro(<< error);
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
   }
@@ -68,13 +69,23 @@ bool vtkMedialPolyDataWriter::WriteTo(const std::string& path, const std::string
   // vtkXMLPolyDataWriter is no vtkWriter: keep the algorithm and how to make it write.
   vtkSmartPointer<vtkAlgorithm> writer;
   std::function<int()> write;
+  std::string ioError;  // a failure of our own writing
   if (extension == ".vtp") {
+    // Written to memory, then to the file by us: VTK 9.1's XML writer crashes (a double free in
+    // DeletePositionArrays) when the disk fills up in the middle of a piece.
     auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    w->SetFileName(path.c_str());
+    w->WriteToOutputStringOn();
     w->SetDataModeToBinary();
     w->SetCompressorTypeToZLib();
     writer = w;
-    write = [w] { return w->Write(); };
+    write = [w, path, &ioError] {
+      if (!w->Write()) return 0;
+      std::ofstream out(path, std::ios::binary);
+      const std::string& bytes = w->GetOutputString();
+      out.write(bytes.data(), std::streamsize(bytes.size()));
+      if (!out.flush()) ioError = out.is_open() ? "write failed (disk full?)" : "cannot create the file";
+      return ioError.empty() ? 1 : 0;
+    };
   } else if (extension == ".vtk") {
     auto w = vtkSmartPointer<vtkPolyDataWriter>::New();
     w->SetFileName(path.c_str());
@@ -113,6 +124,7 @@ bool vtkMedialPolyDataWriter::WriteTo(const std::string& path, const std::string
   const int ok = write();
   if (!ok || errors->HasErrors() || writer->GetErrorCode() != vtkErrorCode::NoError) {
     std::string why = errors->Joined();
+    if (why.empty()) why = ioError;
     if (why.empty()) why = vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode());
     // Name the file the user asked for, not the temporary one.
     for (size_t at; (at = why.find(path)) != std::string::npos;) why.replace(at, path.size(), this->FileName);

@@ -3,11 +3,13 @@
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"
 #include "MedialSkeletonData.h"
+#include "MedialSketchData.h"
 #include "vtkMedialINRReader.h"
 #include "vtkMedialITKImageReader.h"
 #include "vtkMedialInVesaliusReader.h"
 #include "vtkMedialOFFReader.h"
 #include "vtkMedialSWCReader.h"
+#include "vtkMedialSketchReader.h"
 
 #include <vtkBYUReader.h>
 #include <vtkCompositeDataGeometryFilter.h>
@@ -39,7 +41,7 @@ vtkStandardNewMacro(vtkMedialReader);
 namespace {
 
 const std::set<std::string> kMeshExtensions = {".vtp", ".vtk", ".vtu", ".obj", ".ply", ".stl", ".off",
-                                               ".g",   ".byu", ".gltf", ".glb", ".swc"};
+                                               ".g",   ".byu", ".gltf", ".glb", ".swc", ".txt"};
 const std::set<std::string> kVolumeExtensions = {".nii", ".nii.gz", ".mha", ".mhd", ".nrrd", ".nhdr", ".gipl",
                                                  ".dcm", ".inr", ".inr.gz", ".vti", ".inv3"};
 
@@ -100,6 +102,8 @@ bool vtkMedialReader::CanReadFile(const char* fileName) {
 const char* vtkMedialReader::GetMeshExtensions() {
   return "*.vtp *.vtk *.vtu *.obj *.ply *.stl *.off *.g *.byu *.gltf *.glb *.swc";
 }
+
+const char* vtkMedialReader::GetSketchExtensions() { return "*.txt"; }
 
 const char* vtkMedialReader::GetVolumeExtensions() {
   return "*.nii *.nii.gz *.mha *.mhd *.nrrd *.nhdr *.gipl *.dcm *.inr *.inr.gz *.vti *.inv3";
@@ -177,7 +181,7 @@ void vtkMedialReader::ReadFile() {
   const std::string extension = medial::fileExtension(path);
   if (!CanReadFile(path.c_str())) {
     this->ErrorMessage = path + ": unsupported file type '" + extension + "' (meshes: " + GetMeshExtensions() +
-                         "; volumes: " + GetVolumeExtensions() + ")";
+                         "; volumes: " + GetVolumeExtensions() + "; sketches: " + GetSketchExtensions() + ")";
     return;
   }
   this->UpdateProgress(0.05);
@@ -229,6 +233,10 @@ vtkSmartPointer<vtkDataObject> vtkMedialReader::ReadPolyData(const std::string& 
     auto merge = vtkSmartPointer<vtkCompositeDataGeometryFilter>::New();
     merge->SetInputConnection(r->GetOutputPort());
     reader = merge;
+  } else if (extension == ".txt") {  // a sketch: strokes with placements
+    auto r = vtkSmartPointer<vtkMedialSketchReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
   } else {  // .swc
     auto r = vtkSmartPointer<vtkMedialSWCReader>::New();
     r->SetFileName(path.c_str());
@@ -258,7 +266,7 @@ vtkSmartPointer<vtkDataObject> vtkMedialReader::ReadPolyData(const std::string& 
     this->ErrorMessage = path + ": the file holds no mesh (no points or no cells)";
     return nullptr;
   }
-  if (medial::looksLikeSkeleton(polyData)) {
+  if (medial::looksLikeSkeleton(polyData) && !medial::isSketch(polyData)) {
     medial::Skeleton skeleton;
     if (!medial::skeletonFromPolyData(polyData, skeleton, error)) {
       this->ErrorMessage = path + ": " + error;

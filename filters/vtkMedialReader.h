@@ -5,11 +5,13 @@
  * Meshes and skeletons (output vtkPolyData): .vtp .vtk .vtu (its surface) .obj .ply .stl .g/.byu and
  * .gltf/.glb (the scene's meshes merged, node transforms applied) through VTK's readers, .off
  * (OFF/COFF/NOFF...) through OpenMesh (vtkMedialOFFReader), .swc (vtkMedialSWCReader).
+ * Sketches (output vtkPolyData of strokes with cell data `Placement`): .txt (vtkMedialSketchReader).
  * Volumes (output vtkImageData, physical coordinates kept): .nii .nii.gz .mha .mhd .nrrd .nhdr .gipl .dcm
  * and DICOM series directories through ITK (vtkMedialITKImageReader), .inr .inr.gz through CGAL
  * (vtkMedialINRReader), .vti through VTK, .inv3 InVesalius projects (vtkMedialInVesaliusReader).
  *
- * A polydata with lines and no polygons is a skeleton and is validated (GUIDE §2). Errors (missing file,
+ * A polydata with lines and no polygons (not a sketch) is a skeleton and is validated
+ * (docs/ARCHITECTURE.md §4). Errors (missing file,
  * unknown extension, unreadable content, empty mesh, invalid skeleton) are reported with vtkErrorMacro
  * naming the file, and the output is empty.
  */
@@ -37,6 +39,8 @@ class MEDIALFILTERS_EXPORT vtkMedialReader : public vtkDataObjectAlgorithm {
   /// Space-separated supported extensions, e.g. for file dialogs: "*.vtp *.obj ...".
   static const char* GetMeshExtensions();
   static const char* GetVolumeExtensions();
+  /// "*.txt": sketches, strokes with their placements.
+  static const char* GetSketchExtensions();
 
   /// The last error in one line (empty after a successful read), without VTK's file/line prefix.
   const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }

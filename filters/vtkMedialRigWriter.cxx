@@ -68,13 +68,9 @@ void vtkMedialRigWriter::WriteData() {
     vtkErrorMacro(<< this->FileName << ": " << error);
     return this->Fail(vtkErrorCode::UnknownError);
   }
-  auto triangulate = vtkSmartPointer<vtkTriangleFilter>::New();
-  triangulate->SetInputData(mesh);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  rig.mesh = medial::toTriangleMesh(triangulate->GetOutput());
-  vtkDataArray* triangulatedWeights = triangulate->GetOutput()->GetPointData()->GetArray("SkinWeights");
+  const vtkSmartPointer<vtkPolyData> triangles = medial::triangulated(mesh);
+  rig.mesh = medial::toTriangleMesh(triangles);
+  vtkDataArray* triangulatedWeights = triangles->GetPointData()->GetArray("SkinWeights");
   rig.weights.resize(triangulatedWeights->GetNumberOfTuples(), triangulatedWeights->GetNumberOfComponents());
   for (vtkIdType v = 0; v < triangulatedWeights->GetNumberOfTuples(); ++v)
     for (int bone = 0; bone < triangulatedWeights->GetNumberOfComponents(); ++bone)
@@ -82,11 +78,12 @@ void vtkMedialRigWriter::WriteData() {
 
   medial::RigExportOptions options;
   options.maxInfluences = this->MaxInfluences;
-  const std::string temporary = medial::temporarySiblingName(this->FileName);
-  error = medial::exportRig(rig, temporary, medial::rigFormatForFile(this->FileName), options);
-  if (error.empty()) medial::replaceFile(temporary, this->FileName, error);
-  if (!error.empty()) {
-    std::remove(temporary.c_str());
+  const std::string format = medial::rigFormatForFile(this->FileName);
+  const auto write = [&](const std::string& temporary, std::string& why) {
+    why = medial::exportRig(rig, temporary, format, options);
+    return why.empty();
+  };
+  if (!medial::writeAtomically(this->FileName, write, error)) {
     vtkErrorMacro(<< this->FileName << ": " << error);
     return this->Fail(vtkErrorCode::CannotOpenFileError);
   }

@@ -1,6 +1,8 @@
 #include "vtkMedialSQM.h"
 
 #include "MedialSkeletonData.h"
+#include "MedialMeshData.h"
+#include "common/NameList.h"
 #include "sqm/SqmMesher.h"
 
 #include <vtkCellArray.h>
@@ -23,14 +25,45 @@ void vtkMedialSQM::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Capsules: " << this->Capsules << "\n";
   os << indent << "PairTriangles: " << this->PairTriangles << "\n";
   os << indent << "SubdivisionLevels: " << this->SubdivisionLevels << "\n";
-  os << indent << "SharpScaling: " << this->SharpScaling << " (minimum " << this->SharpMinimumScale << ")\n";
+  os << indent << "SharpScaling: " << this->SharpScaling << "\n";
+  os << indent << "SharpMinimumScale: " << this->SharpMinimumScale << "\n";
   os << indent << "FoldRepair: " << this->FoldRepair << "\n";
 }
+
+vtkMedialSQM::vtkMedialSQM() {
+  const medial::SqmParameters defaults;
+  this->Smoothing = medial::lieSmoothingName(defaults.smoothing);
+  this->Pairing = medial::ringPairingName(defaults.pairing);
+  this->LinearRingVertices = defaults.linearRingVertices;
+  this->Capsules = defaults.capsules;
+  this->PairTriangles = defaults.pairTriangles;
+  this->SubdivisionLevels = defaults.subdivisionLevels;
+  this->SharpScaling = defaults.sharpScaling.enabled;
+  this->SharpMinimumScale = defaults.sharpScaling.minimumScale;
+  this->FoldRepair = defaults.foldRepair;
+}
+
+medial::SqmParameters vtkMedialSQM::MakeParameters() const {
+  medial::SqmParameters p;
+  medial::parseLieSmoothing(this->Smoothing, p.smoothing);  // the setters accept known names only
+  medial::parseRingPairing(this->Pairing, p.pairing);
+  p.linearRingVertices = this->LinearRingVertices;
+  p.capsules = this->Capsules;
+  p.pairTriangles = this->PairTriangles;
+  p.subdivisionLevels = this->SubdivisionLevels;
+  p.sharpScaling.enabled = this->SharpScaling;
+  p.sharpScaling.minimumScale = this->SharpMinimumScale;
+  p.foldRepair = this->FoldRepair;
+  return p;
+}
+
+std::string vtkMedialSQM::GetSmoothingNames() { return medial::joinNames(medial::lieSmoothingNames()); }
+std::string vtkMedialSQM::GetPairingNames() { return medial::joinNames(medial::ringPairingNames()); }
 
 void vtkMedialSQM::SetSmoothing(const std::string& name) {
   medial::LieSmoothing smoothing;
   if (!medial::parseLieSmoothing(name, smoothing)) {
-    vtkErrorMacro(<< "unknown smoothing '" << name << "' (quaternion, averaging, area-laplacian, valency-laplacian)");
+    vtkErrorMacro(<< "unknown smoothing '" << name << "' (" << GetSmoothingNames() << ")");
     return;
   }
   if (name != this->Smoothing) {
@@ -42,7 +75,7 @@ void vtkMedialSQM::SetSmoothing(const std::string& name) {
 void vtkMedialSQM::SetPairing(const std::string& name) {
   medial::RingPairing pairing;
   if (!medial::parseRingPairing(name, pairing)) {
-    vtkErrorMacro(<< "unknown pairing '" << name << "' (total-distance, distance, angle)");
+    vtkErrorMacro(<< "unknown pairing '" << name << "' (" << GetPairingNames() << ")");
     return;
   }
   if (name != this->Pairing) {
@@ -62,17 +95,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   }
   this->MergedNodes = 0;
   this->FoldRepairedVertices = 0;
-  medial::SqmParameters p;
-  medial::parseLieSmoothing(this->Smoothing, p.smoothing);
-  medial::parseRingPairing(this->Pairing, p.pairing);
-  p.linearRingVertices = this->LinearRingVertices;
-  p.capsules = this->Capsules;
-  p.pairTriangles = this->PairTriangles;
-  p.subdivisionLevels = this->SubdivisionLevels;
-  p.sharpScaling.enabled = this->SharpScaling;
-  p.foldRepair = this->FoldRepair;
-  p.sharpScaling.minimumScale = this->SharpMinimumScale;
-  const medial::SqmResult result = medial::sqmMesh(skeleton, p, [this](double f) {
+  const medial::SqmResult result = medial::sqmMesh(skeleton, this->MakeParameters(), [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
   });
@@ -82,19 +105,10 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   }
   this->MergedNodes = result.mergedNodes;
   this->FoldRepairedVertices = result.foldRepairedVertices;
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  for (const auto& v : result.mesh.vertices) points->InsertNextPoint(v.x(), v.y(), v.z());
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& face : result.mesh.faces) {
-    polys->InsertNextCell(vtkIdType(face.size()));
-    for (int v : face) polys->InsertCellPoint(v);
-  }
-  auto nodes = vtkSmartPointer<vtkIntArray>::New();
-  nodes->SetName("SkeletonNode");
-  for (int node : result.mesh.vertexNode) nodes->InsertNextValue(node);
-  output->SetPoints(points);
-  output->SetPolys(polys);
-  output->GetPointData()->AddArray(nodes);
+  // Points and polygons only: the field data the pipeline passed on from the input (`Root`) stays.
+  const vtkSmartPointer<vtkPolyData> mesh = medial::polyDataFromPolygons(result.mesh.vertices, result.mesh.faces);
+  output->SetPoints(mesh->GetPoints());
+  output->SetPolys(mesh->GetPolys());
+  output->GetPointData()->AddArray(medial::intArray("SkeletonNode", result.mesh.vertexNode));
   return 1;
 }

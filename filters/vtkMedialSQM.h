@@ -3,7 +3,7 @@
  * @brief Skeleton to quad-dominant mesh (SQM, with the extensions of the CESCG 2014 paper): a skeleton
  * with `Radius` per node becomes a closed manifold mesh of quads, triangles only in the leaf fans.
  *
- * Input: a skeleton (GUIDE §2: nodes, 2-point lines, `Radius`, optional `EllipsoidAxes` and `Root`).
+ * Input: a skeleton (docs/ARCHITECTURE.md §4: nodes, 2-point lines, `Radius`, optional `EllipsoidAxes` and `Root`).
  * Output: a polygonal mesh of quads and triangles (not triangulated), outward oriented, with point data
  * `SkeletonNode` (int: the input node each vertex belongs to). Several components are meshed each.
  * Cycles are meshed (a genus-g surface for g independent cycles). Repairs: self-loop edges are dropped,
@@ -22,18 +22,26 @@
 
 #include <string>
 
+namespace medial {
+struct SqmParameters;
+}
+
 class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
  public:
   static vtkMedialSQM* New();
   vtkTypeMacro(vtkMedialSQM, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// LIE smoothing after each split: quaternion (default), averaging, area-laplacian, valency-laplacian.
+  /// LIE smoothing after each split, one of GetSmoothingNames(): quaternion (default), averaging,
+  /// area-laplacian, valency-laplacian. An unknown name is an error and leaves the smoothing as it was.
   void SetSmoothing(const std::string& name);
   std::string GetSmoothing() const { return this->Smoothing; }
-  /// Pairing of a tube's last ring with a polyhedron: total-distance (default), distance, angle.
+  static std::string GetSmoothingNames();
+  /// Pairing of a tube's last ring with a polyhedron, one of GetPairingNames(): total-distance
+  /// (default), distance, angle.
   void SetPairing(const std::string& name);
   std::string GetPairing() const { return this->Pairing; }
+  static std::string GetPairingNames();
   /// N: vertices of the ring of a skeleton without branch nodes (default 8).
   vtkSetClampMacro(LinearRingVertices, int, 3, 1024);
   vtkGetMacro(LinearRingVertices, int);
@@ -70,23 +78,27 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkGetMacro(FoldRepairedVertices, int);
 
  protected:
-  vtkMedialSQM() = default;
+  vtkMedialSQM();
   ~vtkMedialSQM() override = default;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
  private:
   vtkMedialSQM(const vtkMedialSQM&) = delete;
   void operator=(const vtkMedialSQM&) = delete;
+  // The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
+  medial::SqmParameters MakeParameters() const;
 
-  std::string Smoothing = "quaternion";
-  std::string Pairing = "total-distance";
-  int LinearRingVertices = 8;
-  bool Capsules = false;
-  bool PairTriangles = true;
-  int SubdivisionLevels = 0;
-  bool SharpScaling = false;
-  double SharpMinimumScale = 0.8;
+  // Parameters: defaults from medial::SqmParameters (the constructor).
+  std::string Smoothing;
+  std::string Pairing;
+  int LinearRingVertices;
+  bool Capsules;
+  bool PairTriangles;
+  int SubdivisionLevels;
+  bool SharpScaling;
+  double SharpMinimumScale;
+  bool FoldRepair;
+  // Figures of the last update.
   int MergedNodes = 0;
-  bool FoldRepair = true;
   int FoldRepairedVertices = 0;
 };

@@ -1,6 +1,7 @@
 #include "vtkMedialSWCReader.h"
 
 #include "MedialSkeletonData.h"
+#include "MedialTextFile.h"
 
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -9,8 +10,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
-#include <fstream>
-#include <sstream>
+#include <cmath>
 #include <unordered_map>
 
 vtkStandardNewMacro(vtkMedialSWCReader);
@@ -31,36 +31,14 @@ struct SwcRecord {
   int line;
 };
 
-// Parses one non-comment line; returns false when it does not hold the seven SWC fields.
+// Parses one non-comment line; returns false when it does not hold the seven SWC fields (id, type and
+// parent whole numbers).
 bool parseSwcLine(const std::string& text, SwcRecord& r) {
-  std::istringstream in(text);
-  std::string fields[7];
-  for (std::string& f : fields)
-    if (!(in >> f)) return false;
-  std::string extra;
-  if (in >> extra) return false;
-  try {
-    size_t used = 0;
-    auto wholeInteger = [&](const std::string& s) {
-      const long v = std::stol(s, &used);
-      if (used != s.size()) throw std::invalid_argument(s);
-      return v;
-    };
-    auto wholeReal = [&](const std::string& s) {
-      const double v = std::stod(s, &used);  // accepts "nan" and "inf": validation reports them
-      if (used != s.size()) throw std::invalid_argument(s);
-      return v;
-    };
-    r.id = wholeInteger(fields[0]);
-    r.type = wholeInteger(fields[1]);
-    r.x = wholeReal(fields[2]);
-    r.y = wholeReal(fields[3]);
-    r.z = wholeReal(fields[4]);
-    r.radius = wholeReal(fields[5]);
-    r.parent = wholeInteger(fields[6]);
-  } catch (const std::exception&) {
-    return false;
-  }
+  std::vector<double> f;
+  if (!medial::parseNumbers(text, f) || f.size() != 7) return false;
+  for (int whole : {0, 1, 6})
+    if (!(std::abs(f[size_t(whole)]) < 1e15) || f[size_t(whole)] != std::floor(f[size_t(whole)])) return false;
+  r = {long(f[0]), long(f[1]), f[2], f[3], f[4], f[5], long(f[6]), 0};
   return true;
 }
 
@@ -68,31 +46,26 @@ bool parseSwcLine(const std::string& text, SwcRecord& r) {
 
 int vtkMedialSWCReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (this->FileName.empty()) {
-    vtkErrorMacro(<< "no file name given");
-    return 0;
-  }
-  std::ifstream file(this->FileName);
-  if (!file) {
-    vtkErrorMacro(<< this->FileName << ": cannot open the file");
+  medial::TextFile file;
+  std::string error;
+  if (!file.open(this->FileName, error)) {
+    vtkErrorMacro(<< error);
     return 0;
   }
 
   std::vector<SwcRecord> records;
   std::unordered_map<long, int> indexOfId;
   std::string text;
-  for (int lineNumber = 1; std::getline(file, text); ++lineNumber) {
-    const size_t first = text.find_first_not_of(" \t\r");
-    if (first == std::string::npos || text[first] == '#') continue;
+  while (file.nextLine(text)) {
+    if (medial::isBlank(text)) continue;
     SwcRecord r;
     if (!parseSwcLine(text, r)) {
-      vtkErrorMacro(<< this->FileName << ":" << lineNumber
-                    << ": expected 'id type x y z radius parent' (7 numbers), got '" << text << "'");
+      vtkErrorMacro(<< file.where() << "expected 'id type x y z radius parent' (7 numbers), got '" << text << "'");
       return 0;
     }
-    r.line = lineNumber;
+    r.line = file.lineNumber();
     if (!indexOfId.emplace(r.id, static_cast<int>(records.size())).second) {
-      vtkErrorMacro(<< this->FileName << ":" << lineNumber << ": node id " << r.id << " appears twice");
+      vtkErrorMacro(<< file.where() << "node id " << r.id << " appears twice");
       return 0;
     }
     records.push_back(r);

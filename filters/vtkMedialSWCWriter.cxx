@@ -99,11 +99,10 @@ bool vtkMedialSWCWriter::WriteSkeleton() {
   std::vector<int> swcId(skeleton.nodeCount());
   for (size_t k = 0; k < order.size(); ++k) swcId[order[k]] = static_cast<int>(k) + 1;
 
-  const std::string temporary = medial::temporarySiblingName(this->FileName);
-  {
+  const auto write = [&](const std::string& temporary, std::string& why) {
     std::ofstream out(temporary);
     if (!out) {
-      vtkErrorMacro(<< this->FileName << ": cannot write to this location");
+      why = "cannot write to this location";
       return false;
     }
     out << "# SWC written by Medial: id type x y z radius parent\n" << std::setprecision(17);
@@ -114,14 +113,13 @@ bool vtkMedialSWCWriter::WriteSkeleton() {
           << ' ' << (parent[v] < 0 ? -1 : swcId[parent[v]]) << '\n';
     }
     if (!out.flush()) {
-      out.close();
-      std::remove(temporary.c_str());
-      vtkErrorMacro(<< this->FileName << ": write failed (disk full?)");
+      why = "write failed (disk full?)";
       return false;
     }
-  }
-  if (!medial::replaceFile(temporary, this->FileName, error)) {
-    vtkErrorMacro(<< error);
+    return true;
+  };
+  if (!medial::writeAtomically(this->FileName, write, error)) {
+    vtkErrorMacro(<< this->FileName << ": " << error);
     return false;
   }
   return true;

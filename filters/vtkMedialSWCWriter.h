@@ -1,11 +1,11 @@
 /**
  * @class vtkMedialSWCWriter
- * @brief Writes a GUIDE §2 skeleton polydata as SWC (`id type x y z radius parent`).
+ * @brief Writes a docs/ARCHITECTURE.md §4 skeleton polydata as SWC (`id type x y z radius parent`).
  *
  * SWC stores forests: every component is written as a tree rooted at `Root` (or, for components without
  * it, at their lowest node id), ids 1-based in breadth-first order so that a parent precedes its
  * children. The type column comes from `SWCType` when present, else `DefaultType` (0, "undefined").
- * Errors (empty output file never left behind): no `Radius` array, invalid skeleton (GUIDE §2), or a cycle,
+ * Errors (empty output file never left behind): no `Radius` array, invalid skeleton (docs/ARCHITECTURE.md §4), or a cycle,
  * which SWC cannot represent. The file is written to a temporary name and renamed on success.
  */
 #pragma once

@@ -4,6 +4,7 @@
 
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"
+#include "MedialSketchData.h"
 #include "MedialSkeletonData.h"
 #include "MedialXDisplay.h"
 #include "vtkMedialGhostPass.h"
@@ -109,6 +110,8 @@ vtkProp3D* vtkMedialScene::AddData(vtkDataObject* data) {
       return nullptr;
     }
     GetPaletteColor(this->ColorIndex++, rgb);
+    if (medial::isSketch(polyData))  // strokes, drawn where their placements put them
+      return this->AddSkeleton(medial::placedStrokes(polyData), rgb);
     return IsSkeleton(polyData) ? this->AddSkeleton(polyData, rgb) : this->AddMesh(polyData, rgb);
   }
   if (auto* image = vtkImageData::SafeDownCast(data)) {
@@ -322,26 +325,22 @@ bool vtkMedialScene::RenderToImage(const char* fileName, int width, int height) 
   grab->Update();
 
   const std::string target = fileName;
-  const std::string temporary = medial::temporarySiblingName(target);
-  auto writer = vtkSmartPointer<vtkPNGWriter>::New();
-  writer->SetFileName(temporary.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  auto errors = medial::ErrorCollector::Watch(writer);
-  writer->Write();
+  const auto write = [&](const std::string& temporary, std::string& why) {
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+    writer->SetFileName(temporary.c_str());
+    writer->SetInputConnection(grab->GetOutputPort());
+    auto errors = medial::ErrorCollector::Watch(writer);
+    writer->Write();
+    if (errors->HasErrors()) why = target + ": cannot write the image (" + errors->Joined() + ")";
+    return !errors->HasErrors();
+  };
+  std::string error;
+  const bool written = medial::writeAtomically(target, write, error);
   window->RemoveRenderer(this->Renderer);
   grab = nullptr;
   window->Finalize();  // before its X connection closes
   window = nullptr;
   medial::closeXDisplay(ownDisplay);
-  std::string error;
-  if (errors->HasErrors()) {
-    std::remove(temporary.c_str());
-    vtkErrorMacro(<< target << ": cannot write the image (" << errors->Joined() << ")");
-    return false;
-  }
-  if (!medial::replaceFile(temporary, target, error)) {
-    vtkErrorMacro(<< error);
-    return false;
-  }
-  return true;
+  if (!written) vtkErrorMacro(<< error);
+  return written;
 }

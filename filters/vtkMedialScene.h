@@ -74,7 +74,7 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   /// alone would abort the process).
   void SetDisplayId(void* display) { this->DisplayId = display; }
 
-  /// A skeleton is a polydata with lines and no polygons (GUIDE §2).
+  /// A skeleton is a polydata with lines and no polygons (docs/ARCHITECTURE.md §4).
   static bool IsSkeleton(vtkPolyData* polyData);
 
   /// RGB of palette entry i (cycles).

@@ -1,5 +1,7 @@
 #include "vtkMedialSketchReader.h"
 
+#include "MedialTextFile.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -11,9 +13,6 @@
 #include <vtkSmartPointer.h>
 
 #include <array>
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkMedialSketchReader);
@@ -33,39 +32,21 @@ struct Part {
   int firstLine = 0;
 };
 
-// The numbers of a line (strtod: "nan" and "inf" are read as such), or false when a field is no number.
-bool parseNumbers(const std::string& text, std::vector<double>& numbers) {
-  numbers.clear();
-  std::istringstream fields(text);
-  std::string field;
-  while (fields >> field) {
-    char* end = nullptr;
-    const double value = std::strtod(field.c_str(), &end);
-    if (end == field.c_str() || *end != '\0') return false;
-    numbers.push_back(value);
-  }
-  return true;
-}
-
 }  // namespace
 
 int vtkMedialSketchReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (this->FileName.empty()) {
-    vtkErrorMacro(<< "no file name given");
-    return 0;
-  }
-  std::ifstream file(this->FileName);
-  if (!file) {
-    vtkErrorMacro(<< this->FileName << ": cannot open the file");
+  medial::TextFile file;
+  std::string error;
+  if (!file.open(this->FileName, error)) {
+    vtkErrorMacro(<< error);
     return 0;
   }
   std::vector<Part> parts(1);
   std::string text;
   std::vector<double> numbers;
-  for (int lineNumber = 1; std::getline(file, text); ++lineNumber) {
-    const size_t hash = text.find('#');
-    if (hash != std::string::npos) text.erase(hash);
+  while (file.nextLine(text)) {
+    const int lineNumber = file.lineNumber();
     if (text.find_first_not_of(" \t\r,") == std::string::npos) {
       if (!parts.back().points.empty()) parts.emplace_back();  // a blank line ends a part
       continue;
@@ -73,8 +54,8 @@ int vtkMedialSketchReader::RequestData(vtkInformation*, vtkInformationVector**, 
     for (char& c : text)
       if (c == ',') c = ' ';
     Part& part = parts.back();
-    const std::string where = this->FileName + ":" + std::to_string(lineNumber) + ": ";
-    if (!parseNumbers(text, numbers) || (numbers.size() != 2 && numbers.size() != 4)) {
+    const std::string where = file.where();
+    if (!medial::parseNumbers(text, numbers) || (numbers.size() != 2 && numbers.size() != 4)) {
       vtkErrorMacro(<< where << "expected 'x y' (a stroke point) or four numbers (a row of the placement matrix), got '" << text << "'");
       return 0;
     }

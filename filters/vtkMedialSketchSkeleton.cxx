@@ -1,5 +1,6 @@
 #include "vtkMedialSketchSkeleton.h"
 
+#include "MedialMeshData.h"
 #include "MedialSkeletonData.h"
 #include "sketch/SketchSkeleton.h"
 
@@ -17,7 +18,35 @@
 
 vtkStandardNewMacro(vtkMedialSketchSkeleton);
 
-vtkMedialSketchSkeleton::vtkMedialSketchSkeleton() { this->SetNumberOfOutputPorts(2); }
+vtkMedialSketchSkeleton::vtkMedialSketchSkeleton() {
+  this->SetNumberOfOutputPorts(2);
+  const medial::SketchParameters defaults;
+  this->SimplificationThreshold = defaults.thresholds.simplification;
+  this->MergingThreshold = defaults.thresholds.merging;
+  this->PruningThreshold = defaults.thresholds.pruning;
+  this->CollapsingThreshold = defaults.thresholds.collapsing;
+  this->UnitLength = defaults.unitLength;
+  this->ResampleStep = defaults.resampleStep;
+  this->PolygonTolerance = defaults.polygonTolerance;
+  this->ShapeWeight = defaults.shapeWeight;
+  this->Thickness = defaults.thickness;
+  this->MeshEdgeLength = defaults.meshEdgeLength;
+  this->Inflate = defaults.inflate;
+}
+
+medial::SketchParameters vtkMedialSketchSkeleton::MakeParameters() const {
+  medial::SketchParameters p;
+  p.thresholds = {this->SimplificationThreshold, this->MergingThreshold, this->PruningThreshold,
+                  this->CollapsingThreshold};
+  p.unitLength = this->UnitLength;
+  p.resampleStep = this->ResampleStep;
+  p.polygonTolerance = this->PolygonTolerance;
+  p.shapeWeight = this->ShapeWeight;
+  p.thickness = this->Thickness;
+  p.meshEdgeLength = this->MeshEdgeLength;
+  p.inflate = this->Inflate;
+  return p;
+}
 
 void vtkMedialSketchSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
@@ -25,8 +54,10 @@ void vtkMedialSketchSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "MergingThreshold: " << this->MergingThreshold << "\n";
   os << indent << "PruningThreshold: " << this->PruningThreshold << "\n";
   os << indent << "CollapsingThreshold: " << this->CollapsingThreshold << "\n";
-  os << indent << "PartThresholds: " << this->PartThresholds.size() << " parts\n";
-  os << indent << "BranchThresholds: " << this->BranchThresholds.size() << " branches\n";
+  for (const auto& [part, t] : this->PartThresholds)
+    os << indent << "PartThresholds[" << part << "]: " << t[0] << " " << t[1] << " " << t[2] << " " << t[3] << "\n";
+  for (const auto& [key, value] : this->BranchThresholds)
+    os << indent << "BranchSimplification[" << key.first << ", " << key.second << "]: " << value << "\n";
   os << indent << "UnitLength: " << this->UnitLength << "\n";
   os << indent << "ResampleStep: " << this->ResampleStep << "\n";
   os << indent << "PolygonTolerance: " << this->PolygonTolerance << "\n";
@@ -54,14 +85,6 @@ void vtkMedialSketchSkeleton::ClearLocalThresholds() {
 }
 
 namespace {
-
-vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values) {
-  auto array = vtkSmartPointer<vtkIntArray>::New();
-  array->SetName(name);
-  array->SetNumberOfValues(vtkIdType(values.size()));
-  for (size_t i = 0; i < values.size(); ++i) array->SetValue(vtkIdType(i), values[i]);
-  return array;
-}
 
 // The strokes of the input's line cells, with their placements.
 bool readStrokes(vtkPolyData* input, std::vector<medial::SketchPart>& parts, std::string& error) {
@@ -113,16 +136,7 @@ int vtkMedialSketchSkeleton::RequestData(vtkInformation*, vtkInformationVector**
     if (part >= 0 && part < int(parts.size())) parts[part].thresholds = medial::RefinementThresholds{t[0], t[1], t[2], t[3]};
   for (const auto& [key, value] : this->BranchThresholds)
     if (key.first >= 0 && key.first < int(parts.size())) parts[key.first].branchSimplification[key.second] = value;
-  medial::SketchParameters p;
-  p.thresholds = {this->SimplificationThreshold, this->MergingThreshold, this->PruningThreshold, this->CollapsingThreshold};
-  p.unitLength = this->UnitLength;
-  p.resampleStep = this->ResampleStep;
-  p.polygonTolerance = this->PolygonTolerance;
-  p.shapeWeight = this->ShapeWeight;
-  p.thickness = this->Thickness;
-  p.meshEdgeLength = this->MeshEdgeLength;
-  p.inflate = this->Inflate;
-  const medial::SketchResult result = medial::sketchSkeleton(parts, p, [this](double f) {
+  const medial::SketchResult result = medial::sketchSkeleton(parts, this->MakeParameters(), [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
   });
@@ -132,23 +146,14 @@ int vtkMedialSketchSkeleton::RequestData(vtkInformation*, vtkInformationVector**
   }
   const medial::SketchGraph& graph = result.graph;
   skeletonOutput->ShallowCopy(medial::polyDataFromSkeleton(graph.skeleton));
-  skeletonOutput->GetPointData()->AddArray(intArray("Part", graph.nodePart));
-  skeletonOutput->GetCellData()->AddArray(intArray("Part", graph.edgePart));
-  skeletonOutput->GetCellData()->AddArray(intArray("Branch", graph.edgeBranch));
-
+  skeletonOutput->GetPointData()->AddArray(medial::intArray("Part", graph.nodePart));
+  skeletonOutput->GetCellData()->AddArray(medial::intArray("Part", graph.edgePart));
+  skeletonOutput->GetCellData()->AddArray(medial::intArray("Branch", graph.edgeBranch));
   if (this->Inflate) {
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToDouble();
-    for (int v = 0; v < result.mesh.vertices.rows(); ++v)
-      points->InsertNextPoint(result.mesh.vertices(v, 0), result.mesh.vertices(v, 1), result.mesh.vertices(v, 2));
-    auto triangles = vtkSmartPointer<vtkCellArray>::New();
-    for (int f = 0; f < result.mesh.faces.rows(); ++f) {
-      const vtkIdType ids[3] = {result.mesh.faces(f, 0), result.mesh.faces(f, 1), result.mesh.faces(f, 2)};
-      triangles->InsertNextCell(3, ids);
-    }
-    meshOutput->SetPoints(points);
-    meshOutput->SetPolys(triangles);
-    meshOutput->GetPointData()->AddArray(intArray("Part", result.meshVertexPart));
+    const vtkSmartPointer<vtkPolyData> mesh = medial::polyDataFromMesh(result.mesh);
+    meshOutput->SetPoints(mesh->GetPoints());  // the input's field data, passed on by the pipeline, stays
+    meshOutput->SetPolys(mesh->GetPolys());
+    meshOutput->GetPointData()->AddArray(medial::intArray("Part", result.meshVertexPart));
   }
   return 1;
 }

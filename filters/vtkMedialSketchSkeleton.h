@@ -6,7 +6,7 @@
  * Input: a polydata whose line cells are closed 2-D strokes (x, y; z ignored), one per part in modelling
  * order, optionally with cell data `Placement` (16 doubles, row-major 4x4 matrix placing the stroke's plane
  * in 3-D), as vtkMedialSketchReader produces.
- * Output port 0: the skeleton (GUIDE §2: `Radius` from the inscribed balls, `NodeType`, field `Root`),
+ * Output port 0: the skeleton (docs/ARCHITECTURE.md §4: `Radius` from the inscribed balls, `NodeType`, field `Root`),
  * with point data `Part` (int) and cell data `Part` and `Branch` (int: the branch of the part's local
  * skeleton, -1 for the bones joining parts). Ready for vtkMedialSQM.
  * Output port 1: the inflated parts, closed triangle meshes, point data `Part`.
@@ -25,6 +25,10 @@
 #include <array>
 #include <map>
 #include <utility>
+
+namespace medial {
+struct SketchParameters;
+}
 
 class MEDIALFILTERS_EXPORT vtkMedialSketchSkeleton : public vtkPolyDataAlgorithm {
  public:
@@ -80,18 +84,21 @@ class MEDIALFILTERS_EXPORT vtkMedialSketchSkeleton : public vtkPolyDataAlgorithm
  private:
   vtkMedialSketchSkeleton(const vtkMedialSketchSkeleton&) = delete;
   void operator=(const vtkMedialSketchSkeleton&) = delete;
+  // The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
+  medial::SketchParameters MakeParameters() const;
 
-  double SimplificationThreshold = 5;
-  double MergingThreshold = 30;
-  double PruningThreshold = 30;
-  double CollapsingThreshold = 10;
-  double UnitLength = 0;
-  double ResampleStep = 10;
-  double PolygonTolerance = 2;
-  double ShapeWeight = 1;
-  double Thickness = 2;
-  double MeshEdgeLength = 10;
-  bool Inflate = true;
+  // Parameters: defaults from medial::SketchParameters (the constructor).
+  double SimplificationThreshold;
+  double MergingThreshold;
+  double PruningThreshold;
+  double CollapsingThreshold;
+  double UnitLength;
+  double ResampleStep;
+  double PolygonTolerance;
+  double ShapeWeight;
+  double Thickness;
+  double MeshEdgeLength;
+  bool Inflate;
   std::map<int, std::array<double, 4>> PartThresholds;
   std::map<std::pair<int, int>, double> BranchThresholds;
 };

@@ -4,9 +4,9 @@
  *
  * Input: a 3-D vtkImageData (origin, spacing and direction honoured). The structure is the voxels equal to
  * Label (label images), or within [ThresholdLow, ThresholdHigh] (e.g. colon air -1024..-600 HU), or else
- * the non-zero voxels; with DropBorderParts (default on for thresholds) the parts touching the volume's
- * border go (the air outside the body); then the largest 26-connected component is kept and, with
- * FillHoles, its cavities are filled.
+ * the non-zero voxels; parts touching the volume's border go (BorderParts: automatically for a threshold,
+ * the air outside the body; or always, or never); then the largest 26-connected component is kept and,
+ * with FillHoles, its cavities are filled.
  * Output: one polyline from P0 (the seed, or the lowest end of the structure) along the structure, in
  * physical coordinates (mm), with point data `Radius` and `ArcLength` (mm).
  * With DetectBranches, one polyline per branch of a tree (see below). With ComputeSections (along the
@@ -17,22 +17,16 @@
  * point data `WallDistance` (mm from the axis), x = angle (spacing 360/rays degrees), y = arc length (spacing
  * SectionSpacing mm). Implements medial::tubeSections (src/centerline/TubeSections.h).
  * Errors (empty output): not a 3-D image, a label that no voxel has, nothing left after the clean-up, a
- * seed outside the structure. Implements medial::structureTube and medial::tskAxis (src/centerline).
+ * seed outside the structure. Implements medial::tskCenterline (src/centerline/TskCenterline.h), whose
+ * TskCenterlineParameters give every default.
  */
 #pragma once
 
 #include "MedialFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
-#include <Eigen/Core>
-
-#include <cstdint>
-#include <vector>
-
 namespace medial {
-struct BinaryVolume;
-struct Centerline;
-struct TskParameters;
+struct TskCenterlineParameters;
 }
 
 class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm {
@@ -47,10 +41,21 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   void SetThreshold(double low, double high);
   /// Use the non-zero voxels (the default).
   void SelectNonZero();
+  /// The selection: "label", "threshold" or "non-zero", and its values (the window defaults to colon
+  /// air on CT, -1024..-600 HU).
+  const char* GetSelectionName() const;
+  vtkGetMacro(Label, int);
+  vtkGetMacro(ThresholdLow, double);
+  vtkGetMacro(ThresholdHigh, double);
 
-  vtkSetMacro(DropBorderParts, bool);
-  vtkGetMacro(DropBorderParts, bool);
-  vtkBooleanMacro(DropBorderParts, bool);
+  /// Parts of the selection touching the volume's border: BORDER_PARTS_AUTOMATIC (the default: dropped
+  /// for a threshold selection, kept for a label or the non-zero voxels), BORDER_PARTS_DROP or
+  /// BORDER_PARTS_KEEP.
+  enum { BORDER_PARTS_AUTOMATIC = 0, BORDER_PARTS_DROP = 1, BORDER_PARTS_KEEP = 2 };
+  vtkSetClampMacro(BorderParts, int, BORDER_PARTS_AUTOMATIC, BORDER_PARTS_KEEP);
+  vtkGetMacro(BorderParts, int);
+  /// Whether the next update drops parts touching the border (BorderParts resolved for the selection).
+  bool GetDropBorderParts() const;
   vtkSetMacro(FillHoles, bool);
   vtkGetMacro(FillHoles, bool);
   vtkBooleanMacro(FillHoles, bool);
@@ -60,7 +65,7 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   void ClearSeed();
 
   /// Width of the TSK antecedent Gaussians relative to their cluster (default 0.3).
-  vtkSetMacro(AntecedentWidth, double);
+  vtkSetClampMacro(AntecedentWidth, double, 0.01, 10.0);
   vtkGetMacro(AntecedentWidth, double);
   /// Branching structures (vessels, airways; beyond the paper): the structure is cut where its Manhattan
   /// layers fall apart, each branch is followed by the TSK method, and the output has one polyline per
@@ -78,7 +83,7 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   vtkSetClampMacro(CenteringIterations, int, 0, 20);
   vtkGetMacro(CenteringIterations, int);
   /// Distance between output points in mm (0: the smallest voxel spacing).
-  vtkSetMacro(SampleSpacing, double);
+  vtkSetClampMacro(SampleSpacing, double, 0.0, 1e6);
   vtkGetMacro(SampleSpacing, double);
 
   /// Perpendicular sections and the unfolded wall on output ports 1 and 2 (default off).
@@ -104,32 +109,28 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
 
  private:
   vtkMedialTskCenterline(const vtkMedialTskCenterline&) = delete;
-  // The centerline of one tube (the paper), or of every branch of a tree; false after an error.
-  bool FollowTube(const medial::BinaryVolume& volume, int64_t seed, const medial::TskParameters& p,
-                  std::vector<medial::Centerline>& branches, std::vector<int>& parents);
-  bool FollowBranches(const medial::BinaryVolume& volume, int64_t seed, const medial::TskParameters& p,
-                      std::vector<medial::Centerline>& branches, std::vector<int>& parents);
-  // Fills output ports 1 (profile table) and 2 (unfolded wall); false after an error or an abort.
-  bool WriteSections(const medial::BinaryVolume& volume, const std::vector<Eigen::Vector3d>& axis,
-                     vtkInformationVector* outputVector);
   void operator=(const vtkMedialTskCenterline&) = delete;
+  // The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
+  medial::TskCenterlineParameters MakeParameters() const;
 
+  // Parameters: defaults from medial::TskCenterlineParameters (the constructor).
   enum class Selection { NonZero, Label, Threshold };
-  Selection Mode = Selection::NonZero;
-  int Label = 1;
-  double ThresholdLow = 0, ThresholdHigh = 0;
-  bool DropBorderParts = false;
-  bool FillHoles = false;
-  bool HasSeed = false;
+  Selection Mode;
+  int Label;
+  double ThresholdLow, ThresholdHigh;
+  int BorderParts;
+  bool FillHoles;
+  bool HasSeed;
   double Seed[3] = {0, 0, 0};
-  double AntecedentWidth = 0.3;
-  double SampleSpacing = 0;
-  int CenteringIterations = 2;
-  bool DetectBranches = false;
-  double MinimumBranchLength = 0;
-  bool ComputeSections = false;
-  double SectionSpacing = 1.0;
-  int SectionRays = 72;
+  double AntecedentWidth;
+  double SampleSpacing;
+  int CenteringIterations;
+  bool DetectBranches;
+  double MinimumBranchLength;
+  bool ComputeSections;
+  double SectionSpacing;
+  int SectionRays;
+  // Figures of the last update.
   int PrimitiveCenterlinePoints = 0;
   vtkIdType StructureVoxels = 0;
 };

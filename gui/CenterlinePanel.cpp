@@ -1,5 +1,6 @@
 #include "CenterlinePanel.h"
 
+#include "FilterDefaults.h"
 #include "ObjectList.h"
 #include "MedialTerrainImage.h"
 #include "vtkMedialTskCenterline.h"
@@ -33,26 +34,35 @@ namespace medial::gui {
 
 namespace {
 
+// Border-part rules in the order of vtkMedialTskCenterline's BORDER_PARTS_* values.
+const char* const kBorderParts = "automatic, drop, keep";
+
 std::vector<Parameter> centerlineParameters() {
   using P = Parameter;
+  const auto f = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  const char* border[] = {"automatic", "drop", "keep"};
   return {
-      P::choice("Selection", "Structure", {"label", "threshold", "non-zero"},
-                "Which voxels form the tube: one label, an intensity window (e.g. colon air), or all non-zero"),
-      P::integer("Label", "Label", 1, -1000000, 1000000, "Voxel value of the structure (label images)"),
-      P::real("ThresholdLow", "Threshold low", -1024, -1e6, 1e6, 1, "Lower end of the window (HU for CT)"),
-      P::real("ThresholdHigh", "Threshold high", -600, -1e6, 1e6, 1, "Upper end of the window (colon air: -600 HU)"),
-      P::toggle("DropBorderParts", "Drop border parts", true,
-                "Remove parts touching the volume border (the air outside the body), threshold mode"),
-      P::toggle("FillHoles", "Fill holes", false, "Fill cavities of the structure before the distance field"),
-      P::real("AntecedentWidth", "Antecedent width", 0.3, 0.01, 10, 3,
-              "Width of the TSK antecedent Gaussians relative to their cluster (§3, default 0.3)"),
-      P::toggle("DetectBranches", "Branching structure", false,
-                "Vessels, airways: one centerline per branch, joined at the junctions (beyond the paper)"),
-      P::integer("CenteringIterations", "Centering passes", 2, 0, 20,
-                 "Moves the TSK curve to the centre of its perpendicular sections (centricity, §2); 0: the paper's curve"),
-      P::real("SampleSpacing", "Output spacing (mm)", 0, 0, 100, 2, "Distance between output points; 0: smallest voxel"),
-      P::real("SectionSpacing", "Section spacing k (mm)", 1, 0.1, 100, 1,
-              "Perpendicular sections every k mm for the profile and the unfolded wall (§4, Figs. 14-15)"),
+      choiceOf("Selection", "Structure", "label, threshold, non-zero", f->GetSelectionName(),
+               "Which voxels form the tube: one label, an intensity window (e.g. colon air), or all non-zero"),
+      P::integer("Label", "Label", f->GetLabel(), -1000000, 1000000, "Voxel value of the structure (label images)"),
+      P::real("ThresholdLow", "Threshold low", f->GetThresholdLow(), -1e6, 1e6, 1, "Lower end of the window (HU for CT)"),
+      P::real("ThresholdHigh", "Threshold high", f->GetThresholdHigh(), -1e6, 1e6, 1,
+              "Upper end of the window (colon air: -600 HU)"),
+      choiceOf("BorderParts", "Border parts", kBorderParts, border[f->GetBorderParts()],
+               "Parts touching the volume border: automatic drops them for a threshold (the air outside the "
+               "body) and keeps them otherwise"),
+      MEDIAL_TOGGLE_PARAMETER(f, FillHoles, "Fill holes", "Fill cavities of the structure before the distance field"),
+      MEDIAL_REAL_PARAMETER(f, AntecedentWidth, "Antecedent width", 3,
+                            "Width of the TSK antecedent Gaussians relative to their cluster (§3, default 0.3)"),
+      MEDIAL_TOGGLE_PARAMETER(f, DetectBranches, "Branching structure",
+                              "Vessels, airways: one centerline per branch, joined at the junctions (beyond the paper)"),
+      MEDIAL_INTEGER_PARAMETER(f, CenteringIterations, "Centering passes",
+                               "Moves the TSK curve to the centre of its perpendicular sections (centricity, §2); "
+                               "0: the paper's curve"),
+      MEDIAL_REAL_PARAMETER(f, SampleSpacing, "Output spacing (mm)", 2,
+                            "Distance between output points; 0: smallest voxel"),
+      MEDIAL_REAL_PARAMETER(f, SectionSpacing, "Section spacing k (mm)", 2,
+                            "Perpendicular sections every k mm for the profile and the unfolded wall (§4, Figs. 14-15)"),
   };
 }
 
@@ -147,7 +157,7 @@ vtkSmartPointer<vtkAlgorithm> CenterlinePanel::makeFilter(SceneObject* input, QS
     filter->SetThreshold(form()->value("ThresholdLow"), form()->value("ThresholdHigh"));
   else
     filter->SelectNonZero();
-  filter->SetDropBorderParts(selection == "threshold" && form()->isOn("DropBorderParts"));
+  filter->SetBorderParts(static_cast<int>(form()->value("BorderParts")));
   filter->SetFillHoles(form()->isOn("FillHoles"));
   filter->SetAntecedentWidth(form()->value("AntecedentWidth"));
   filter->SetSampleSpacing(form()->value("SampleSpacing"));

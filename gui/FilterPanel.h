@@ -45,6 +45,11 @@ class FilterPanel : public QWidget {
   void wait() { runner_.wait(); }
   // Whether the last run ended well (false before any run).
   bool lastRunSucceeded() const { return lastOk_; }
+  // The filter run() would start on `input`, with the form's values (null when the panel refuses it).
+  vtkSmartPointer<vtkAlgorithm> configuredFilter(SceneObject* input) {
+    QString error;
+    return makeFilter(input, error);
+  }
 
  signals:
   void message(const QString& text);  // a line for the log

@@ -3,7 +3,7 @@
 #include "CenterlinePanel.h"
 #include "FilterRunner.h"
 #include "IsoSurfacePanel.h"
-#include "PlacedStrokes.h"
+#include "MedialSketchData.h"
 #include "ObjectList.h"
 #include "SketchPanel.h"
 #include "SkeletonPanel.h"
@@ -14,7 +14,6 @@
 #include "vtkMedialGhostPass.h"
 #include "vtkMedialReader.h"
 #include "vtkMedialScene.h"
-#include "vtkMedialSketchReader.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -315,17 +314,8 @@ QString MainWindow::logText() const { return log_->toPlainText(); }
 
 bool MainWindow::openFile(const QString& path) {
   const QByteArray name = path.toLocal8Bit();
-  const bool sketch = path.endsWith(".txt", Qt::CaseInsensitive);
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (sketch) {
-    auto sketchReader = vtkSmartPointer<vtkMedialSketchReader>::New();
-    sketchReader->SetFileName(name.constData());
-    reader = sketchReader;
-  } else {
-    auto medialReader = vtkSmartPointer<vtkMedialReader>::New();
-    medialReader->SetFileName(name.constData());
-    reader = medialReader;
-  }
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  reader->SetFileName(name.constData());
   if (reading_) {
     reportError("Cannot open file", path + ": another file is being read; open it when that one is done");
     return false;
@@ -351,17 +341,11 @@ bool MainWindow::openFile(const QString& path) {
 
   if (!readError.isEmpty()) {
     QString message = readError;
-    if (auto* medialReader = vtkMedialReader::SafeDownCast(reader))
-      if (*medialReader->GetErrorMessage()) message = QString::fromLocal8Bit(medialReader->GetErrorMessage());
+    if (*reader->GetErrorMessage()) message = QString::fromLocal8Bit(reader->GetErrorMessage());
     reportError("Cannot open file", message.contains(path) ? message : path + ": " + message);
     return false;
   }
   vtkDataObject* data = reader->GetOutputDataObject(0);
-  auto* polyData = vtkPolyData::SafeDownCast(data);
-  if (sketch && (!polyData || polyData->GetNumberOfLines() == 0)) {
-    reportError("Cannot open file", path + ": no stroke in the file");
-    return false;
-  }
   const QString title = QFileInfo(path).fileName().isEmpty() ? path : QFileInfo(path).fileName();
   SceneObject* object = objects_->add(title, data, path);
   if (!object) return false;
@@ -576,9 +560,10 @@ bool MainWindow::saveScreenshot(const QString& path) {
 
 void MainWindow::openDialog() {
   const QString filter =
-      QString("Meshes, skeletons, volumes and sketches (%1 %2 *.txt);;Meshes and skeletons (%1);;Volumes (%2);;"
-              "Sketches (*.txt);;All files (*)")
-          .arg(vtkMedialReader::GetMeshExtensions(), vtkMedialReader::GetVolumeExtensions());
+      QString("Meshes, skeletons, volumes and sketches (%1 %2 %3);;Meshes and skeletons (%1);;Volumes (%2);;"
+              "Sketches (%3);;All files (*)")
+          .arg(vtkMedialReader::GetMeshExtensions(), vtkMedialReader::GetVolumeExtensions(),
+               vtkMedialReader::GetSketchExtensions());
   const QStringList paths = QFileDialog::getOpenFileNames(this, "Open", QString(), filter);
   for (const QString& path : paths) openFile(path);
 }

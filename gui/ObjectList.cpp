@@ -1,6 +1,6 @@
 #include "ObjectList.h"
 
-#include "PlacedStrokes.h"
+#include "MedialSketchData.h"
 
 #include "MedialErrorCollector.h"
 #include "vtkMedialPolyDataWriter.h"
@@ -33,7 +33,7 @@ constexpr int kNameColumn = 0, kInterestColumn = 1;
 SceneObject::Kind kindOf(vtkDataObject* data) {
   if (vtkImageData::SafeDownCast(data)) return SceneObject::Kind::Volume;
   auto* polyData = vtkPolyData::SafeDownCast(data);
-  if (polyData && polyData->GetCellData()->GetArray("Placement")) return SceneObject::Kind::Sketch;
+  if (medial::isSketch(polyData)) return SceneObject::Kind::Sketch;
   if (polyData && vtkMedialScene::IsSkeleton(polyData)) return SceneObject::Kind::Skeleton;
   return SceneObject::Kind::Mesh;
 }

@@ -1,5 +1,6 @@
 #include "SkeletonPanel.h"
 
+#include "FilterDefaults.h"
 #include "ObjectList.h"
 #include "vtkMedialContractionSkeleton.h"
 
@@ -23,30 +24,33 @@ namespace medial::gui {
 namespace {
 
 std::vector<Parameter> contractionParameters() {
-  using P = Parameter;
+  const auto f = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
+  auto weights = MEDIAL_TOGGLE_PARAMETER(f, ComputeWeights, "Skinning weights",
+                                         "Heat-diffusion skinning weights (§III.E), for the rig");
+  weights.value = 1;  // a GUI preset: the weights cost a factorization, but Export Rig needs them
   return {
-      P::integer("TargetNodes", "Skeleton nodes", 30, 0, 100000,
-                 "Nodes kept by node selection (§III.D); 0 keeps the whole curve skeleton"),
-      P::integer("ContractionVertices", "Contracted vertices", 4000, 0, 10000000,
-                 "Larger meshes are decimated to this many vertices before the contraction (topology kept); "
-                 "0 contracts the mesh as it is"),
-      P::real("InitialContractionFactor", "W_L0 factor", 1e-3, 1e-6, 10, 6,
-              "W_L0 = factor · sqrt(mean face area) (§III.A, default 1e-3)"),
-      P::real("ContractionScale", "s_L", 2.0, 1.01, 10, 2, "Growth of W_L per iteration (§III.A, default 2)"),
-      P::real("MaxContractionWeight", "W_L cap", 2048, 1, 1e6, 0, "Upper bound of W_L (§III.A, default 2048)"),
-      P::real("MaxAttractionWeight", "W_H cap", 10000, 1, 1e7, 0, "Upper bound of W_H (§III.A, default 10000)"),
-      P::integer("MaxIterations", "Max iterations", 40, 1, 1000, "Contraction iterations at most (§III.A)"),
-      P::real("ShapeWeight", "w_a", 1.0, 0, 100, 3, "Shape cost weight of the surgery, eq. (10) (default 1)"),
-      P::real("SamplingWeight", "w_b", 0.1, 0, 100, 3, "Sampling cost weight of the surgery, eq. (10) (default 0.1)"),
-      P::toggle("RefineEmbedding", "Refine embedding", true, "Move nodes to the centre of their vertices (§III.C)"),
-      P::toggle("RestoreCycles", "Restore cycles", true,
-                "Put back the cycles surgery lost: as many skeleton cycles as the mesh has genus"),
-      P::toggle("ComputeWeights", "Skinning weights", true, "Heat-diffusion skinning weights (§III.E), for the rig"),
-      P::real("HeatConstant", "c (heat)", 1.0, 1e-3, 100, 3, "H_jj = c / d(j)^2 (§III.E, Baran and Popović: 1)"),
-      P::choice("Solver", "Solver",
-                {"cholmod-metis", "cholmod-amd", "llt-amd", "ldlt-amd", "llt-metis", "ldlt-metis", "lu-colamd",
-                 "lu-amd", "lu-metis", "qr-colamd", "cg"},
-                "Sparse solver of the normal equations (5)"),
+      MEDIAL_INTEGER_PARAMETER(f, TargetNodes, "Skeleton nodes",
+                               "Nodes kept by node selection (§III.D); 0 keeps the whole curve skeleton"),
+      MEDIAL_INTEGER_PARAMETER(f, ContractionVertices, "Contracted vertices",
+                               "Larger meshes are decimated to this many vertices before the contraction "
+                               "(topology kept); 0 contracts the mesh as it is"),
+      MEDIAL_REAL_PARAMETER(f, InitialContractionFactor, "W_L0 factor", 6,
+                            "W_L0 = factor · sqrt(mean face area) (§III.A, default 1e-3)"),
+      MEDIAL_REAL_PARAMETER(f, ContractionScale, "s_L", 2, "Growth of W_L per iteration (§III.A, default 2)"),
+      MEDIAL_REAL_PARAMETER(f, MaxContractionWeight, "W_L cap", 0, "Upper bound of W_L (§III.A, default 2048)"),
+      MEDIAL_REAL_PARAMETER(f, MaxAttractionWeight, "W_H cap", 0, "Upper bound of W_H (§III.A, default 10000)"),
+      MEDIAL_INTEGER_PARAMETER(f, MaxIterations, "Max iterations", "Contraction iterations at most (§III.A)"),
+      MEDIAL_REAL_PARAMETER(f, ShapeWeight, "w_a", 3, "Shape cost weight of the surgery, eq. (10) (default 1)"),
+      MEDIAL_REAL_PARAMETER(f, SamplingWeight, "w_b", 3,
+                            "Sampling cost weight of the surgery, eq. (10) (default 0.1)"),
+      MEDIAL_TOGGLE_PARAMETER(f, RefineEmbedding, "Refine embedding",
+                              "Move nodes to the centre of their vertices (§III.C)"),
+      MEDIAL_TOGGLE_PARAMETER(f, RestoreCycles, "Restore cycles",
+                              "Put back the cycles surgery lost: as many skeleton cycles as the mesh has genus"),
+      weights,
+      MEDIAL_REAL_PARAMETER(f, HeatConstant, "c (heat)", 3, "H_jj = c / d(j)^2 (§III.E, Baran and Popović: 1)"),
+      choiceOf("Solver", "Solver", vtkMedialContractionSkeleton::GetSolverNames(), f->GetSolver(),
+               "Sparse solver of the normal equations (5)"),
   };
 }
 

@@ -1,5 +1,6 @@
 #include "SketchPanel.h"
 
+#include "FilterDefaults.h"
 #include "ObjectList.h"
 #include "vtkMedialSketchSkeleton.h"
 
@@ -24,32 +25,42 @@ namespace {
 constexpr const char* kDrawnSketch = "drawn sketch";
 
 std::vector<Parameter> sketchParameters() {
-  using P = Parameter;
+  const auto f = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
   return {
-      P::real("Thickness", "Thickness", 1.0, 0.01, 10, 2, "Height parameter c of the inflation (§4.1: Poisson equation, Dirichlet boundary); scales the thickness"),
-      P::toggle("Inflate", "Inflated mesh", true, "Also build the inflated mesh of every stroke (§4.1)"),
+      MEDIAL_REAL_PARAMETER(f, Thickness, "Thickness", 2,
+                            "Height parameter c of the inflation (§4.1: Poisson equation, Dirichlet boundary); "
+                            "scales the thickness"),
+      MEDIAL_TOGGLE_PARAMETER(f, Inflate, "Inflated mesh", "Also build the inflated mesh of every stroke (§4.1)"),
   };
 }
 
+// The four thresholds of §3.3 as sliders: their defaults are the filter's (globalDefaults); the sliders'
+// ends are the GUI's choice, ten times the paper's default.
 struct Threshold {
   const char* name;
   const char* label;
-  int value;
   int maximum;
   const char* tooltip;
 };
 
 constexpr Threshold kThresholds[4] = {
-    {"Simplification", "ε_s simplify", 5, 50, "Branch simplification ε_s of BoundedDP, Algorithms 1-2 (§3.1; default 5 px)"},
-    {"Merging", "ε_m merge", 30, 300, "Joint merging ε_m (§3.3; default 30 px)"},
-    {"Pruning", "ε_t prune", 30, 300, "Branch pruning ε_t (§3.3; default 30 px)"},
-    {"Collapsing", "ε_c collapse", 10, 100, "Edge collapsing ε_c (§3.3; default 10 px)"},
+    {"Simplification", "ε_s simplify", 50, "Branch simplification ε_s of BoundedDP, Algorithms 1-2 (§3.1; default 5 px)"},
+    {"Merging", "ε_m merge", 300, "Joint merging ε_m (§3.3; default 30 px)"},
+    {"Pruning", "ε_t prune", 300, "Branch pruning ε_t (§3.3; default 30 px)"},
+    {"Collapsing", "ε_c collapse", 100, "Edge collapsing ε_c (§3.3; default 10 px)"},
 };
+
+std::array<double, 4> globalDefaults() {
+  const auto f = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
+  return {f->GetSimplificationThreshold(), f->GetMergingThreshold(), f->GetPruningThreshold(),
+          f->GetCollapsingThreshold()};
+}
 
 }  // namespace
 
 SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
-    : FilterPanel("Sketch", SceneObject::Kind::Sketch, sketchParameters(), objects, parent) {
+    : FilterPanel("Sketch", SceneObject::Kind::Sketch, sketchParameters(), objects, parent),
+      global_(globalDefaults()) {
   auto* rows = new QFormLayout;
   scope_ = new QComboBox(this);
   scope_->setObjectName("thresholdScope");
@@ -61,9 +72,9 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
     auto* slider = new QSlider(Qt::Horizontal, this);
     slider->setObjectName(kThresholds[i].name);
     slider->setRange(0, kThresholds[i].maximum);
-    slider->setValue(kThresholds[i].value);
+    slider->setValue(static_cast<int>(global_[size_t(i)]));
     slider->setToolTip(kThresholds[i].tooltip);
-    auto* value = new QLabel(QString::number(kThresholds[i].value), this);
+    auto* value = new QLabel(QString::number(slider->value()), this);
     value->setMinimumWidth(28);
     connect(slider, &QSlider::valueChanged, value, [value](int v) { value->setNum(v); });
     connect(slider, &QSlider::valueChanged, this, &SketchPanel::parameterChanged);

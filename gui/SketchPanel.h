@@ -4,7 +4,7 @@
 #pragma once
 
 #include "FilterPanel.h"
-#include "PlacedStrokes.h"
+#include "MedialSketchData.h"
 
 #include <QPointF>
 #include <QVector>
@@ -56,7 +56,7 @@ class SketchPanel : public FilterPanel {
 
   QSlider* thresholds_[4] = {};
   QComboBox* scope_ = nullptr;
-  Thresholds global_ = {5, 30, 30, 10};
+  Thresholds global_;  // the filter's defaults at first
   std::map<int, Thresholds> partThresholds_;
   std::map<std::pair<int, int>, double> branchSimplification_;  // (part, branch) -> epsilon_s
   QLabel* values_[4] = {};

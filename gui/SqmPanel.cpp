@@ -1,5 +1,6 @@
 #include "SqmPanel.h"
 
+#include "FilterDefaults.h"
 #include "ObjectList.h"
 #include "vtkMedialSQM.h"
 
@@ -16,25 +17,28 @@ namespace medial::gui {
 namespace {
 
 std::vector<Parameter> sqmParameters() {
-  using P = Parameter;
+  const auto f = vtkSmartPointer<vtkMedialSQM>::New();
   return {
-      P::choice("Smoothing", "LIE smoothing", {"quaternion", "averaging", "area-laplacian", "valency-laplacian"},
-                "LIE smoothing after each BNP subdivision (CESCG 2014, Fig. 3; quaternion is the paper's "
-                "proposal)"),
-      P::choice("Pairing", "Ring pairing", {"total-distance", "distance", "angle"},
-                "How a tube's last ring is paired with a BNP face (SQM step 3, bridging of BNPs)"),
-      P::integer("LinearRingVertices", "Ring vertices N", 8, 3, 1024,
-                 "Vertices of a ring when the skeleton has no branch node (CESCG 2014, linear skeletons)"),
-      P::toggle("Capsules", "Capsule leaves", false, "Close leaves with hemispheres (CESCG 2014, Capsule Ending)"),
-      P::toggle("PairTriangles", "Quads at leaf tips", true,
-                "Join the triangles of leaf fans and cycle bands into quads (off: the paper's triangle fans)"),
-      P::toggle("SharpScaling", "Sharp scaling", false,
-                "With subdivision: shrink the cone radius near sharp vertices by a Bézier curve (CESCG 2014, "
-                "Tessellation)"),
-      P::real("SharpMinimumScale", "Sharp scale", 0.8, 0.05, 1.0, 2, "Radius factor at a sharp vertex"),
-      P::toggle("FoldRepair", "Repair folds", true,
-                "With subdivision: where the projection onto the cones makes faces cut each other, move their "
-                "vertices back towards the plain Catmull-Clark surface"),
+      choiceOf("Smoothing", "LIE smoothing", vtkMedialSQM::GetSmoothingNames(), f->GetSmoothing(),
+               "LIE smoothing after each BNP subdivision (CESCG 2014, Fig. 3; quaternion is the paper's "
+               "proposal)"),
+      choiceOf("Pairing", "Ring pairing", vtkMedialSQM::GetPairingNames(), f->GetPairing(),
+               "How a tube's last ring is paired with a BNP face (SQM step 3, bridging of BNPs)"),
+      MEDIAL_INTEGER_PARAMETER(f, LinearRingVertices, "Ring vertices N",
+                               "Vertices of a ring when the skeleton has no branch node (CESCG 2014, linear "
+                               "skeletons)"),
+      MEDIAL_TOGGLE_PARAMETER(f, Capsules, "Capsule leaves",
+                              "Close leaves with hemispheres (CESCG 2014, Capsule Ending)"),
+      MEDIAL_TOGGLE_PARAMETER(f, PairTriangles, "Quads at leaf tips",
+                              "Join the triangles of leaf fans and cycle bands into quads (off: the paper's "
+                              "triangle fans)"),
+      MEDIAL_TOGGLE_PARAMETER(f, SharpScaling, "Sharp scaling",
+                              "With subdivision: shrink the cone radius near sharp vertices by a Bézier curve "
+                              "(CESCG 2014, Tessellation)"),
+      MEDIAL_REAL_PARAMETER(f, SharpMinimumScale, "Sharp scale", 2, "Radius factor at a sharp vertex"),
+      MEDIAL_TOGGLE_PARAMETER(f, FoldRepair, "Repair folds",
+                              "With subdivision: where the projection onto the cones makes faces cut each "
+                              "other, move their vertices back towards the plain Catmull-Clark surface"),
   };
 }
 
@@ -44,7 +48,9 @@ SqmPanel::SqmPanel(ObjectList* objects, QWidget* parent)
     : FilterPanel("SQM", SceneObject::Kind::Skeleton, sqmParameters(), objects, parent) {
   subdivision_ = new QSlider(Qt::Horizontal, this);
   subdivision_->setObjectName("SubdivisionLevels");
-  subdivision_->setRange(0, 4);
+  const auto defaults = vtkSmartPointer<vtkMedialSQM>::New();
+  subdivision_->setRange(defaults->GetSubdivisionLevelsMinValue(), defaults->GetSubdivisionLevelsMaxValue());
+  subdivision_->setValue(defaults->GetSubdivisionLevels());
   subdivision_->setPageStep(1);
   subdivision_->setTickPosition(QSlider::TicksBelow);
   subdivision_->setToolTip("Catmull-Clark levels, each projected onto the skeleton's cones (CESCG 2014, Tessellation, Fig. 9)");

@@ -1,5 +1,5 @@
 // VtkView: a QOpenGLWidget hosting a vtkGenericOpenGLRenderWindow with full mouse interaction, without
-// VTK's Qt module (Debian builds it for Qt5 only). The recipe is in ../shared/PLATFORM.md: VTK renders
+// VTK's Qt module (Debian builds it for Qt5 only). The recipe is in docs/ARCHITECTURE.md §9: VTK renders
 // into its own framebuffers inside Qt's context, and paintGL blits the result into the widget's.
 #pragma once
 

@@ -1,5 +1,7 @@
 #include "contraction/HeatWeights.h"
 
+#include "common/UnionFind.h"
+
 #include "mesh/MeshGeometry.h"
 
 #include <algorithm>
@@ -43,23 +45,18 @@ NearestBones nearestBones(const Eigen::Vector3d& p, const Skeleton& skeleton) {
 
 // Component id of every vertex through the faces; -1 for vertices in no face.
 std::vector<int> vertexComponents(const Faces& faces, Eigen::Index vertexCount, int& componentCount) {
-  std::vector<int> parent(static_cast<size_t>(vertexCount));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&parent](int x) {
-    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-    return x;
-  };
+  UnionFind sets{static_cast<size_t>(vertexCount)};
   std::vector<bool> used(static_cast<size_t>(vertexCount), false);
   for (Eigen::Index f = 0; f < faces.rows(); ++f)
     for (int c = 0; c < 3; ++c) {
       used[size_t(faces(f, c))] = true;
-      parent[size_t(find(faces(f, c)))] = find(faces(f, (c + 1) % 3));
+      sets.join(faces(f, c), faces(f, (c + 1) % 3));
     }
   std::vector<int> id(size_t(vertexCount), -1), rootId(size_t(vertexCount), -1);
   componentCount = 0;
   for (Eigen::Index v = 0; v < vertexCount; ++v) {
     if (!used[size_t(v)]) continue;
-    int& r = rootId[size_t(find(int(v)))];
+    int& r = rootId[size_t(sets.find(int(v)))];
     if (r < 0) r = componentCount++;
     id[size_t(v)] = r;
   }

@@ -1,19 +1,16 @@
 #include "contraction/MeshContraction.h"
 
+#include "common/Stopwatch.h"
+
 #include "mesh/MeshGeometry.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace medial {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // W_L^2 L^T L + diag(W_H^2): the normal matrix of eq. (5). L is symmetric, so L^T L = L L.
 Eigen::SparseMatrix<double> normalMatrix(const Eigen::SparseMatrix<double>& laplacian, double contractionWeight,
@@ -61,7 +58,7 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
   Vertices best = positions;
   result.stopReason = "maximum iterations";
   for (int iteration = 0; iteration < p.maxIterations; ++iteration) {
-    auto start = Clock::now();
+    Stopwatch start;
     if (iteration > 0) {
       const Eigen::MatrixX3d current = faceCotangents(positions, mesh.faces, minAngle);
       for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
@@ -72,23 +69,23 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
     const Eigen::SparseMatrix<double> laplacian = laplacianFromCotangents(mesh.faces, cotangents, n);
     const Eigen::SparseMatrix<double> matrix = normalMatrix(laplacian, contractionWeight, attraction);
     const Eigen::MatrixXd rhs = attraction.array().square().matrix().asDiagonal() * positions;
-    result.assembleSeconds += secondsSince(start);
+    result.assembleSeconds += start.seconds();
 
     if (iteration == 0) {
-      start = Clock::now();
+      start.restart();
       solver.analyze(matrix);
-      result.analyzeSeconds += secondsSince(start);
+      result.analyzeSeconds += start.seconds();
     }
-    start = Clock::now();
+    start.restart();
     const bool factorized = solver.factorize(matrix);
-    result.factorizeSeconds += secondsSince(start);
+    result.factorizeSeconds += start.seconds();
     Eigen::MatrixXd solution;
-    start = Clock::now();
+    start.restart();
     if (!factorized || !solver.solve(rhs, solution)) {
       result.error = "contraction iteration " + std::to_string(iteration + 1) + ": " + solver.error();
       return result;
     }
-    result.solveSeconds += secondsSince(start);
+    result.solveSeconds += start.seconds();
     positions = solution;
     result.iterations = iteration + 1;
 

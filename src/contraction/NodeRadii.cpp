@@ -14,7 +14,7 @@ std::vector<double> nodeRadii(const CurveSkeleton& skeleton, const Vertices& ori
     if (node >= 0)
       distances[size_t(node)].push_back((originalVertices.row(Eigen::Index(v)) - skeleton.nodes.row(node)).norm());
   }
-  // A floor keeps radii positive (GUIDE §2) for a node that sits on the surface.
+  // A floor keeps radii positive (docs/ARCHITECTURE.md §4) for a node that sits on the surface.
   const double floor = 1e-6 * (originalVertices.colwise().maxCoeff() - originalVertices.colwise().minCoeff()).norm();
   std::vector<double> radii(nodeCount);
   for (size_t k = 0; k < nodeCount; ++k) {

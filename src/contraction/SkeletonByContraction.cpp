@@ -1,22 +1,19 @@
 #include "contraction/SkeletonByContraction.h"
 
+#include "common/Stopwatch.h"
+
 #include "contraction/EmbeddingRefinement.h"
 #include "contraction/NodeRadii.h"
 #include "contraction/NodeSelection.h"
 #include "mesh/InsideTest.h"
 #include "mesh/MeshDecimation.h"
 
-#include <chrono>
 #include <cmath>
 
 namespace medial {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // The root: the node of highest degree, ties broken by the number of vertices it absorbed.
 int chooseRoot(const Skeleton& skeleton, const std::vector<int>& vertexToNode) {
@@ -59,9 +56,9 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   };
 
   // The mesh that is contracted: the input, or its decimation to the vertex budget.
-  auto start = Clock::now();
+  Stopwatch start;
   const DecimatedMesh coarse = decimateMesh(mesh, p.contractionVertices);
-  result.decimationSeconds = secondsSince(start);
+  result.decimationSeconds = start.seconds();
   result.contractedVertices = int(coarse.mesh.vertices.rows());
   if (progress && !progress(0.02)) {
     result.error = "aborted";
@@ -69,10 +66,10 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   }
 
   // III.A geometry contraction.
-  start = Clock::now();
+  start.restart();
   const double contractionEnd = p.computeWeights ? 0.6 : 0.75, surgeryEnd = p.computeWeights ? 0.7 : 0.9;
   ContractionResult contraction = contractMesh(coarse.mesh, p.contraction, report(0.02, contractionEnd));
-  result.contractionSeconds = secondsSince(start);
+  result.contractionSeconds = start.seconds();
   result.factorizationSeconds = contraction.analyzeSeconds + contraction.factorizeSeconds;
   result.contractionIterations = contraction.iterations;
   result.contractionVolumeRatio = contraction.volumeRatio;
@@ -83,10 +80,10 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   }
 
   // III.B connectivity surgery.
-  start = Clock::now();
+  start.restart();
   CurveSkeleton curve = collapseToCurveSkeleton(contraction.contracted, coarse.mesh.faces, p.surgery,
                                                   report(contractionEnd, surgeryEnd));
-  result.surgerySeconds = secondsSince(start);
+  result.surgerySeconds = start.seconds();
   if (curve.nodes.rows() == 0) {
     result.error = "aborted";
     return result;
@@ -105,7 +102,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
 
   // III.C refinement (with the cycles surgery lost put back before edges leaving the mesh are split), III.D
   // selection, radii.
-  start = Clock::now();
+  start.restart();
   const InsideTest inside(mesh);
   if (p.refineEmbedding) {
     result.refinedNodes = refineEmbedding(curve, mesh.vertices, inside);
@@ -113,13 +110,13 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   }
   if (p.restoreCycles) result.cycleRepair = restoreMissingCycles(curve, mesh, inside);
   if (p.refineEmbedding) result.splitEdges = splitEdgesLeavingTheMesh(curve, mesh.vertices, inside);
-  result.refinementSeconds = secondsSince(start);
-  start = Clock::now();
+  result.refinementSeconds = start.seconds();
+  start.restart();
   if (p.targetNodes > 0) selectNodes(curve, p.targetNodes, &inside);
-  result.selectionSeconds = secondsSince(start);
-  start = Clock::now();
+  result.selectionSeconds = start.seconds();
+  start.restart();
   result.skeleton.radii = nodeRadii(curve, mesh.vertices, inside);
-  result.radiiSeconds = secondsSince(start);
+  result.radiiSeconds = start.seconds();
 
   for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k) result.skeleton.nodes.push_back(curve.nodes.row(k).transpose());
   for (const auto& [a, b] : curve.edges) result.skeleton.edges.push_back({a, b});
@@ -128,9 +125,9 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
 
   // III.E skinning weights.
   if (p.computeWeights) {
-    start = Clock::now();
+    start.restart();
     HeatWeightResult weights = heatWeights(mesh, result.skeleton, inside, p.weights, report(0.8, 0.99));
-    result.weightsSeconds = secondsSince(start);
+    result.weightsSeconds = start.seconds();
     if (!weights.ok()) {
       result.error = weights.error == "aborted" ? weights.error : "skinning weights: " + weights.error;
       return result;

@@ -1,7 +1,7 @@
 // SkeletonByContraction: the whole skeleton pipeline of the contraction paper (section III, stages 1-4)
 // plus node radii: optional decimation to a vertex budget, contraction (III.A), connectivity surgery (III.B), embedding refinement (III.C), node
 // selection (III.D), radii, and on request the heat-diffusion skinning weights (III.E). Input: a triangle mesh (any number of components, open or closed). Output: a
-// Skeleton (GUIDE §2) with radii and a root, and the skeleton-mesh mapping (vertex -> node).
+// Skeleton (docs/ARCHITECTURE.md §4) with radii and a root, and the skeleton-mesh mapping (vertex -> node).
 #pragma once
 
 #include "contraction/ConnectivitySurgery.h"
@@ -58,6 +58,13 @@ struct SkeletonByContractionResult {
 // message names the first problem; empty when the mesh is usable.
 std::string checkContractionInput(const TriangleMesh& mesh);
 
+/// The curve skeleton of `mesh` by contraction, surgery, refinement and selection (paper §III.A-D), with
+/// radii, and on request the heat-diffusion skinning weights (§III.E).
+/// @param mesh a triangle mesh: any number of components, open or closed
+/// @param parameters the paper's defaults (SkeletonByContractionParameters)
+/// @param progress called with the fraction done; returning false stops the work (error "aborted")
+/// @return the skeleton, the vertex-to-node map, the weights and the stage figures, or an error naming
+///         the problem (checkContractionInput's, a failed factorization)
 SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
                                                   const SkeletonByContractionParameters& parameters = {},
                                                   const std::function<bool(double)>& progress = {});

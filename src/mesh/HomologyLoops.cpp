@@ -1,5 +1,7 @@
 #include "mesh/HomologyLoops.h"
 
+#include "common/UnionFind.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -11,22 +13,6 @@
 namespace medial {
 
 namespace {
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-    return x;
-  }
-  bool join(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return false;
-    parent[size_t(a)] = b;
-    return true;
-  }
-};
 
 struct Edge {
   int a, b;
@@ -78,7 +64,7 @@ int closedGenus(const TriangleMesh& mesh) {
   for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
     for (int c = 0; c < 3; ++c) halfEdges.push_back(std::minmax(mesh.faces(f, c), mesh.faces(f, (c + 1) % 3)));
   std::sort(halfEdges.begin(), halfEdges.end());
-  UnionFind component(size_t(mesh.vertices.rows()));
+  UnionFind component{size_t(mesh.vertices.rows())};
   for (const auto& [a, b] : halfEdges) component.join(a, b);
   const size_t n = size_t(mesh.vertices.rows());
   std::vector<bool> closed(n, true);
@@ -157,7 +143,7 @@ std::vector<std::vector<int>> homologyBasisLoops(const TriangleMesh& mesh) {
     return distance[size_t(edge.a)] + distance[size_t(edge.b)] + length(edge);
   };
   std::sort(others.begin(), others.end(), [&](int x, int y) { return loopLength(x) > loopLength(y); });
-  UnionFind dual(size_t(mesh.faces.rows()));
+  UnionFind dual{size_t(mesh.faces.rows())};
   std::vector<std::vector<int>> loops;
   for (int e : others) {
     const Edge& edge = g.edges[size_t(e)];

@@ -1,24 +1,13 @@
 #include "mesh/MeshTopology.h"
 
+#include "common/UnionFind.h"
+
 #include <algorithm>
 #include <numeric>
 #include <unordered_map>
 
 namespace medial {
 namespace {
-
-class UnionFind {
- public:
-  explicit UnionFind(int64_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  int64_t find(int64_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void unite(int64_t a, int64_t b) { parent_[find(a)] = find(b); }
-
- private:
-  std::vector<int64_t> parent_;
-};
 
 uint64_t edgeKey(int64_t a, int64_t b) {
   if (a > b) std::swap(a, b);
@@ -32,7 +21,7 @@ MeshTopology computeMeshTopology(int64_t vertexCount, const std::vector<std::vec
   std::vector<char> used(vertexCount, 0);
   std::unordered_map<uint64_t, int> faceCountPerEdge;
   faceCountPerEdge.reserve(faces.size() * 2);
-  UnionFind vertexSets(vertexCount);
+  UnionFind vertexSets{size_t(vertexCount)};
 
   for (const auto& face : faces) {
     std::vector<int64_t> distinct(face);
@@ -48,7 +37,7 @@ MeshTopology computeMeshTopology(int64_t vertexCount, const std::vector<std::vec
       used[a] = 1;
       if (a == b) continue;
       ++faceCountPerEdge[edgeKey(a, b)];
-      vertexSets.unite(a, b);
+      vertexSets.join(int(a), int(b));
     }
   }
 
@@ -61,7 +50,7 @@ MeshTopology computeMeshTopology(int64_t vertexCount, const std::vector<std::vec
       continue;
     }
     ++t.vertices;
-    auto [it, inserted] = componentIndex.try_emplace(vertexSets.find(v), static_cast<int64_t>(componentIndex.size()));
+    auto [it, inserted] = componentIndex.try_emplace(vertexSets.find(int(v)), static_cast<int64_t>(componentIndex.size()));
     componentOf[v] = it->second;
   }
   t.components = static_cast<int64_t>(componentIndex.size());
@@ -77,7 +66,7 @@ MeshTopology computeMeshTopology(int64_t vertexCount, const std::vector<std::vec
     if (std::unique(distinct.begin(), distinct.end()) - distinct.begin() >= 3) ++chi[componentOf[face[0]]];
   }
 
-  UnionFind borderSets(vertexCount);
+  UnionFind borderSets{size_t(vertexCount)};
   std::vector<char> onBorder(vertexCount, 0);
   for (const auto& [key, count] : faceCountPerEdge) {
     const int64_t a = static_cast<int64_t>(key >> 32), b = static_cast<int64_t>(key & 0xffffffffu);
@@ -85,14 +74,14 @@ MeshTopology computeMeshTopology(int64_t vertexCount, const std::vector<std::vec
     --chi[componentOf[a]];
     if (count == 1) {
       ++t.borderEdges;
-      borderSets.unite(a, b);
+      borderSets.join(int(a), int(b));
       onBorder[a] = onBorder[b] = 1;
     } else if (count > 2) {
       ++t.nonManifoldEdges;
     }
   }
   for (int64_t v = 0; v < vertexCount; ++v)
-    if (onBorder[v] && borderSets.find(v) == v) ++loops[componentOf[v]];
+    if (onBorder[v] && borderSets.find(int(v)) == v) ++loops[componentOf[v]];
 
   for (int64_t c = 0; c < t.components; ++c) {
     t.eulerCharacteristic += chi[c];

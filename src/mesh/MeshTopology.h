@@ -29,6 +29,10 @@ struct MeshTopology {
   bool isClosedManifold() const { return isClosed() && isEdgeManifold() && faces > 0; }
 };
 
+/// The topology of a polygon mesh: edges, border and non-manifold edges, components, boundary loops,
+/// Euler characteristic and genus.
+/// @param vertexCount the number of vertices (unused ones are counted as such)
+/// @param faces polygons as vertex indices; faces with fewer than three distinct vertices count as degenerate
 MeshTopology computeMeshTopology(int64_t vertexCount, const std::vector<std::vector<int64_t>>& faces);
 
 }  // namespace medial

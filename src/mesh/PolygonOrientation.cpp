@@ -1,5 +1,7 @@
 #include "mesh/PolygonOrientation.h"
 
+#include "common/UnionFind.h"
+
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Simple_cartesian.h>
 
@@ -13,18 +15,13 @@ namespace medial {
 
 namespace {
 
-// Union-find over vertices joined by faces: the connected component of each face.
+// The connected component of each face (vertices joined by faces).
 std::vector<int> faceComponents(size_t vertexCount, const std::vector<std::vector<int>>& faces) {
-  std::vector<int> parent(vertexCount);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-    return x;
-  };
+  UnionFind sets(vertexCount);
   for (const auto& f : faces)
-    for (size_t k = 1; k < f.size(); ++k) parent[size_t(find(f[k]))] = find(f[0]);
+    for (size_t k = 1; k < f.size(); ++k) sets.join(f[k], f[0]);
   std::vector<int> component;
-  for (const auto& f : faces) component.push_back(f.empty() ? -1 : find(f[0]));
+  for (const auto& f : faces) component.push_back(f.empty() ? -1 : sets.find(f[0]));
   return component;
 }
 

@@ -9,8 +9,9 @@
 
 namespace medial {
 
+template <class Index>
 std::vector<std::pair<int, int>> selfIntersectingFaces(const std::vector<Eigen::Vector3d>& vertices,
-                                                       const std::vector<std::vector<int>>& faces) {
+                                                       const std::vector<std::vector<Index>>& faces) {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Surface = CGAL::Surface_mesh<Kernel::Point_3>;
   Surface surface;
@@ -37,5 +38,10 @@ std::vector<std::pair<int, int>> selfIntersectingFaces(const std::vector<Eigen::
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;
 }
+
+template std::vector<std::pair<int, int>> selfIntersectingFaces(const std::vector<Eigen::Vector3d>&,
+                                                                const std::vector<std::vector<int>>&);
+template std::vector<std::pair<int, int>> selfIntersectingFaces(const std::vector<Eigen::Vector3d>&,
+                                                                const std::vector<std::vector<int64_t>>&);
 
 }  // namespace medial

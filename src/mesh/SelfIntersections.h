@@ -6,14 +6,19 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
+
 #include <utility>
 #include <vector>
 
 namespace medial {
 
-// Pairs of polygon indices (first < second) whose triangles intersect; a pair is listed once however
-// many of its triangles meet. Triangles of one polygon are not tested against each other.
+/// Pairs of polygon indices (first < second) whose triangles intersect; a pair is listed once however
+/// many of its triangles meet. Triangles of one polygon are not tested against each other.
+/// @param vertices the mesh's points
+/// @param faces polygons as vertex indices (int or int64_t, e.g. from a VTK mesh)
+template <class Index>
 std::vector<std::pair<int, int>> selfIntersectingFaces(const std::vector<Eigen::Vector3d>& vertices,
-                                                       const std::vector<std::vector<int>>& faces);
+                                                       const std::vector<std::vector<Index>>& faces);
 
 }  // namespace medial

@@ -116,6 +116,12 @@ std::vector<SparseSolverKind> allSparseSolverKinds() {
   return kinds;
 }
 
+std::vector<std::string> sparseSolverNames() {
+  std::vector<std::string> names;
+  for (const auto& entry : kNames) names.push_back(entry.second);
+  return names;
+}
+
 SparseSolver::SparseSolver(SparseSolverKind kind) : kind_(kind), backend_(makeBackend(kind)) {}
 SparseSolver::~SparseSolver() = default;
 

@@ -35,6 +35,8 @@ enum class SparseSolverKind {
 std::string sparseSolverName(SparseSolverKind kind);
 bool parseSparseSolverKind(const std::string& name, SparseSolverKind& kind);
 std::vector<SparseSolverKind> allSparseSolverKinds();
+// Every name, in the order above (the one list the filter, the command line and the GUI offer).
+std::vector<std::string> sparseSolverNames();
 
 class SparseSolver {
  public:

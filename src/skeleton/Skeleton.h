@@ -1,4 +1,4 @@
-// Skeleton: the plain-data model of GUIDE §2, shared by every algorithm of Medial.
+// Skeleton: the plain-data model of docs/ARCHITECTURE.md §4, shared by every algorithm of Medial.
 //
 // A skeleton is a graph embedded in 3-D: nodes with a sphere radius (and optionally an ellipsoid),
 // undirected edges between node ids, and an optional root. The VTK side (filters/) converts it to and
@@ -24,7 +24,7 @@ struct Skeleton {
   int edgeCount() const { return static_cast<int>(edges.size()); }
 };
 
-// Node types of GUIDE §2 (values of the `NodeType` array).
+// Node types of docs/ARCHITECTURE.md §4 (values of the `NodeType` array).
 enum class NodeType : unsigned char { Leaf = 0, Connection = 1, Branch = 2 };
 
 // One problem found by validateSkeleton, with a message a user can act on.
@@ -44,7 +44,7 @@ struct SkeletonProblem {
   std::string message;
 };
 
-// Checks GUIDE §2: finite coordinates, positive finite radii (one per node), no self-loop edges, edge and
+// Checks docs/ARCHITECTURE.md §4: finite coordinates, positive finite radii (one per node), no self-loop edges, edge and
 // root ids in range. Returns every problem found (at most maxProblems), empty when the skeleton is valid.
 std::vector<SkeletonProblem> validateSkeleton(const Skeleton& skeleton, int maxProblems = 20);
 

@@ -2,15 +2,17 @@
 
 #include "sketch/StraightSkeletonGraph.h"
 
+#include "common/UnionFind.h"
+
 #include <algorithm>
 #include <numeric>
 
 namespace medial {
 namespace {
 
-// Contracts the union-find groups of `parent` (deleted nodes excluded): each group becomes one node at
+// Contracts the groups of `groups` (deleted nodes excluded): each group becomes one node at
 // `position[root]` with radius `radius[root]`. Returns the number of nodes removed.
-int contractGroups(SketchGraph& graph, std::vector<int>& parent, const std::vector<char>& deleted,
+int contractGroups(SketchGraph& graph, UnionFind& groups, const std::vector<char>& deleted,
                    const std::vector<Eigen::Vector3d>& position, const std::vector<double>& radius) {
   const int n = graph.skeleton.nodeCount();
   std::vector<int> target(n, -1), newOfRoot(n, -1);
@@ -19,7 +21,7 @@ int contractGroups(SketchGraph& graph, std::vector<int>& parent, const std::vect
   std::vector<int> parts;
   for (int i = 0; i < n; ++i) {
     if (deleted[i]) continue;
-    const int root = findRoot(parent, i);
+    const int root = groups.find(i);
     if (newOfRoot[root] < 0) {
       newOfRoot[root] = int(positions.size());
       positions.push_back(position[root]);
@@ -39,8 +41,7 @@ int mergeJunctions(SketchGraph& graph, const std::vector<double>& threshold) {
   const int n = graph.skeleton.nodeCount();
   const auto neighbours = graph.adjacency();
   auto isJunction = [&](int v) { return neighbours[v].size() >= 3; };
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind groups{size_t(n)};
   std::vector<char> merged(n, 0);
   // From each junction, a search along the bones up to its threshold (the tree has one path per pair).
   std::vector<double> distance(n, -1);
@@ -62,7 +63,7 @@ int mergeJunctions(SketchGraph& graph, const std::vector<double>& threshold) {
     for (int k : visited) {
       if (k == j || !isJunction(k) || distance[k] > threshold[k]) continue;
       merged[j] = merged[k] = 1;
-      for (int v = k; v != j; v = via[v]) parent[findRoot(parent, v)] = findRoot(parent, j);
+      for (int v = k; v != j; v = via[v]) groups.join(v, j);
     }
     for (int v : visited) distance[v] = -1, via[v] = -1;
   }
@@ -71,13 +72,13 @@ int mergeJunctions(SketchGraph& graph, const std::vector<double>& threshold) {
   std::vector<double> radius = graph.skeleton.radii;
   std::vector<int> count(n, 0);
   for (int v = 0; v < n; ++v) {
-    const int root = findRoot(parent, v);
+    const int root = groups.find(v);
     if (merged[v]) sum[root] += graph.skeleton.nodes[v], ++count[root];
     radius[root] = std::max(radius[root], graph.skeleton.radii[v]);
   }
   for (int v = 0; v < n; ++v)
     if (count[v] > 0) position[v] = sum[v] / count[v];
-  return contractGroups(graph, parent, std::vector<char>(n, 0), position, radius);
+  return contractGroups(graph, groups, std::vector<char>(n, 0), position, radius);
 }
 
 int pruneBranches(SketchGraph& graph, const std::vector<double>& threshold) {
@@ -106,16 +107,14 @@ int pruneBranches(SketchGraph& graph, const std::vector<double>& threshold) {
     --degree[c.nodes.front()];
     for (size_t k = 1; k < c.nodes.size(); ++k) deleted[c.nodes[k]] = 1;
   }
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  return contractGroups(graph, parent, deleted, graph.skeleton.nodes, graph.skeleton.radii);
+  UnionFind groups{size_t(n)};
+  return contractGroups(graph, groups, deleted, graph.skeleton.nodes, graph.skeleton.radii);
 }
 
 int collapseEdges(SketchGraph& graph, const std::vector<double>& threshold) {
   const int n = graph.skeleton.nodeCount();
   const auto neighbours = graph.adjacency();
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind groups{size_t(n)};
   std::vector<Eigen::Vector3d> position = graph.skeleton.nodes;
   std::vector<double> radius = graph.skeleton.radii, limit = threshold;
   std::vector<char> junction(n), internal(n);
@@ -124,10 +123,10 @@ int collapseEdges(SketchGraph& graph, const std::vector<double>& threshold) {
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return graph.edgeLength(a) < graph.edgeLength(b); });
   for (int e : order) {
-    const int a = findRoot(parent, graph.skeleton.edges[e][0]), b = findRoot(parent, graph.skeleton.edges[e][1]);
+    const int a = groups.find(graph.skeleton.edges[e][0]), b = groups.find(graph.skeleton.edges[e][1]);
     if (a == b || !internal[a] || !internal[b]) continue;
     if ((position[a] - position[b]).norm() >= std::min(limit[a], limit[b])) continue;
-    parent[b] = a;
+    groups.join(b, a);
     position[a] = junction[a] == junction[b] ? Eigen::Vector3d(0.5 * (position[a] + position[b]))
                   : junction[a]              ? position[a]
                                              : position[b];
@@ -135,7 +134,7 @@ int collapseEdges(SketchGraph& graph, const std::vector<double>& threshold) {
     junction[a] = junction[a] || junction[b];
     limit[a] = std::min(limit[a], limit[b]);
   }
-  return contractGroups(graph, parent, std::vector<char>(n, 0), position, radius);
+  return contractGroups(graph, groups, std::vector<char>(n, 0), position, radius);
 }
 
 }  // namespace medial

@@ -1,18 +1,17 @@
 #include "sketch/SketchSkeleton.h"
 
+#include "common/Stopwatch.h"
+
 #include "sketch/BoundedDP.h"
 #include "sketch/SketchInflation.h"
 #include "sketch/SkeletonRefinement.h"
 #include "sketch/StraightSkeletonGraph.h"
 
-#include <chrono>
 #include <cmath>
 
 namespace medial {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 Eigen::Vector3d place(const Eigen::Matrix4d& placement, const Eigen::Vector2d& p, double z = 0) {
   return (placement * Eigen::Vector4d(p.x(), p.y(), z, 1)).head<3>();
@@ -116,7 +115,7 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
     result.error = "the strokes have no extent (all points coincide or are not finite)";
     return result;
   }
-  const auto localStart = Clock::now();
+  Stopwatch localStart;
   result.parts.resize(parts.size());
   for (int k = 0; k < int(parts.size()); ++k) {
     std::string error;
@@ -130,14 +129,14 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
     }
     if (aborted(0.6 * (k + 1) / parts.size())) return result;
   }
-  result.localSeconds = secondsSince(localStart);
+  result.localSeconds = localStart.seconds();
 
-  const auto connectionStart = Clock::now();
+  Stopwatch connectionStart;
   const auto attachments = connectParts(result.graph, int(parts.size()));
   for (size_t k = 0; k < parts.size(); ++k) result.parts[k].attachment = attachments[k];
-  result.connectionSeconds = secondsSince(connectionStart);
+  result.connectionSeconds = connectionStart.seconds();
 
-  const auto refinementStart = Clock::now();
+  Stopwatch refinementStart;
   SketchGraph& g = result.graph;
   // Pruning first: the junctions at the base of spurs and twigs are not real junctions to merge.
   pruneBranches(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::pruning));
@@ -147,11 +146,11 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
   for (int v = 0; v < g.skeleton.nodeCount(); ++v)
     if (g.nodePart[v] == 0 && (g.skeleton.root < 0 || g.skeleton.radii[v] > g.skeleton.radii[g.skeleton.root]))
       g.skeleton.root = v;
-  result.refinementSeconds = secondsSince(refinementStart);
+  result.refinementSeconds = refinementStart.seconds();
   if (aborted(0.7)) return result;
 
   if (p.inflate) {
-    const auto inflationStart = Clock::now();
+    Stopwatch inflationStart;
     std::vector<Eigen::RowVector3d> vertices;
     std::vector<Eigen::RowVector3i> faces;
     for (int k = 0; k < int(parts.size()); ++k) {
@@ -181,7 +180,7 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
     for (size_t v = 0; v < vertices.size(); ++v) result.mesh.vertices.row(v) = vertices[v];
     result.mesh.faces.resize(int(faces.size()), 3);
     for (size_t f = 0; f < faces.size(); ++f) result.mesh.faces.row(f) = faces[f];
-    result.inflationSeconds = secondsSince(inflationStart);
+    result.inflationSeconds = inflationStart.seconds();
   }
   return result;
 }

@@ -1,5 +1,5 @@
 // SketchSkeleton: real-time skeletonization for sketch-based modelling (Ma, Wang, Li, Zhang 2021), the
-// whole chain from closed strokes to one animatable skeleton with radii (GUIDE §2, ready for SQM) and an
+// whole chain from closed strokes to one animatable skeleton with radii (docs/ARCHITECTURE.md §4, ready for SQM) and an
 // inflated mesh per stroke.
 //
 // Per part (§3.1): stroke -> simple counter-clockwise polygon (SketchStroke) -> CGAL straight skeleton
@@ -70,7 +70,7 @@ struct SketchPartResult {
 };
 
 struct SketchResult {
-  SketchGraph graph;                // the skeleton (GUIDE §2: Radius, Root) with part and branch labels
+  SketchGraph graph;                // the skeleton (docs/ARCHITECTURE.md §4: Radius, Root) with part and branch labels
   TriangleMesh mesh;                // the inflated parts, one closed component per part
   std::vector<int> meshVertexPart;  // one per mesh vertex
   std::vector<SketchPartResult> parts;
@@ -80,7 +80,12 @@ struct SketchResult {
   bool ok() const { return error.empty(); }
 };
 
-// `progress(fraction)` returning false aborts (the result then carries the error "aborted").
+/// The skeleton of sketched parts (§3.1-3.3) and their inflated meshes (§4.1).
+/// @param parts closed strokes in modelling order, each with its placement and optional local thresholds
+/// @param parameters the paper's defaults in sketch pixels (SketchParameters)
+/// @param progress called with the fraction done; returning false stops the work (error "aborted")
+/// @return the skeleton with part and branch labels, the inflated meshes and stage times, or an error that
+///         names the stroke ("stroke 2: ...")
 SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchParameters& parameters = {},
                             const std::function<bool(double)>& progress = {});
 

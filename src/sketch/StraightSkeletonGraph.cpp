@@ -1,5 +1,7 @@
 #include "sketch/StraightSkeletonGraph.h"
 
+#include "common/UnionFind.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/create_straight_skeleton_2.h>
@@ -157,31 +159,30 @@ bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, Skelet
   meanLength = edges.empty() ? 0 : meanLength / edges.size();
   const double threshold = collapseRatio * meanLength;
   const int n = graph.nodeCount();
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind clusters{size_t(n)};
   std::vector<int> central(n);  // per cluster root: its most central node
   std::iota(central.begin(), central.end(), 0);
   std::vector<int> order(edges.size());
   std::iota(order.begin(), order.end(), 0);
   auto length = [&](int e) {
-    const int a = central[findRoot(parent, edges[e][0])], b = central[findRoot(parent, edges[e][1])];
+    const int a = central[clusters.find(edges[e][0])], b = central[clusters.find(edges[e][1])];
     return (graph.nodes[a] - graph.nodes[b]).norm();
   };
   std::sort(order.begin(), order.end(), [&](int a, int b) { return length(a) < length(b); });
   for (int e : order) {
-    const int a = findRoot(parent, edges[e][0]), b = findRoot(parent, edges[e][1]);
+    const int a = clusters.find(edges[e][0]), b = clusters.find(edges[e][1]);
     if (a == b || length(e) >= threshold) continue;
-    parent[b] = a;
+    clusters.join(b, a);
     if (times[central[b]] > times[central[a]]) central[a] = central[b];
   }
   std::vector<int> newIndex(n, -1);
   std::vector<Eigen::Vector2d> nodes;
   for (int i = 0; i < n; ++i)
-    if (findRoot(parent, i) == i) newIndex[i] = int(nodes.size()), nodes.push_back(graph.nodes[central[i]]);
+    if (clusters.find(i) == i) newIndex[i] = int(nodes.size()), nodes.push_back(graph.nodes[central[i]]);
   graph.nodes = std::move(nodes);
   std::vector<std::array<int, 2>> kept;
   for (const auto& e : edges) {
-    int a = newIndex[findRoot(parent, e[0])], b = newIndex[findRoot(parent, e[1])];
+    int a = newIndex[clusters.find(e[0])], b = newIndex[clusters.find(e[1])];
     if (a == b) continue;
     if (a > b) std::swap(a, b);
     kept.push_back({a, b});

@@ -36,12 +36,6 @@ bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, Skelet
 // (-1 on failure).
 int cgalStraightSkeletonVertexCount(const Polygon2& polygon);
 
-// Union-find root of i, with path halving (shared by the collapsing and refinement steps).
-inline int findRoot(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
 // Branches (Definition 6): maximal paths whose inner nodes have degree 2, each from a junction or
 // terminal joint to a junction or terminal joint, as node sequences. A lone node is no branch.
 // A cycle made only of degree-2 nodes is returned once, starting and ending at the same node.

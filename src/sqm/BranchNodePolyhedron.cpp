@@ -204,14 +204,24 @@ const char* lieSmoothingName(LieSmoothing smoothing) {
   return "";
 }
 
+namespace {
+const LieSmoothing kSmoothings[] = {LieSmoothing::Quaternion, LieSmoothing::Averaging, LieSmoothing::AreaLaplacian,
+                                    LieSmoothing::ValencyLaplacian};
+}
+
 bool parseLieSmoothing(const std::string& name, LieSmoothing& smoothing) {
-  for (LieSmoothing s : {LieSmoothing::Averaging, LieSmoothing::Quaternion, LieSmoothing::AreaLaplacian,
-                         LieSmoothing::ValencyLaplacian})
+  for (LieSmoothing s : kSmoothings)
     if (name == lieSmoothingName(s)) {
       smoothing = s;
       return true;
     }
   return false;
+}
+
+std::vector<std::string> lieSmoothingNames() {
+  std::vector<std::string> names;
+  for (LieSmoothing s : kSmoothings) names.push_back(lieSmoothingName(s));
+  return names;
 }
 
 std::vector<BnpMesh::VertexHandle> BranchNodePolyhedron::orderedRing(int i) const {

@@ -35,6 +35,8 @@ using BnpMesh = OpenMesh::TriMesh_ArrayKernelT<SqmMeshTraits>;
 enum class LieSmoothing { Averaging, Quaternion, AreaLaplacian, ValencyLaplacian };
 const char* lieSmoothingName(LieSmoothing smoothing);
 bool parseLieSmoothing(const std::string& name, LieSmoothing& smoothing);
+// Every scheme's name (the one list the filter, the command line and the GUI offer).
+std::vector<std::string> lieSmoothingNames();
 
 struct BranchNodePolyhedron {
   int node = -1;

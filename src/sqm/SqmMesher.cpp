@@ -1,5 +1,9 @@
 #include "sqm/SqmMesher.h"
 
+#include "common/Stopwatch.h"
+
+#include "common/UnionFind.h"
+
 #include "sqm/CycleClosing.h"
 #include "sqm/RingAngles.h"
 #include "mesh/PolygonOrientation.h"
@@ -10,7 +14,6 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -20,8 +23,6 @@ namespace medial {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 Eigen::Vector3d toEigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
 
@@ -120,16 +121,10 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
              " are joined by an edge but lie at the same place";
   mergeSwallowedNodes(s, out.merged);
   // Extension 5: every edge closing a cycle is cut; each end gets a pseudo child where the other end is.
-  std::vector<int> parent(s.nodes.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&parent](int x) {
-    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-    return x;
-  };
+  UnionFind sets(s.nodes.size());
   std::vector<std::array<int, 2>> treeEdges;
   for (const auto& e : s.edges) {
-    if (find(e[0]) != find(e[1])) {
-      parent[size_t(find(e[0]))] = find(e[1]);
+    if (sets.join(e[0], e[1])) {
       treeEdges.push_back(e);
       continue;
     }
@@ -374,7 +369,7 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
   }
 
   // Steps 1-2: BNPs, generated for every branch node, refined parent before child.
-  auto start = Clock::now();
+  Stopwatch start;
   std::map<int, BranchNodePolyhedron> bnps;
   std::string error;
   for (int k : tree.nodes) {
@@ -384,8 +379,8 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
     for (int m : around) directions.push_back(pose.position[size_t(m)]);
     if (!generateBnp(k, pose.position[size_t(k)], s.radii[size_t(k)], around, directions, bnps[k], error)) return error;
   }
-  result.generationSeconds += secondsSince(start);
-  start = Clock::now();
+  result.generationSeconds += start.seconds();
+  start.restart();
   // For each branch node and each of its intersection vertices: the path's end node, and which of the end
   // BNP's intersection vertices faces back (its parent side: index 0) when the end is a branch node.
   for (int k : tree.nodes) {
@@ -413,11 +408,11 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
     }
     if (!refineBnp(bnp, target, exact, p.smoothing, error)) return error;
   }
-  result.refinementSeconds += secondsSince(start);
+  result.refinementSeconds += start.seconds();
 
   // Steps 3: joining. BNP vertices other than the intersection vertices go to the mesh; every BNP face
   // touches an intersection vertex, so none is kept: tubes take their place.
-  start = Clock::now();
+  start.restart();
   std::map<int, std::vector<int>> outputId;  // per branch node: output id per BNP vertex (-1 intersection)
   for (auto& [k, bnp] : bnps) {
     std::vector<int>& ids = outputId[k];
@@ -450,7 +445,7 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
       }
     }
   }
-  result.joiningSeconds += secondsSince(start);
+  result.joiningSeconds += start.seconds();
   return {};
 }
 
@@ -481,13 +476,24 @@ const char* ringPairingName(RingPairing pairing) {
   return "";
 }
 
+namespace {
+const RingPairing kPairings[] = {RingPairing::MinimalTotalDistance, RingPairing::MinimalDistance,
+                                 RingPairing::MinimalAngle};
+}
+
 bool parseRingPairing(const std::string& name, RingPairing& pairing) {
-  for (RingPairing r : {RingPairing::MinimalTotalDistance, RingPairing::MinimalDistance, RingPairing::MinimalAngle})
+  for (RingPairing r : kPairings)
     if (name == ringPairingName(r)) {
       pairing = r;
       return true;
     }
   return false;
+}
+
+std::vector<std::string> ringPairingNames() {
+  std::vector<std::string> names;
+  for (RingPairing r : kPairings) names.push_back(ringPairingName(r));
+  return names;
 }
 
 int SqmMesh::quadCount() const {
@@ -508,10 +514,10 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
   for (size_t k = 0; k < prepared.merged.size(); ++k) done[k] = prepared.merged[k];  // no tube of their own
   for (int start = 0; start < s.nodeCount(); ++start) {
     if (done[size_t(start)]) continue;
-    auto clock = Clock::now();
+    Stopwatch clock;
     const SqmTree tree = buildSqmTree(s, start, s.root);
     const BindPose pose = straightenSkeleton(s, tree);
-    result.straighteningSeconds += secondsSince(clock);
+    result.straighteningSeconds += clock.seconds();
     for (int k : tree.nodes) {
       done[size_t(k)] = true;
       if (prepared.origin[size_t(k)] != k) continue;  // capsule nodes are not counted
@@ -520,9 +526,9 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
     const size_t firstVertex = builder.mesh.vertices.size();
     result.error = meshTree(s, tree, pose, p, builder, result);
     if (!result.error.empty()) return result;
-    clock = Clock::now();
+    clock.restart();
     placeVertices(s, tree, pose, builder, firstVertex);
-    result.placementSeconds += secondsSince(clock);
+    result.placementSeconds += clock.seconds();
     if (progress && !progress(double(start + 1) / double(s.nodeCount()))) {
       result.error = "aborted";
       return result;
@@ -561,10 +567,10 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
     for (const auto& e : s.edges)
       if (!prepared.pseudo[size_t(e[0])] && !prepared.pseudo[size_t(e[1])]) cones.edges.push_back(e);
     for (const auto& [a, b] : prepared.cycleCuts) cones.edges.push_back({prepared.origin[size_t(a)], prepared.origin[size_t(b)]});
-    const auto clock = Clock::now();
+    Stopwatch clock;
     refineSqmMesh(result.mesh, cones, p.subdivisionLevels, p.sharpScaling, p.foldRepair, &result.foldRepairedVertices);
     for (int& node : result.mesh.vertexNode) node = prepared.origin[size_t(node)];
-    result.subdivisionSeconds += secondsSince(clock);
+    result.subdivisionSeconds += clock.seconds();
   }
   return result;
 }

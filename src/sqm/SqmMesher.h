@@ -37,6 +37,8 @@ namespace medial {
 enum class RingPairing { MinimalTotalDistance, MinimalDistance, MinimalAngle };
 const char* ringPairingName(RingPairing pairing);
 bool parseRingPairing(const std::string& name, RingPairing& pairing);
+// Every pairing's name (the one list the filter, the command line and the GUI offer).
+std::vector<std::string> ringPairingNames();
 
 // Stage 8's radius scaling near sharp vertices (SqmRefinement.h tells how). Off by default: on the test
 // skeletons refined twice it did not lower the self-intersections (octopus 99 -> 229 pairs at s = 0.8,
@@ -80,6 +82,12 @@ struct SqmResult {
   bool ok() const { return error.empty(); }
 };
 
+/// The SQM mesh of `skeleton`: one closed quad-dominant manifold per connected component.
+/// @param skeleton nodes, edges and a positive radius per node (optional EllipsoidAxes and root)
+/// @param parameters the papers' defaults and Medial's extensions (SqmParameters)
+/// @param progress called with the fraction done; returning false stops the work (error "aborted")
+/// @return the mesh with each vertex's node, node counts, repairs and stage times, or an error naming the
+///         problem (no radius, coincident joined nodes, two edges leaving a node in one direction)
 SqmResult sqmMesh(const Skeleton& skeleton, const SqmParameters& parameters = {},
                   const std::function<bool(double)>& progress = {});
 

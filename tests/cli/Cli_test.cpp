@@ -1,7 +1,8 @@
-// The `medial` command (GUIDE §3): exit codes, help, atomic outputs, render, private Xvfb.
+// The `medial` command (docs/ARCHITECTURE.md §6): exit codes, help, atomic outputs, render, private Xvfb.
 #include "ImageComparison.h"
 #include "RunCommand.h"
 #include "TestPaths.h"
+#include "common/UnionFind.h"
 
 #include <vtkCell.h>
 #include <vtkDataArray.h>
@@ -17,6 +18,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
 #include <vector>
 
 namespace {
@@ -132,21 +136,11 @@ long skeletonCycles(const std::string& path) {
   reader->SetFileName(path.c_str());
   reader->Update();
   vtkPolyData* skeleton = reader->GetOutput();
-  std::vector<vtkIdType> parent(size_t(skeleton->GetNumberOfPoints()));
-  for (size_t i = 0; i < parent.size(); ++i) parent[i] = vtkIdType(i);
-  auto find = [&](vtkIdType x) {
-    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-    return x;
-  };
-  long components = long(parent.size());
-  for (vtkIdType c = 0; c < skeleton->GetNumberOfCells(); ++c) {
-    const vtkIdType a = find(skeleton->GetCell(c)->GetPointId(0)), b = find(skeleton->GetCell(c)->GetPointId(1));
-    if (a != b) {
-      parent[size_t(a)] = b;
-      --components;
-    }
-  }
-  return long(skeleton->GetNumberOfCells()) - long(parent.size()) + components;
+  medial::UnionFind sets{size_t(skeleton->GetNumberOfPoints())};
+  long components = long(sets.size());
+  for (vtkIdType c = 0; c < skeleton->GetNumberOfCells(); ++c)
+    if (sets.join(int(skeleton->GetCell(c)->GetPointId(0)), int(skeleton->GetCell(c)->GetPointId(1)))) --components;
+  return long(skeleton->GetNumberOfCells()) - long(sets.size()) + components;
 }
 
 TEST(Cli, SkeletonPutsBackTheCyclesSurgeryLostAndSaysSo) {
@@ -491,4 +485,74 @@ TEST(Cli, RenderGhostOptionErrors) {
   EXPECT_EQ(lineCount(missing.err), 1) << missing.err;
   EXPECT_NE(missing.err.find("no-such-skeleton.vtp"), std::string::npos) << missing.err;
   EXPECT_FALSE(std::filesystem::exists(png));
+}
+
+namespace {
+
+std::vector<std::string> words(const std::string& text) {
+  std::vector<std::string> tokens;
+  std::istringstream in(text);
+  for (std::string token; in >> token;) tokens.push_back(token);
+  return tokens;
+}
+
+}  // namespace
+
+// The README's usage block is every command's --help synopsis, word for word, so the two cannot drift.
+TEST(Cli, ReadmeUsageMatchesEveryCommandsHelp) {
+  std::ifstream file(sourceDir() + "/README.md");
+  const std::string readme((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const size_t section = readme.find("## The `medial` command");
+  ASSERT_NE(section, std::string::npos);
+  const size_t open = readme.find("```\n", section) + 4, close = readme.find("```", open);
+  std::istringstream block(readme.substr(open, close - open));
+  std::map<std::string, std::string> readmeUsage;  // command -> its lines in the block
+  std::string current;
+  for (std::string line; std::getline(block, line);) {
+    if (line.rfind("medial ", 0) == 0) current = words(line)[1];
+    readmeUsage[current] += line + "\n";
+  }
+  for (const char* command : {"render", "skeleton", "sqm", "centerline", "sketch"}) {
+    const auto help = runCommand(medialCommand(std::string(command) + " --help"));
+    ASSERT_EQ(help.exitCode, 0) << command;
+    const size_t start = help.out.find("usage: ") + 7;
+    const std::string synopsis = help.out.substr(start, help.out.find("\n\n", start) - start);
+    EXPECT_EQ(words(readmeUsage[command]), words(synopsis)) << "README.md's usage of medial " << command
+                                                          << " differs from medial " << command << " --help";
+  }
+}
+
+// A usage error is one line that says what is wrong and where to look, not the whole help.
+TEST(Cli, UsageErrorIsOneLineWithAHint) {
+  const auto r = runCommand(medialCommand("sqm s.vtp -o m.vtp --bogus"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("unknown option --bogus"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("see 'medial sqm --help'"), std::string::npos) << r.err;
+  const auto range = runCommand(medialCommand("skeleton in.off -o s.vtp --iterations 5000"));
+  EXPECT_EQ(range.exitCode, 2);
+  EXPECT_NE(range.err.find("--iterations must be a whole number in 1..1000"), std::string::npos) << range.err;
+}
+
+// A write that fails midway (the disk fills up: here a file-size limit, with SIGXFSZ ignored so that
+// write() returns an error) leaves neither the output nor a temporary file, and the command says which
+// file failed in one line. The centerline's .vtp is about 13 kB; at 14 kB the .vtp fits and the profile
+// (sections every 0.05 mm: about 140 kB) does not; at 4 kB the .vtp itself fails (VTK's XML writer
+// crashed there before Medial wrote its bytes itself).
+TEST(Cli, AWriteThatFailsMidwayLeavesNoFileBehind) {
+  const std::string dir = scratchDir("cli-disk-full");
+  const std::string input = dataPath("volumes/tubes/helix.nii.gz");
+  for (const auto& [blocks, failing] : {std::make_pair(14, std::string("profile.csv")), std::make_pair(4, std::string("helix.vtp"))}) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const auto r = runCommand("sh -c \"trap '' XFSZ; ulimit -f " + std::to_string(blocks) + "; exec " + medialExe() +
+                              " centerline " + input + " -o " + dir + "/helix.vtp --label 1 --profile " + dir +
+                              "/profile.csv --section-spacing 0.05 --quiet\"");
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(dir + "/" + failing), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/" + failing));
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      EXPECT_EQ(entry.path().filename().string().rfind(".tmp-", 0), std::string::npos) << "left behind: " << entry.path();
+  }
 }

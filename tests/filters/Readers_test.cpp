@@ -3,6 +3,7 @@
 #include "TestPaths.h"
 
 #include "MedialErrorCollector.h"
+#include "MedialSketchData.h"
 #include "vtkMedialMeshTopology.h"
 #include "vtkMedialReader.h"
 
@@ -284,6 +285,18 @@ TEST(Readers, ByuMesh) {
   EXPECT_EQ(vtkPolyData::SafeDownCast(fromByu.data)->GetNumberOfPolys(), mesh->GetNumberOfPolys());
 }
 
+// A sketch goes through the one reader like every other format: strokes as closed line cells with their
+// 4x4 placements.
+TEST(Readers, SketchTextThroughTheOneReader) {
+  const ReadResult r = readFile(medial::test::dataPath("sketches/bird.txt"));
+  ASSERT_TRUE(r.error.empty()) << r.error;
+  auto* strokes = vtkPolyData::SafeDownCast(r.data);
+  ASSERT_TRUE(strokes);
+  EXPECT_TRUE(medial::isSketch(strokes));
+  EXPECT_EQ(strokes->GetNumberOfLines(), 3) << "body and two wings";
+  EXPECT_EQ(strokes->GetNumberOfPolys(), 0);
+}
+
 TEST(Readers, ClearErrorsOnBadFiles) {
   const std::string dir = scratchDir("bad-files");
   writeText(dir + "/garbage.vtp", "this is not XML at all\n");
@@ -292,11 +305,13 @@ TEST(Readers, ClearErrorsOnBadFiles) {
   writeText(dir + "/empty.obj", "# no geometry\n");
   writeText(dir + "/garbage.nii", "not an image");
   writeText(dir + "/garbage.inv3", "not a tar");
-  writeText(dir + "/notes.txt", "hello");
+  writeText(dir + "/notes.txt", "hello");  // a sketch file whose first line is no stroke point
+  writeText(dir + "/notes.docx", "hello");
   struct Case {
     std::string path, expected;
   };
-  for (const Case& c : {Case{dir + "/missing.off", "no such file"}, Case{dir + "/notes.txt", "unsupported file type"},
+  for (const Case& c : {Case{dir + "/missing.off", "no such file"}, Case{dir + "/notes.docx", "unsupported file type"},
+                        Case{dir + "/notes.txt", "notes.txt:1: expected 'x y'"},
                         Case{dir + "/garbage.vtp", ""}, Case{dir + "/garbage.off", "the file ends early (3 vertices and 1 faces announced, 2 and"},
                         Case{dir + "/bad-index.off", "vertex that does not exist"},
                         Case{dir + "/empty.obj", "holds no mesh"}, Case{dir + "/garbage.nii", ""},

@@ -1,4 +1,4 @@
-// Skeleton I/O (GUIDE §2): SWC and VTP round trips, and each validation error through the readers.
+// Skeleton I/O (docs/ARCHITECTURE.md §4): SWC and VTP round trips, and each validation error through the readers.
 #include "TestPaths.h"
 
 #include "MedialErrorCollector.h"

@@ -1,6 +1,6 @@
 // vtkMedialSketchReader -> vtkMedialSketchSkeleton -> vtkMedialSQM on the strokes of data/sketches: the
 // issue's pipeline test (the SQM mesh of every sketch is a closed manifold), the output arrays, errors.
-#include "PolyDataFaces.h"
+#include "MedialMeshData.h"
 #include "TestPaths.h"
 
 #include "MedialErrorCollector.h"
@@ -21,7 +21,7 @@
 namespace {
 
 medial::MeshTopology topologyOf(vtkPolyData* mesh) {
-  return medial::computeMeshTopology(mesh->GetNumberOfPoints(), medial::test::polygonsOf(mesh));
+  return medial::computeMeshTopology(mesh->GetNumberOfPoints(), medial::polygonsOf(mesh));
 }
 
 class SketchSamples : public ::testing::TestWithParam<const char*> {};

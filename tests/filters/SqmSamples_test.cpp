@@ -1,16 +1,13 @@
 // vtkMedialSQM on the test skeletons of data/skeletons (made by data/make-sqm-skeletons.py): closed
 // manifolds without self-intersections, quad-dominant where the paper's 90 % applies, errors on bad input.
-#include "PolyDataFaces.h"
 #include "TestPaths.h"
 
 #include "MedialErrorCollector.h"
+#include "MedialMeshData.h"
 #include "mesh/MeshTopology.h"
+#include "mesh/SelfIntersections.h"
 #include "vtkMedialReader.h"
 #include "vtkMedialSQM.h"
-
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <Eigen/Dense>
 
@@ -42,27 +39,11 @@ std::ostream& operator<<(std::ostream& os, const SampleSkeleton& s) { return os 
 
 class SqmSamples : public ::testing::TestWithParam<SampleSkeleton> {};
 
-using medial::test::polygonsOf;
+using medial::polygonsOf;
 
-// CGAL's self-intersection test on the faces (quads split along a diagonal): intersecting triangle pairs.
-// Exact predicates: with plain doubles, the coplanar neighbours of a straight tube's planar quads came out
-// as intersecting by rounding (42 of the quadruped's 91 pairs).
+// Pairs of faces that cut each other (src/mesh/SelfIntersections.h: CGAL, exact predicates).
 size_t selfIntersectingPairs(vtkPolyData* mesh) {
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Surface = CGAL::Surface_mesh<Kernel::Point_3>;
-  Surface surface;
-  std::vector<Surface::Vertex_index> vertices;
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i) {
-    double p[3];
-    mesh->GetPoint(i, p);
-    vertices.push_back(surface.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
-  }
-  for (const auto& f : polygonsOf(mesh))
-    for (size_t k = 1; k + 1 < f.size(); ++k)
-      surface.add_face(vertices[size_t(f[0])], vertices[size_t(f[k])], vertices[size_t(f[k + 1])]);
-  std::vector<std::pair<Surface::Face_index, Surface::Face_index>> pairs;
-  CGAL::Polygon_mesh_processing::self_intersections(surface, std::back_inserter(pairs));
-  return pairs.size();
+  return medial::selfIntersectingFaces(medial::pointsOf(mesh), polygonsOf(mesh)).size();
 }
 
 TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {

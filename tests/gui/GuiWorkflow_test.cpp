@@ -12,7 +12,11 @@
 #include "SkeletonPanel.h"
 #include "SqmPanel.h"
 #include "VtkView.h"
+#include "vtkMedialContractionSkeleton.h"
 #include "vtkMedialGhostPass.h"
+#include "vtkMedialSQM.h"
+#include "vtkMedialSketchSkeleton.h"
+#include "vtkMedialTskCenterline.h"
 #include "vtkMedialScene.h"
 
 #include <QAction>
@@ -50,6 +54,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 
 namespace {
@@ -162,6 +167,61 @@ TEST_F(GuiWorkflow, HeadCtInSlicesAndIsoSurface) {
   EXPECT_GT(bone->polyData()->GetNumberOfPolys(), 10000);
   window->resetCamera();
   EXPECT_GT(screenshot("cranium-bone"), 0.1);
+}
+
+// "Key: value" pairs of PrintSelf that describe parameters: those two fresh filters print alike (the
+// addresses, times and pipeline details that differ between objects are left out). Returns the pairs of
+// `filter` that differ from the fresh filters'.
+std::set<std::string> differingParameters(vtkAlgorithm* filter, vtkAlgorithm* freshA, vtkAlgorithm* freshB) {
+  auto pairs = [](vtkAlgorithm* f) {
+    std::ostringstream text;
+    f->PrintSelf(text, vtkIndent());
+    std::map<std::string, std::string> values;
+    std::istringstream in(text.str());
+    for (std::string line; std::getline(in, line);) {
+      const size_t colon = line.find(": "), first = line.find_first_not_of(' ');
+      if (colon != std::string::npos && first < colon) values.emplace(line.substr(first, colon - first), line.substr(colon + 2));
+    }
+    return values;
+  };
+  const auto a = pairs(freshA), b = pairs(freshB), mine = pairs(filter);
+  std::set<std::string> differing;
+  for (const auto& [key, value] : a) {
+    const auto other = b.find(key), own = mine.find(key);
+    const bool parameter = other != b.end() && other->second == value && key.find("Time") == std::string::npos;
+    if (parameter && own != mine.end() && own->second != value) differing.insert(key + ": " + own->second);
+  }
+  return differing;
+}
+
+// Each panel's form, untouched, configures its filter exactly as a fresh filter (the Python and command
+// line default) but for the GUI's documented presets.
+TEST_F(GuiWorkflow, FormDefaultsAreTheFiltersDefaults) {
+  open(dataPath("meshes/torus.off"));
+  open(dataPath("skeletons/figure.vtp"));
+  open(dataPath("sketches/bird.txt"));
+  open(dataPath("volumes/tubes/u.nii.gz"));
+  struct Case {
+    FilterPanel* panel;
+    SceneObject* input;
+    vtkSmartPointer<vtkAlgorithm> freshA, freshB;
+    std::set<std::string> presets;  // the lines the GUI sets on purpose
+  };
+  const std::vector<Case> cases = {
+      {window->skeletonPanel(), window->objects()->at(0), vtkSmartPointer<vtkMedialContractionSkeleton>::New(),
+       vtkSmartPointer<vtkMedialContractionSkeleton>::New(), {"ComputeWeights: 1"}},
+      {window->sqmPanel(), window->objects()->at(1), vtkSmartPointer<vtkMedialSQM>::New(),
+       vtkSmartPointer<vtkMedialSQM>::New(), {}},
+      {window->sketchPanel(), window->objects()->at(2), vtkSmartPointer<vtkMedialSketchSkeleton>::New(),
+       vtkSmartPointer<vtkMedialSketchSkeleton>::New(), {}},
+      {window->centerlinePanel(), window->objects()->at(3), vtkSmartPointer<vtkMedialTskCenterline>::New(),
+       vtkSmartPointer<vtkMedialTskCenterline>::New(), {"ComputeSections: 1"}},
+  };
+  for (const Case& c : cases) {
+    const vtkSmartPointer<vtkAlgorithm> configured = c.panel->configuredFilter(c.input);
+    ASSERT_TRUE(configured) << c.panel->title().toStdString();
+    EXPECT_EQ(differingParameters(configured, c.freshA, c.freshB), c.presets) << c.panel->title().toStdString();
+  }
 }
 
 TEST_F(GuiWorkflow, SkeletonGhostViewSqmAndRig) {

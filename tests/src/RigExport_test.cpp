@@ -53,7 +53,7 @@ TEST(RigExport, BonesFollowTheHierarchyFromTheRoot) {
 class RigRoundTrip : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
 
 TEST_P(RigRoundTrip, BonesAndWeightSumsSurvive) {
-  // Assimp cannot read back its own binary FBX (PLATFORM.md), so FBX is checked through its ASCII flavour
+  // Assimp cannot read back its own binary FBX (docs/ARCHITECTURE.md §9), so FBX is checked through its ASCII flavour
   // (the same exporter code writes both), the binary file by its header below.
   const std::string format = GetParam().first;
   const std::string path = scratch(std::string("tube.") + GetParam().second);

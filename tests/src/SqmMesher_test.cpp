@@ -3,6 +3,7 @@
 #include "sqm/BranchNodePolyhedron.h"
 #include "sqm/CycleClosing.h"
 #include "sqm/RingAngles.h"
+#include "sqm/SkeletonStraightening.h"
 #include "sqm/SqmMesher.h"
 #include "sqm/SqmRefinement.h"
 
@@ -103,6 +104,7 @@ TEST(SqmMesher, PlanarYIsClosedAndQuadDominant) {
   expectClosedQuadDominant(s, r);
   EXPECT_EQ(r.branchNodes, 1);
   EXPECT_EQ(r.leafNodes, 3);
+  EXPECT_GE(r.mesh.quadCount(), 0.9 * double(r.mesh.faces.size())) << "the paper's 90 % quads";
 }
 
 // A branch node whose neighbours all lie in one plane through it (every joint of a sketch's skeleton):
@@ -219,8 +221,17 @@ TEST(SqmMesher, LongChainsAreWalkedWithoutRecursion) {
 TEST(SqmMesher, RootThatIsALeafIsMovedToABranchNode) {
   auto s = ySkeleton();
   s.root = 2;  // a leaf
+  EXPECT_EQ(medial::buildSqmTree(s, s.root, s.root).root, 0) << "the tree is rooted at the branch node";
   const auto r = medial::sqmMesh(s);
   expectClosedQuadDominant(s, r);
+  // The same mesh as when the branch node is asked for.
+  s.root = 0;
+  const auto rooted = medial::sqmMesh(s);
+  ASSERT_EQ(r.mesh.vertices.size(), rooted.mesh.vertices.size());
+  double largest = 0;
+  for (size_t v = 0; v < r.mesh.vertices.size(); ++v)
+    largest = std::max(largest, (r.mesh.vertices[v] - rooted.mesh.vertices[v]).norm());
+  EXPECT_LT(largest, 1e-12);
 }
 
 TEST(SqmMesher, LoneNodesTwoNodeSegmentsAndComponents) {

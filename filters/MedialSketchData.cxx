@@ -1,4 +1,4 @@
-#include "PlacedStrokes.h"
+#include "MedialSketchData.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -7,7 +7,12 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
-namespace medial::gui {
+namespace medial {
+
+bool isSketch(vtkPolyData* polyData) {
+  vtkDataArray* placement = polyData ? polyData->GetCellData()->GetArray("Placement") : nullptr;
+  return placement && placement->GetNumberOfComponents() == 16 && polyData->GetNumberOfLines() > 0;
+}
 
 vtkSmartPointer<vtkPolyData> placedStrokes(vtkPolyData* sketch) {
   auto placed = vtkSmartPointer<vtkPolyData>::New();
@@ -33,4 +38,4 @@ vtkSmartPointer<vtkPolyData> placedStrokes(vtkPolyData* sketch) {
   return placed;
 }
 
-}  // namespace medial::gui
+}  // namespace medial

@@ -1,0 +1,84 @@
+// TskCenterline: the whole TSK centerline of a tubular structure in a volume (WSCG 2008), from the voxels
+// to the finished polylines: the structure selected (a label, a threshold window or the non-zero voxels),
+// cleaned (parts touching the volume's border dropped, the largest 26-component kept, holes filled on
+// request) and cropped to its box; then phase I (TubularClusters) and phase II (TskAxis) along one tube,
+// or along every branch of a tree (Branches, beyond the paper); and on request the perpendicular sections
+// of paper §4 (TubeSections) along the first polyline.
+#pragma once
+
+#include "centerline/TskAxis.h"
+#include "centerline/TubeSections.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace medial {
+
+/// A volume's voxels as they are in memory (no copy), with the volume's physical frame.
+struct ScalarVolume {
+  enum class Type { Int8, UInt8, Int16, UInt16, Int32, UInt32, Int64, UInt64, Float32, Float64 };
+  std::array<int, 3> size{0, 0, 0};
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Vector3d spacing = Eigen::Vector3d::Ones();
+  Eigen::Matrix3d direction = Eigen::Matrix3d::Identity();
+  const void* voxels = nullptr;  // x fastest; `components` values per voxel, the first one used
+  Type type = Type::UInt8;
+  int components = 1;
+};
+
+/// Which voxels make the structure.
+enum class VoxelSelection { NonZero, Label, Threshold };
+
+/// What happens to parts of the selection that touch the volume's border. Automatic drops them for a
+/// threshold selection (the air around the body of a CT) and keeps them for labels and non-zero voxels.
+enum class BorderParts { Automatic, Drop, Keep };
+
+struct TskCenterlineParameters {
+  VoxelSelection selection = VoxelSelection::NonZero;
+  double label = 1;                              // with VoxelSelection::Label
+  // With VoxelSelection::Threshold, inclusive; by default the air in the colon on CT (the paper's use).
+  double thresholdLow = -1024, thresholdHigh = -600;
+  BorderParts borderParts = BorderParts::Automatic;
+  bool fillHoles = false;                        // cavities of the structure filled before phase I
+  std::optional<Eigen::Vector3d> seed;           // P0 in physical coordinates; else the lowest end
+  TskParameters tsk;                             // phase II and the centring passes
+  bool detectBranches = false;                   // one polyline per branch (Branches.h)
+  double minimumBranchLength = 0;                // mm; 0: twice the largest inscribed radius
+  bool computeSections = false;                  // sections along the first polyline (TubeSections.h)
+  SectionParameters sections;
+};
+
+struct TskCenterlineResult {
+  std::vector<Centerline> branches;  // the first is the root (the only one without detectBranches)
+  std::vector<int> parent;           // per branch: the branch it leaves (-1: the root)
+  std::vector<int> junction;         // per branch: the point of its parent where it starts (-1: the root)
+  TubeSections sections;             // with computeSections
+  int64_t structureVoxels = 0;       // after selection and clean-up
+  int primitiveCenterlinePoints = 0; // phase I's chosen points, over all branches
+  std::string error;
+  bool ok() const { return error.empty(); }
+};
+
+/// The voxels of `volume` that `parameters` select, with the volume's frame.
+/// @param volume the voxels and their frame
+/// @param parameters selection, label and threshold window (the rest is not used here)
+/// @param selected out: how many voxels were selected
+BinaryVolume selectStructure(const ScalarVolume& volume, const TskCenterlineParameters& parameters,
+                             int64_t& selected);
+
+/// The TSK centerline of the structure in `volume`.
+/// @param volume a 3-D volume, at least 2 voxels along each axis
+/// @param parameters selection, clean-up, seed, the TSK parameters, branches and sections
+/// @param progress called with the fraction done; returning false stops the work (error "aborted")
+/// @return polylines in physical coordinates (mm) with radii and arc lengths, or an error naming the
+///         problem: no voxel selected, nothing left after the clean-up, a seed outside the structure
+TskCenterlineResult tskCenterline(const ScalarVolume& volume, const TskCenterlineParameters& parameters = {},
+                                  const std::function<bool(double)>& progress = {});
+
+}  // namespace medial
