@@ -2,6 +2,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkIdList.h>
+#include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -101,12 +102,25 @@ vtkSmartPointer<vtkPolyData> polyDataFromPolygons(const std::vector<Eigen::Vecto
   return polyData;
 }
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values) {
-  auto array = vtkSmartPointer<vtkIntArray>::New();
+namespace {
+
+template <class Array, class Value>
+vtkSmartPointer<Array> namedArray(const char* name, const std::vector<Value>& values) {
+  auto array = vtkSmartPointer<Array>::New();
   array->SetName(name);
   array->SetNumberOfValues(vtkIdType(values.size()));
   for (size_t i = 0; i < values.size(); ++i) array->SetValue(vtkIdType(i), values[i]);
   return array;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values) {
+  return namedArray<vtkIntArray>(name, values);
+}
+
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values) {
+  return namedArray<vtkDoubleArray>(name, values);
 }
 
 }  // namespace medial

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+class vtkDoubleArray;
 class vtkIntArray;
 class vtkPolyData;
 
@@ -37,7 +38,8 @@ vtkSmartPointer<vtkPolyData> polyDataFromMesh(const TriangleMesh& mesh);
 vtkSmartPointer<vtkPolyData> polyDataFromPolygons(const std::vector<Eigen::Vector3d>& vertices,
                                                   const std::vector<std::vector<int>>& faces);
 
-// A named int array with one value per element of `values` (point or cell data).
+// A named array with one value per element of `values` (point data, cell data or a table column).
 vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values);
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values);
 
 }  // namespace medial

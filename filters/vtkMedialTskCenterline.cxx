@@ -1,5 +1,6 @@
 #include "vtkMedialTskCenterline.h"
 
+#include "MedialMeshData.h"
 #include "MedialVolumeData.h"
 #include "centerline/TskCenterline.h"
 
@@ -21,13 +22,7 @@ vtkStandardNewMacro(vtkMedialTskCenterline);
 
 namespace {
 
-vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values) {
-  auto array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetName(name);
-  array->SetNumberOfValues(vtkIdType(values.size()));
-  for (size_t i = 0; i < values.size(); ++i) array->SetValue(vtkIdType(i), values[i]);
-  return array;
-}
+using medial::doubleArray;
 
 // Port 0: one polyline per branch; a branch starts at its junction point on its parent (shared).
 void writePolylines(const medial::TskCenterlineResult& result, bool branchArrays, vtkPolyData* output) {
@@ -56,13 +51,8 @@ void writePolylines(const medial::TskCenterlineResult& result, bool branchArrays
   output->GetPointData()->AddArray(doubleArray("Radius", radius));
   output->GetPointData()->AddArray(doubleArray("ArcLength", arcLength));
   if (!branchArrays) return;
-  auto cells = output->GetCellData();
-  for (auto [name, values] : {std::make_pair("Branch", &branchId), std::make_pair("ParentBranch", &parentId)}) {
-    auto array = vtkSmartPointer<vtkIntArray>::New();
-    array->SetName(name);
-    for (int v : *values) array->InsertNextValue(v);
-    cells->AddArray(array);
-  }
+  output->GetCellData()->AddArray(medial::intArray("Branch", branchId));
+  output->GetCellData()->AddArray(medial::intArray("ParentBranch", parentId));
 }
 
 // Port 1: the profile, one row per section. Port 2: the unfolded wall, angle along x and arc length
