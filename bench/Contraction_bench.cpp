@@ -47,7 +47,7 @@ struct RunResult {
 };
 
 struct Measured {
-  RunResult run;     // the median run
+  RunResult run;       // the median run
   double peakMiB = 0;  // the largest peak over the runs
 };
 
@@ -82,7 +82,8 @@ Measured measure(int repeat, const std::function<RunResult()>& work) {
     m.peakMiB = std::max(m.peakMiB, peak);
     runs.push_back(r);
   }
-  std::sort(runs.begin(), runs.end(), [](const RunResult& a, const RunResult& b) { return a.seconds < b.seconds; });
+  std::sort(runs.begin(), runs.end(),
+            [](const RunResult& a, const RunResult& b) { return a.seconds < b.seconds; });
   m.run = runs[runs.size() / 2];
   return m;
 }
@@ -156,7 +157,8 @@ RunResult runContractionOnly(const medial::TriangleMesh& mesh, medial::SparseSol
 }
 
 bool readMesh(const std::string& path, SurfaceMesh& mesh) {
-  if (!CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty() || !CGAL::is_triangle_mesh(mesh)) return false;
+  if (!CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty() || !CGAL::is_triangle_mesh(mesh))
+    return false;
   return true;
 }
 
@@ -180,24 +182,29 @@ int main(int argc, char** argv) {
     } else if (!std::strcmp(argv[i], "--no-subdivided")) {
       subdivided = false;
     } else if (argv[i][0] == '-') {
-      std::fprintf(stderr, "usage: %s [--repeat N] [--table MESH|none] [--no-subdivided] [MESH...]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--repeat N] [--table MESH|none] [--no-subdivided] [MESH...]\n",
+                   argv[0]);
       return 2;
     } else {
       meshes.push_back(argv[i]);
     }
   }
   if (meshes.empty())
-    meshes = {"knot1", "elephant", "femur",      "hand",    "mannequin-devil", "man",
-              "diplodocus", "armadillo", "bunny00", "refined_elephant"};
+    meshes = {"knot1", "elephant",   "femur",     "hand",    "mannequin-devil",
+              "man",   "diplodocus", "armadillo", "bunny00", "refined_elephant"};
 
-  std::printf("Skeleton by contraction: Medial (stages 1-4) vs CGAL Mean_curvature_flow_skeletonization, "
-              "median of %d runs each\n", repeat);
+  std::printf(
+      "Skeleton by contraction: Medial (stages 1-4) vs CGAL Mean_curvature_flow_skeletonization, "
+      "median of %d runs each\n",
+      repeat);
   const int budget = medial::SkeletonByContractionParameters().contractionVertices;
-  std::printf("Medial: the default (meshes above %d vertices decimated to %d first); Medial full: the mesh "
-              "contracted as it is\n", budget, budget);
-  std::printf("%-18s %8s | %8s %5s %6s %8s | %8s %5s | %8s %5s %8s | %8s %8s\n", "mesh", "vertices", "Medial s",
-              "iters", "factor", "peak MiB", "full s", "iters", "CGAL s", "iters", "peak MiB", "CGAL/Med",
-              "CGAL/full");
+  std::printf(
+      "Medial: the default (meshes above %d vertices decimated to %d first); Medial full: the mesh "
+      "contracted as it is\n",
+      budget, budget);
+  std::printf("%-18s %8s | %8s %5s %6s %8s | %8s %5s | %8s %5s %8s | %8s %8s\n", "mesh", "vertices",
+              "Medial s", "iters", "factor", "peak MiB", "full s", "iters", "CGAL s", "iters", "peak MiB",
+              "CGAL/Med", "CGAL/full");
   auto row = [&](const std::string& name, const SurfaceMesh& sm) {
     const medial::TriangleMesh mesh = toTriangleMesh(sm);
     const Measured ours = measure(repeat, [&] { return runMedial(mesh, budget); });
@@ -216,7 +223,8 @@ int main(int argc, char** argv) {
   for (const std::string& name : meshes) {
     SurfaceMesh sm;
     if (!readMesh(sampleMesh(name), sm)) {
-      std::printf("%-22s cannot read %s (run scripts/fetch-samples)\n", name.c_str(), sampleMesh(name).c_str());
+      std::printf("%-22s cannot read %s (run scripts/fetch-samples)\n", name.c_str(),
+                  sampleMesh(name).c_str());
       continue;
     }
     row(std::filesystem::path(name).stem().string(), sm);
@@ -231,16 +239,17 @@ int main(int argc, char** argv) {
   SurfaceMesh sm;
   if (!readMesh(sampleMesh(tableMesh), sm)) return 0;
   const medial::TriangleMesh mesh = toTriangleMesh(sm);
-  std::printf("\nSolver x ordering (contraction only), %s, %zu vertices, median of %d runs\n", tableMesh.c_str(),
-              std::size_t(sm.number_of_vertices()), repeat);
-  std::printf("%-14s %9s %5s %9s %8s | %s\n", "solver", "seconds", "iters", "factor s", "peak MiB", "vs cholmod-metis");
+  std::printf("\nSolver x ordering (contraction only), %s, %zu vertices, median of %d runs\n",
+              tableMesh.c_str(), std::size_t(sm.number_of_vertices()), repeat);
+  std::printf("%-14s %9s %5s %9s %8s | %s\n", "solver", "seconds", "iters", "factor s", "peak MiB",
+              "vs cholmod-metis");
   double reference = NAN;
   for (medial::SparseSolverKind kind : medial::allSparseSolverKinds()) {
     const Measured m = measure(repeat, [&] { return runContractionOnly(mesh, kind); });
     if (std::isnan(reference)) reference = m.run.seconds;
-    std::printf("%-14s %9.3f %5d %9.3f %8.0f | %.2f%s\n", medial::sparseSolverName(kind).c_str(), m.run.seconds,
-                m.run.iterations, m.run.factorizationSeconds, m.peakMiB, m.run.seconds / reference,
-                m.run.ok ? "" : "  (failed)");
+    std::printf("%-14s %9.3f %5d %9.3f %8.0f | %.2f%s\n", medial::sparseSolverName(kind).c_str(),
+                m.run.seconds, m.run.iterations, m.run.factorizationSeconds, m.peakMiB,
+                m.run.seconds / reference, m.run.ok ? "" : "  (failed)");
     std::fflush(stdout);
   }
   return 0;

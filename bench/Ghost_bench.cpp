@@ -49,14 +49,19 @@ Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--frames" && i + 1 < argc) o.frames = std::max(1, std::atoi(argv[++i]));
-    else if (arg == "--size" && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &o.width, &o.height);
-    else if (arg == "--triangles" && i + 1 < argc) o.triangles = std::atoll(argv[++i]);
-    else o.mesh = arg;
+    if (arg == "--frames" && i + 1 < argc)
+      o.frames = std::max(1, std::atoi(argv[++i]));
+    else if (arg == "--size" && i + 1 < argc)
+      std::sscanf(argv[++i], "%dx%d", &o.width, &o.height);
+    else if (arg == "--triangles" && i + 1 < argc)
+      o.triangles = std::atoll(argv[++i]);
+    else
+      o.mesh = arg;
   }
   if (o.mesh.empty()) {
     const std::string armadillo = std::string(MEDIAL_SOURCE_DIR) + "/data/external/cgal/meshes/armadillo.off";
-    o.mesh = std::filesystem::exists(armadillo) ? armadillo : std::string(MEDIAL_SOURCE_DIR) + "/data/meshes/torus.off";
+    o.mesh = std::filesystem::exists(armadillo) ? armadillo
+                                                : std::string(MEDIAL_SOURCE_DIR) + "/data/meshes/torus.off";
   }
   return o;
 }
@@ -101,8 +106,8 @@ struct Setup {
   }
 };
 
-std::unique_ptr<Setup> makeSetup(const std::string& name, const Options& o, vtkPolyData* context, vtkPolyData* skeleton,
-                                 Config config, double mapScale) {
+std::unique_ptr<Setup> makeSetup(const std::string& name, const Options& o, vtkPolyData* context,
+                                 vtkPolyData* skeleton, Config config, double mapScale) {
   auto setup = std::make_unique<Setup>();
   setup->name = name;
   setup->scene = vtkSmartPointer<vtkMedialScene>::New();
@@ -150,7 +155,8 @@ int main(int argc, char** argv) {
   vtkPolyData* skeleton = contraction->GetOutput();
   const vtkSmartPointer<vtkPolyData> context = subdivideTo(mesh, o.triangles);
   std::printf("mesh %s: %lld triangles subdivided to %lld; skeleton %lld nodes; %dx%d, %d frames\n",
-              std::filesystem::path(o.mesh).filename().c_str(), static_cast<long long>(mesh->GetNumberOfPolys()),
+              std::filesystem::path(o.mesh).filename().c_str(),
+              static_cast<long long>(mesh->GetNumberOfPolys()),
               static_cast<long long>(context->GetNumberOfPolys()),
               static_cast<long long>(skeleton->GetNumberOfPoints()), o.width, o.height, o.frames);
   if (skeleton->GetNumberOfPoints() == 0) {

@@ -91,8 +91,9 @@ int main(int argc, char** argv) {
     const double peer = medianSeconds(repeat, [&] { vtkCounts(mesh); });
     const bool agree = a.border == b.border && a.nonManifold == b.nonManifold && a.components == b.components;
     std::printf("%-28s %9lld %9lld | %12.2f %12.2f %6.1fx | %s\n", label.c_str(),
-                static_cast<long long>(mesh->GetNumberOfPoints()), static_cast<long long>(mesh->GetNumberOfPolys()),
-                medial * 1e3, peer * 1e3, peer / medial, agree ? "yes" : "NO");
+                static_cast<long long>(mesh->GetNumberOfPoints()),
+                static_cast<long long>(mesh->GetNumberOfPolys()), medial * 1e3, peer * 1e3, peer / medial,
+                agree ? "yes" : "NO");
     return agree;
   };
 

@@ -1,8 +1,9 @@
-// Sketch skeletonization against CGAL's straight skeleton (docs/ARCHITECTURE.md §8, issue 7): per part of each sketch,
-// the median time of Medial's chain of stages 1-3 and 6 (stroke preparation, straight skeleton, BoundedDP,
-// refinement; no inflation) beside CGAL's interior straight skeleton alone on the same polygon: the stroke
-// as drawn (when it is simple), the stroke resampled (what a user would feed CGAL to avoid jitter) and the
-// simplified polygon Medial itself skeletonizes (CGAL with exact predicates, Epick, as a user would call it).
+// Sketch skeletonization against CGAL's straight skeleton (docs/ARCHITECTURE.md §8, issue 7): per part of
+// each sketch, the median time of Medial's chain of stages 1-3 and 6 (stroke preparation, straight skeleton,
+// BoundedDP, refinement; no inflation) beside CGAL's interior straight skeleton alone on the same polygon:
+// the stroke as drawn (when it is simple), the stroke resampled (what a user would feed CGAL to avoid jitter)
+// and the simplified polygon Medial itself skeletonizes (CGAL with exact predicates, Epick, as a user would
+// call it).
 //
 // usage: medial_bench_sketch [--repeat N] [--medial-only] SKETCH.txt...   (--medial-only: no CGAL columns,
 // for profiling Medial's chain alone)
@@ -52,9 +53,12 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
-    else if (arg == "--medial-only") medialOnly = true;
-    else files.push_back(arg);
+    if (arg == "--repeat" && i + 1 < argc)
+      repeat = std::max(1, std::atoi(argv[++i]));
+    else if (arg == "--medial-only")
+      medialOnly = true;
+    else
+      files.push_back(arg);
   }
   if (files.empty()) {
     std::fprintf(stderr, "usage: medial_bench_sketch [--repeat N] [--medial-only] SKETCH.txt...\n");
@@ -86,24 +90,29 @@ int main(int argc, char** argv) {
       medial::Polygon2 raw = strokes[k];
       if (medial::signedArea(raw) < 0) std::reverse(raw.begin(), raw.end());
       const bool rawSimple = medial::findSelfIntersection(raw).first < 0;
-      const double cgalRaw = rawSimple ? medianSeconds(repeat, [&] { medial::cgalStraightSkeletonVertexCount(raw); }) : 0;
+      const double cgalRaw =
+          rawSimple ? medianSeconds(repeat, [&] { medial::cgalStraightSkeletonVertexCount(raw); }) : 0;
       const auto& resampled = result.parts[0].stroke.resampled;
       // CGAL takes seconds on a dense polygon: fewer runs for this column.
-      const double cgalResampled = medianSeconds(std::min(repeat, 3), [&] { medial::cgalStraightSkeletonVertexCount(resampled); });
-      const double cgalPolygon = medianSeconds(repeat, [&] { medial::cgalStraightSkeletonVertexCount(result.parts[0].stroke.polygon); });
+      const double cgalResampled =
+          medianSeconds(std::min(repeat, 3), [&] { medial::cgalStraightSkeletonVertexCount(resampled); });
+      const double cgalPolygon = medianSeconds(
+          repeat, [&] { medial::cgalStraightSkeletonVertexCount(result.parts[0].stroke.polygon); });
       char rawTime[32] = "n/a", rawRatio[32] = "n/a";
       if (rawSimple) {
         std::snprintf(rawTime, sizeof rawTime, "%.3f", 1e3 * cgalRaw);
         std::snprintf(rawRatio, sizeof rawRatio, "%.2f", medial / cgalRaw);
       }
       std::printf("%-14s %4zu %6zu %6zu %10.3f %10s %10.3f %10.3f %9s %9.2f %9.2f\n", name.c_str(), k + 1,
-                  strokes[k].size(), result.parts[0].stroke.polygon.size(), 1e3 * medial, rawTime, 1e3 * cgalResampled,
-                  1e3 * cgalPolygon, rawRatio, medial / cgalResampled, medial / cgalPolygon);
+                  strokes[k].size(), result.parts[0].stroke.polygon.size(), 1e3 * medial, rawTime,
+                  1e3 * cgalResampled, 1e3 * cgalPolygon, rawRatio, medial / cgalResampled,
+                  medial / cgalPolygon);
     }
   }
   std::sort(medialTimes.begin(), medialTimes.end());
-  std::printf("median per part: %.3f ms, slowest part %.3f ms, over %zu parts (goal <= 2 ms per part; the paper: "
-              "8.8 ms on average)\n",
-              1e3 * medialTimes[medialTimes.size() / 2], 1e3 * medialTimes.back(), medialTimes.size());
+  std::printf(
+      "median per part: %.3f ms, slowest part %.3f ms, over %zu parts (goal <= 2 ms per part; the paper: "
+      "8.8 ms on average)\n",
+      1e3 * medialTimes[medialTimes.size() / 2], 1e3 * medialTimes.back(), medialTimes.size());
   return 0;
 }

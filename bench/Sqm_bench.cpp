@@ -39,7 +39,8 @@ Summary summarize(vtkPolyData* mesh) {
   s.border = topology->GetNumberOfBorderEdges();
   s.nonManifold = topology->GetNumberOfNonManifoldEdges();
   vtkIdType quads = 0;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) quads += mesh->GetCell(c)->GetNumberOfPoints() == 4;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+    quads += mesh->GetCell(c)->GetNumberOfPoints() == 4;
   s.quadShare = s.faces ? double(quads) / double(s.faces) : 0;
   return s;
 }
@@ -50,18 +51,20 @@ int main(int argc, char** argv) {
   int repeat = 200;
   std::vector<std::string> paths;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
-    else paths.push_back(argv[i]);
+    if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc)
+      repeat = std::max(1, std::atoi(argv[++i]));
+    else
+      paths.push_back(argv[i]);
   }
   if (paths.empty()) {
     const std::string data = std::string(MEDIAL_SOURCE_DIR) + "/data/skeletons/";
-    for (const char* name : {"sqm/worm.vtp", "sqm/fish.vtp", "sqm/humanoid.vtp", "sqm/quadruped.vtp", "sqm/octopus.vtp",
-                             "figure.vtp", "hand.swc"})
+    for (const char* name : {"sqm/worm.vtp", "sqm/fish.vtp", "sqm/humanoid.vtp", "sqm/quadruped.vtp",
+                             "sqm/octopus.vtp", "figure.vtp", "hand.swc"})
       paths.push_back(data + name);
   }
   std::printf("SQM (vtkMedialSQM) vs vtkTubeFilter (8 sides, radius by Radius), median of %d runs\n", repeat);
-  std::printf("%-16s %5s | %9s %6s %6s %6s %5s | %9s %6s %6s %5s | %8s\n", "skeleton", "nodes", "SQM ms", "faces",
-              "quads", "border", "nonm", "tube ms", "faces", "border", "nonm", "tube/SQM");
+  std::printf("%-16s %5s | %9s %6s %6s %6s %5s | %9s %6s %6s %5s | %8s\n", "skeleton", "nodes", "SQM ms",
+              "faces", "quads", "border", "nonm", "tube ms", "faces", "border", "nonm", "tube/SQM");
   for (const std::string& path : paths) {
     auto reader = vtkSmartPointer<vtkMedialReader>::New();
     reader->SetFileName(path.c_str());
@@ -94,11 +97,12 @@ int main(int argc, char** argv) {
     clean->Update();
     const Summary ours = summarize(sqm->GetOutput()), peer = summarize(clean->GetOutput());
     const std::string name = path.substr(path.find_last_of('/') + 1);
-    std::printf("%-16s %5lld | %9.3f %6lld %5.0f%% %6lld %5lld | %9.3f %6lld %6lld %5lld | %8.2f\n", name.c_str(),
-                static_cast<long long>(skeleton->GetNumberOfPoints()), 1e3 * sqmSeconds,
+    std::printf("%-16s %5lld | %9.3f %6lld %5.0f%% %6lld %5lld | %9.3f %6lld %6lld %5lld | %8.2f\n",
+                name.c_str(), static_cast<long long>(skeleton->GetNumberOfPoints()), 1e3 * sqmSeconds,
                 static_cast<long long>(ours.faces), 100 * ours.quadShare, static_cast<long long>(ours.border),
-                static_cast<long long>(ours.nonManifold), 1e3 * tubeSeconds, static_cast<long long>(peer.faces),
-                static_cast<long long>(peer.border), static_cast<long long>(peer.nonManifold), tubeSeconds / sqmSeconds);
+                static_cast<long long>(ours.nonManifold), 1e3 * tubeSeconds,
+                static_cast<long long>(peer.faces), static_cast<long long>(peer.border),
+                static_cast<long long>(peer.nonManifold), tubeSeconds / sqmSeconds);
   }
   return 0;
 }

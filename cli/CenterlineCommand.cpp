@@ -23,16 +23,18 @@
 namespace medial::cli {
 
 int runCenterline(const std::vector<std::string>& args) {
-  const ParsedArgs parsed = parseArgs(
-      args, {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain", "--section-spacing",
-              "--section-rays", "--antecedent-width", "--centering"},
-             {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}});
-  if (parsed.positional.size() != 1) throw UsageError("centerline needs exactly one VOLUME (file or DICOM folder)");
+  const ParsedArgs parsed =
+      parseArgs(args, {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain",
+                        "--section-spacing", "--section-rays", "--antecedent-width", "--centering"},
+                       {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}});
+  if (parsed.positional.size() != 1)
+    throw UsageError("centerline needs exactly one VOLUME (file or DICOM folder)");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
   if (output.empty()) throw UsageError("centerline needs -o CENTERLINE.vtp");
   requireWritableExtension(output, "-o");
-  if (parsed.has("--label") && parsed.has("--threshold")) throw UsageError("give --label or --threshold, not both");
+  if (parsed.has("--label") && parsed.has("--threshold"))
+    throw UsageError("give --label or --threshold, not both");
 
   auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
   if (parsed.has("--label")) {
@@ -61,7 +63,8 @@ int runCenterline(const std::vector<std::string>& args) {
   const std::string profile = parsed.value("--profile"), terrain = parsed.value("--terrain");
   if (parsed.has("--profile") && profile.empty()) throw UsageError("--profile needs a file name");
   if (parsed.has("--terrain") && terrain.empty()) throw UsageError("--terrain needs a file name");
-  if (!terrain.empty() && fileExtension(terrain) != ".png") throw UsageError("--terrain must end in .png: " + terrain);
+  if (!terrain.empty() && fileExtension(terrain) != ".png")
+    throw UsageError("--terrain must end in .png: " + terrain);
   if (!profile.empty() || !terrain.empty()) filter->ComputeSectionsOn();
   MEDIAL_OPTION(parsed, "--section-spacing", filter, SectionSpacing);
   MEDIAL_OPTION(parsed, "--section-rays", filter, SectionRays);

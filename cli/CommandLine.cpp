@@ -61,11 +61,13 @@ std::vector<double> parseNumbers(const std::string& text, size_t count, const st
       numbers.push_back(std::stod(item, &used));
       if (used != item.size()) throw std::invalid_argument(item);
     } catch (const std::exception&) {
-      throw UsageError(option + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
+      throw UsageError(option + " expects " + std::to_string(count) + " comma-separated numbers, got '" +
+                       text + "'");
     }
   }
   if (numbers.size() != count)
-    throw UsageError(option + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
+    throw UsageError(option + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text +
+                     "'");
   return numbers;
 }
 

@@ -28,7 +28,7 @@ struct OptionSpec {
 
 struct ParsedArgs {
   std::vector<std::string> positional;
-  std::map<std::string, std::string> values;  // the last value of each option
+  std::map<std::string, std::string> values;                  // the last value of each option
   std::map<std::string, std::vector<std::string>> allValues;  // every value of a repeated option
   std::set<std::string> flags;
 

@@ -29,7 +29,8 @@ void setNumberFromOption(const ParsedArgs& parsed, const std::string& option, do
   if (!parsed.has(option)) return;
   const double value = parseNumbers(parsed.value(option), 1, option)[0];
   if (!(value >= minimum && value <= maximum) || (whole && value != std::floor(value)))
-    throw UsageError(option + " must be " + rangeText(minimum, maximum, whole) + ", got '" + parsed.value(option) + "'");
+    throw UsageError(option + " must be " + rangeText(minimum, maximum, whole) + ", got '" +
+                     parsed.value(option) + "'");
   set(value);
 }
 

@@ -28,8 +28,10 @@ void setNameFromOption(const ParsedArgs& parsed, const std::string& option, vtkO
 
 // MEDIAL_OPTION(parsed, "--nodes", filter, TargetNodes): filter->SetTargetNodes(N) when --nodes N is given,
 // N checked against the filter's range for TargetNodes.
-#define MEDIAL_OPTION(parsed, option, filter, Property)                                                       \
-  ::medial::cli::setNumberFromOption(                                                                         \
-      parsed, option, double((filter)->Get##Property##MinValue()), double((filter)->Get##Property##MaxValue()), \
-      std::is_integral_v<decltype((filter)->Get##Property())>,                                                \
-      [&](double value) { (filter)->Set##Property(static_cast<decltype((filter)->Get##Property())>(value)); })
+#define MEDIAL_OPTION(parsed, option, filter, Property)                                                     \
+  ::medial::cli::setNumberFromOption(                                                                       \
+      parsed, option, double((filter)->Get##Property##MinValue()),                                          \
+      double((filter)->Get##Property##MaxValue()), std::is_integral_v<decltype((filter)->Get##Property())>, \
+      [&](double value) {                                                                                   \
+        (filter)->Set##Property(static_cast<decltype((filter)->Get##Property())>(value));                   \
+      })

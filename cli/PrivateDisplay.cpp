@@ -43,8 +43,9 @@ bool PrivateDisplay::ensure(std::string& error) {
   if ((display_ = medial::openXDisplay())) return true;
   const std::string xvfb = findInPath("Xvfb");
   if (xvfb.empty()) {
-    error = "no X display to render with (DISPLAY is unset or unreachable) and Xvfb is not installed: "
-            "run 'apt-get install xvfb xauth' or start medial under xvfb-run";
+    error =
+        "no X display to render with (DISPLAY is unset or unreachable) and Xvfb is not installed: "
+        "run 'apt-get install xvfb xauth' or start medial under xvfb-run";
     return false;
   }
   int fds[2];
@@ -64,8 +65,8 @@ bool PrivateDisplay::ensure(std::string& error) {
     ::dup2(devnull, STDOUT_FILENO);
     ::dup2(devnull, STDERR_FILENO);
     const std::string fd = std::to_string(fds[1]);
-    ::execl(xvfb.c_str(), "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1920x1200x24", "-nolisten", "tcp",
-            "+extension", "GLX", "-nocursor", static_cast<char*>(nullptr));
+    ::execl(xvfb.c_str(), "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1920x1200x24", "-nolisten",
+            "tcp", "+extension", "GLX", "-nocursor", static_cast<char*>(nullptr));
     ::_exit(127);
   }
   ::close(fds[1]);

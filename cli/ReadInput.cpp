@@ -15,7 +15,8 @@ vtkSmartPointer<vtkDataObject> readInput(const std::string& path, ProgressLine& 
   progress.watch(reader, "reading " + path);
   reader->Update();
   progress.finish();
-  if (errors->HasErrors()) throw Failure(reader->GetErrorMessage()[0] ? reader->GetErrorMessage() : errors->Joined());
+  if (errors->HasErrors())
+    throw Failure(reader->GetErrorMessage()[0] ? reader->GetErrorMessage() : errors->Joined());
   return reader->GetOutputDataObject(0);
 }
 

@@ -26,8 +26,8 @@ namespace medial::cli {
 
 namespace {
 
-double parseFraction(const ParsedArgs& parsed, const std::string& option, double fallback, double low, double high,
-                     const std::string& range) {
+double parseFraction(const ParsedArgs& parsed, const std::string& option, double fallback, double low,
+                     double high, const std::string& range) {
   if (!parsed.has(option)) return fallback;
   const double value = parseNumbers(parsed.value(option), 1, option)[0];
   if (!(value >= low && value <= high)) throw UsageError(option + " must be in " + range);
@@ -57,7 +57,8 @@ GhostOptions parseGhostOptions(const ParsedArgs& parsed) {
   ghost.importance.assign(ghost.inputs.size(), 1.0);
   if (parsed.has("--ghost-importance")) {
     if (ghost.inputs.empty()) throw UsageError("--ghost-importance needs --ghost INPUT");
-    ghost.importance = parseNumbers(parsed.value("--ghost-importance"), ghost.inputs.size(), "--ghost-importance");
+    ghost.importance =
+        parseNumbers(parsed.value("--ghost-importance"), ghost.inputs.size(), "--ghost-importance");
     for (double value : ghost.importance)
       if (!(value > 0 && value <= 1)) throw UsageError("--ghost-importance values must be in (0, 1]");
   }
@@ -76,14 +77,16 @@ GhostOptions parseGhostOptions(const ParsedArgs& parsed) {
 }  // namespace
 
 int runRender(const std::vector<std::string>& args) {
-  const ParsedArgs parsed = parseArgs(
-      args, {{"-o", "--output", "--size", "--camera", "--skeleton-scale", "--mesh-opacity", "--ghost", "--ghost-opacity",
-              "--ghost-importance", "--ghost-conflict", "--ghost-map-scale", "--volume-rendering"},
-             {"--quiet", "--timings", "--cutaway", "--ghost-layers"}});
+  const ParsedArgs parsed =
+      parseArgs(args, {{"-o", "--output", "--size", "--camera", "--skeleton-scale", "--mesh-opacity",
+                        "--ghost", "--ghost-opacity", "--ghost-importance", "--ghost-conflict",
+                        "--ghost-map-scale", "--volume-rendering"},
+                       {"--quiet", "--timings", "--cutaway", "--ghost-layers"}});
   if (parsed.positional.empty()) throw UsageError("render needs at least one INPUT file");
   std::string output = parsed.value("-o", parsed.value("--output"));
   if (output.empty()) throw UsageError("render needs -o IMAGE.png");
-  if (medial::fileExtension(output) != ".png") throw UsageError("the output image must be a .png file: " + output);
+  if (medial::fileExtension(output) != ".png")
+    throw UsageError("the output image must be a .png file: " + output);
   const auto [width, height] = parseSize(parsed.value("--size", "1024x768"));
   std::vector<double> camera = {30, 20};
   if (parsed.has("--camera")) camera = parseNumbers(parsed.value("--camera"), 2, "--camera");
@@ -95,7 +98,8 @@ int runRender(const std::vector<std::string>& args) {
   const double meshOpacity = parseFraction(parsed, "--mesh-opacity", 1.0, 0, 1, "[0, 1]");
   const GhostOptions ghost = parseGhostOptions(parsed);
   medial::VolumeStyle volumeStyle = medial::VolumeStyle::Slices;
-  if (parsed.has("--volume-rendering") && !medial::parseVolumeStyle(parsed.value("--volume-rendering"), volumeStyle))
+  if (parsed.has("--volume-rendering") &&
+      !medial::parseVolumeStyle(parsed.value("--volume-rendering"), volumeStyle))
     throw UsageError("--volume-rendering must be slices, ct-bone, ct-soft-tissue or full-range, got '" +
                      parsed.value("--volume-rendering") + "'");
 
@@ -126,7 +130,8 @@ int runRender(const std::vector<std::string>& args) {
     vtkMedialGhostPass* pass = scene->GetGhostPass();
     pass->SetMode(ghost.cutaway ? vtkMedialGhostPass::Cutaway : vtkMedialGhostPass::Ghost);
     pass->SetGhostOpacity(ghost.opacity);
-    pass->SetConflict(ghost.depthSorting ? vtkMedialGhostPass::DepthSorting : vtkMedialGhostPass::GradualImportance);
+    pass->SetConflict(ghost.depthSorting ? vtkMedialGhostPass::DepthSorting
+                                         : vtkMedialGhostPass::GradualImportance);
     pass->SetMapScale(ghost.mapScale);
     pass->SetLayeredGhosts(ghost.layers);
   }

@@ -9,8 +9,8 @@
 
 namespace medial::cli {
 
-void runFilter(vtkAlgorithm* filter, vtkDataObject* data, const std::string& inputName, const std::string& label,
-               ProgressLine& progress) {
+void runFilter(vtkAlgorithm* filter, vtkDataObject* data, const std::string& inputName,
+               const std::string& label, ProgressLine& progress) {
   auto errors = medial::ErrorCollector::Watch(filter);
   filter->SetInputDataObject(data);
   progress.watch(filter, label);

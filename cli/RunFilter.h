@@ -12,7 +12,7 @@ namespace medial::cli {
 
 // Updates `filter` on `data` (read from `inputName`) with a progress line labelled `label`; throws Failure
 // "INPUT: the filter's errors" when it reports any.
-void runFilter(vtkAlgorithm* filter, vtkDataObject* data, const std::string& inputName, const std::string& label,
-               ProgressLine& progress);
+void runFilter(vtkAlgorithm* filter, vtkDataObject* data, const std::string& inputName,
+               const std::string& label, ProgressLine& progress);
 
 }  // namespace medial::cli

@@ -21,10 +21,10 @@
 namespace medial::cli {
 
 int runSkeleton(const std::vector<std::string>& args) {
-  const ParsedArgs parsed = parseArgs(
-      args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations",
-              "--contraction-vertices"},
-             {"--no-refine", "--no-cycle-repair", "--weights", "--quiet", "--timings"}});
+  const ParsedArgs parsed =
+      parseArgs(args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations",
+                        "--contraction-vertices"},
+                       {"--no-refine", "--no-cycle-repair", "--weights", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("skeleton needs exactly one MESH file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -34,7 +34,8 @@ int runSkeleton(const std::vector<std::string>& args) {
   if (!segmentation.empty()) requireWritableExtension(segmentation, "--segmentation");
   const std::string rig = parsed.value("--rig");
   if (parsed.has("--rig") && !vtkMedialRigWriter::CanWriteFile(rig.c_str()))
-    throw UsageError(std::string("--rig must end in one of ") + vtkMedialRigWriter::GetExtensions() + ": " + rig);
+    throw UsageError(std::string("--rig must end in one of ") + vtkMedialRigWriter::GetExtensions() + ": " +
+                     rig);
 
   auto filter = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
   MEDIAL_OPTION(parsed, "--nodes", filter, TargetNodes);
@@ -59,8 +60,9 @@ int runSkeleton(const std::vector<std::string>& args) {
     timings.detail("skeleton", stage, filter->GetStageSeconds(stage));
 
   if (filter->GetRestoredCycles() > 0)
-    std::fprintf(stderr, "medial skeleton: note: %d cycle%s that surgery lost put back (the mesh has genus %d)\n",
-                 filter->GetRestoredCycles(), filter->GetRestoredCycles() == 1 ? "" : "s", filter->GetGenus());
+    std::fprintf(
+        stderr, "medial skeleton: note: %d cycle%s that surgery lost put back (the mesh has genus %d)\n",
+        filter->GetRestoredCycles(), filter->GetRestoredCycles() == 1 ? "" : "s", filter->GetGenus());
   timings.start("write");
   writePolyData(filter->GetOutput(0), output);
   if (!segmentation.empty()) writePolyData(filter->GetOutput(1), segmentation);

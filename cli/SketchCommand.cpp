@@ -19,8 +19,8 @@
 
 namespace medial::cli {
 int runSketch(const std::vector<std::string>& args) {
-  const ParsedArgs parsed = parseArgs(args, {{"-o", "--output", "--mesh", "--simplify", "--merge", "--prune", "--collapse",
-                                              "--part", "--unit", "--thickness", "--resample"},
+  const ParsedArgs parsed = parseArgs(args, {{"-o", "--output", "--mesh", "--simplify", "--merge", "--prune",
+                                              "--collapse", "--part", "--unit", "--thickness", "--resample"},
                                              {"--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sketch needs exactly one POLYGON file");
   const std::string input = parsed.positional[0];
@@ -40,7 +40,8 @@ int runSketch(const std::vector<std::string>& args) {
   MEDIAL_OPTION(parsed, "--resample", filter, ResampleStep);
   for (const std::string& text : parsed.all("--part")) {
     const size_t colon = text.find(':');
-    if (colon == std::string::npos) throw UsageError("--part takes K:ES,EM,ET,EC (part number from 1, four thresholds)");
+    if (colon == std::string::npos)
+      throw UsageError("--part takes K:ES,EM,ET,EC (part number from 1, four thresholds)");
     const double k = parseNumbers(text.substr(0, colon), 1, "--part")[0];
     const std::vector<double> t = parseNumbers(text.substr(colon + 1), 4, "--part");
     if (!(k >= 1) || k != int(k)) throw UsageError("--part: the part number must be a whole number >= 1");

@@ -21,8 +21,9 @@ namespace medial::cli {
 
 int runSqm(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
-      args, {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale"},
-             {"--capsule", "--triangle-fans", "--no-fold-repair", "--quiet", "--timings"}});
+      args,
+      {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale"},
+       {"--capsule", "--triangle-fans", "--no-fold-repair", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sqm needs exactly one SKELETON file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -30,7 +31,8 @@ int runSqm(const std::vector<std::string>& args) {
   requireWritableExtension(output, "-o");
 
   auto filter = vtkSmartPointer<vtkMedialSQM>::New();
-  setNameFromOption(parsed, "--smoothing", filter, [&](const std::string& name) { filter->SetSmoothing(name); });
+  setNameFromOption(parsed, "--smoothing", filter,
+                    [&](const std::string& name) { filter->SetSmoothing(name); });
   setNameFromOption(parsed, "--pairing", filter, [&](const std::string& name) { filter->SetPairing(name); });
   MEDIAL_OPTION(parsed, "--ring-vertices", filter, LinearRingVertices);
   MEDIAL_OPTION(parsed, "--subdivide", filter, SubdivisionLevels);
@@ -51,10 +53,12 @@ int runSqm(const std::vector<std::string>& args) {
   runFilter(filter, skeleton, input, "tube mesh of " + input, progress);
 
   if (filter->GetMergedNodes() > 0)
-    std::fprintf(stderr, "medial sqm: note: %d node%s inside a neighbouring branch node's sphere merged into it\n",
+    std::fprintf(stderr,
+                 "medial sqm: note: %d node%s inside a neighbouring branch node's sphere merged into it\n",
                  filter->GetMergedNodes(), filter->GetMergedNodes() == 1 ? "" : "s");
   if (filter->GetFoldRepairedVertices() > 0)
-    std::fprintf(stderr, "medial sqm: note: %d refined vert%s moved off the cones, where faces cut each other\n",
+    std::fprintf(stderr,
+                 "medial sqm: note: %d refined vert%s moved off the cones, where faces cut each other\n",
                  filter->GetFoldRepairedVertices(), filter->GetFoldRepairedVertices() == 1 ? "ex" : "ices");
 
   timings.start("write");

@@ -20,8 +20,8 @@ void writePolyData(vtkPolyData* data, const std::string& path) {
 
 void requireWritableExtension(const std::string& path, const char* option) {
   if (!vtkMedialPolyDataWriter::CanWriteFile(path.c_str()))
-    throw UsageError(std::string(option) + " must end in one of " + vtkMedialPolyDataWriter::GetExtensions() + ": " +
-                     path);
+    throw UsageError(std::string(option) + " must end in one of " + vtkMedialPolyDataWriter::GetExtensions() +
+                     ": " + path);
 }
 
 }  // namespace medial::cli

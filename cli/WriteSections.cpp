@@ -22,7 +22,8 @@ namespace medial::cli {
 namespace {
 
 // Writes `path` atomically (no partial or temporary file left on failure), or throws Failure.
-void writeOrFail(const std::string& path, const std::function<bool(const std::string&, std::string&)>& write) {
+void writeOrFail(const std::string& path,
+                 const std::function<bool(const std::string&, std::string&)>& write) {
   std::string error;
   if (!medial::writeAtomically(path, write, error)) throw Failure(path + ": " + error);
 }
@@ -46,8 +47,8 @@ void writeProfileCsv(vtkTable* profile, const std::string& path) {
     char line[256];
     for (vtkIdType row = 0; row < arrays[0]->GetNumberOfTuples(); ++row) {
       std::snprintf(line, sizeof line, "%.3f,%.3f,%.3f,%.3f,%.3f\n", arrays[0]->GetComponent(row, 0),
-                    arrays[1]->GetComponent(row, 0), arrays[2]->GetComponent(row, 0), arrays[3]->GetComponent(row, 0),
-                    arrays[4]->GetComponent(row, 0));
+                    arrays[1]->GetComponent(row, 0), arrays[2]->GetComponent(row, 0),
+                    arrays[3]->GetComponent(row, 0), arrays[4]->GetComponent(row, 0));
       out << line;  // NaN (no wall on some ray) is written as "nan"
     }
     if (!out.flush()) error = "cannot write the file";
@@ -65,7 +66,8 @@ void writeTerrainPng(vtkImageData* terrain, const std::string& path) {
   pixels->SetNumberOfValues(vtkIdType(grey.width) * grey.height);
   for (int y = 0; y < grey.height; ++y)
     for (int x = 0; x < grey.width; ++x)
-      pixels->SetValue(vtkIdType(grey.height - 1 - y) * grey.width + x, grey.pixels[size_t(y) * grey.width + x]);
+      pixels->SetValue(vtkIdType(grey.height - 1 - y) * grey.width + x,
+                       grey.pixels[size_t(y) * grey.width + x]);
   image->GetPointData()->SetScalars(pixels);
   writeOrFail(path, [&](const std::string& temporary, std::string& error) {
     auto writer = vtkSmartPointer<vtkPNGWriter>::New();

@@ -70,35 +70,48 @@ const std::vector<Command>& commands() {
   const auto sketch = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
   static const std::vector<Command> all = {
       {"skeleton", "curve skeleton of a surface mesh by mesh contraction",
-       "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig RIG.glb|RIG.fbx]\n"
+       "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig "
+       "RIG.glb|RIG.fbx]\n"
        "                       [--weights] [--solver NAME] [--iterations N] [--contraction-vertices N]\n"
        "                       [--no-refine] [--no-cycle-repair] [--quiet] [--timings]\n\n"
        "Contracts MESH (.off .obj .ply .stl .vtp .vtk; polygons are triangulated) by constrained Laplacian\n"
-       "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, III.A-D);\n"
+       "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, "
+       "III.A-D);\n"
        "with --rig, also computes heat-diffusion skinning weights (III.E) and writes a rig (III.F).\n"
        "  -o, --output SKELETON     the skeleton: .vtp (nodes, edges, Radius, Root) or .vtk .obj .ply\n"
        "  --segmentation MESH_OUT   the triangulated mesh with point data SkeletonNode (vertex -> node),\n"
        "                            and SkinWeights (one component per bone) with --rig or --weights\n"
-       "  --nodes N                 nodes kept by the selection stage (default " + number(contraction->GetTargetNodes()) + "; 0 keeps all)\n"
-       + namesHelp("--solver NAME", "", vtkMedialContractionSkeleton::GetSolverNames(), contraction->GetSolver()) +
-       "  --iterations N            maximum contraction iterations (default " + number(contraction->GetMaxIterations()) + ")\n"
-       "  --contraction-vertices N  a mesh with more vertices is decimated to N (quadric error, topology\n"
-       "                            kept) before the contraction; the outputs still cover every input\n"
-       "                            vertex (default " + number(contraction->GetContractionVertices()) + "; 0 contracts the mesh as it is)\n"
-       "  --no-refine               keep the nodes where the contraction put them (no III.C refinement)\n"
-       "  --no-cycle-repair         leave out the cycles surgery lost (by default they are put back, so\n"
-       "                            that the skeleton has as many cycles as the closed mesh has genus)\n"
-       "  --rig RIG.glb|RIG.fbx     the skinned mesh and its bones (one per skeleton edge) as glTF 2.0 or FBX\n"
-       "  --weights                 compute the skinning weights without writing a rig\n"
-       "  --quiet                   no progress line\n"
-       "  --timings                 print stage times as JSON on stdout\n",
+       "  --nodes N                 nodes kept by the selection stage (default " +
+           number(contraction->GetTargetNodes()) + "; 0 keeps all)\n" +
+           namesHelp("--solver NAME", "", vtkMedialContractionSkeleton::GetSolverNames(),
+                     contraction->GetSolver()) +
+           "  --iterations N            maximum contraction iterations (default " +
+           number(contraction->GetMaxIterations()) +
+           ")\n"
+           "  --contraction-vertices N  a mesh with more vertices is decimated to N (quadric error, "
+           "topology\n"
+           "                            kept) before the contraction; the outputs still cover every input\n"
+           "                            vertex (default " +
+           number(contraction->GetContractionVertices()) +
+           "; 0 contracts the mesh as it is)\n"
+           "  --no-refine               keep the nodes where the contraction put them (no III.C refinement)\n"
+           "  --no-cycle-repair         leave out the cycles surgery lost (by default they are put back, so\n"
+           "                            that the skeleton has as many cycles as the closed mesh has genus)\n"
+           "  --rig RIG.glb|RIG.fbx     the skinned mesh and its bones (one per skeleton edge) as glTF 2.0 "
+           "or FBX\n"
+           "  --weights                 compute the skinning weights without writing a rig\n"
+           "  --quiet                   no progress line\n"
+           "  --timings                 print stage times as JSON on stdout\n",
        runSkeleton},
       {"centerline", "TSK centerline of a tubular structure in a CT or label volume",
        "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z]\n"
-       "                         [--fill-holes] [--keep-border-parts] [--branches] [--antecedent-width W] [--centering N]\n"
-       "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] [--section-rays N]\n"
+       "                         [--fill-holes] [--keep-border-parts] [--branches] [--antecedent-width W] "
+       "[--centering N]\n"
+       "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] [--section-rays "
+       "N]\n"
        "                         [--quiet] [--timings]\n\n"
-       "Follows a tube (colon, vessel) in VOLUME (.nii .nii.gz .mha .mhd .nrrd .inr .vti or a DICOM folder) by\n"
+       "Follows a tube (colon, vessel) in VOLUME (.nii .nii.gz .mha .mhd .nrrd .inr .vti or a DICOM folder) "
+       "by\n"
        "the TSK method (WSCG 2008): layers and cylindrical clusters from P0, then three Takagi-Sugeno-Kang\n"
        "models. The structure: voxels equal to L, or within LO..HI (parts touching the volume's border are\n"
        "dropped: the air outside the body), else the non-zero voxels; its largest 26-connected component.\n"
@@ -108,64 +121,96 @@ const std::vector<Command>& commands() {
        "  --seed X,Y,Z              P0 in mm (default: the lowest end of the structure)\n"
        "  --fill-holes              fill cavities of the structure first\n"
        "  --keep-border-parts       keep thresholded parts that touch the volume's border\n"
-       "  --antecedent-width W      TSK Gaussian width relative to a cluster (default " + number(tsk->GetAntecedentWidth()) + ")\n"
-       "  --branches                a branching structure (vessels, airways): one polyline per branch,\n"
-       "                            cell data Branch and ParentBranch (sections follow the first one)\n"
-       "  --centering N             passes moving the axis to the centre of its sections (the paper's\n"
-       "                            centricity criterion; default " + number(tsk->GetCenteringIterations()) + ", 0 = the TSK curve as is)\n"
-       "  --profile PROFILE.csv     perpendicular sections every K mm: arc length, min/max diameter,\n"
-       "                            perimeter (mm) and area (mm2) per row (paper section 4, Fig. 14)\n"
-       "  --terrain TERRAIN.png     the unfolded wall: distance from the axis over angle (x) and arc\n"
-       "                            length (y, from the top), white = far (Fig. 15)\n"
-       "  --section-spacing K       mm between sections (default " + number(tsk->GetSectionSpacing()) + ")\n"
-       "  --section-rays N          angles per section (default " + number(tsk->GetSectionRays()) + ")\n"
-       "  --quiet                   no progress line\n"
-       "  --timings                 print stage times as JSON on stdout\n",
+       "  --antecedent-width W      TSK Gaussian width relative to a cluster (default " +
+           number(tsk->GetAntecedentWidth()) +
+           ")\n"
+           "  --branches                a branching structure (vessels, airways): one polyline per branch,\n"
+           "                            cell data Branch and ParentBranch (sections follow the first one)\n"
+           "  --centering N             passes moving the axis to the centre of its sections (the paper's\n"
+           "                            centricity criterion; default " +
+           number(tsk->GetCenteringIterations()) +
+           ", 0 = the TSK curve as is)\n"
+           "  --profile PROFILE.csv     perpendicular sections every K mm: arc length, min/max diameter,\n"
+           "                            perimeter (mm) and area (mm2) per row (paper section 4, Fig. 14)\n"
+           "  --terrain TERRAIN.png     the unfolded wall: distance from the axis over angle (x) and arc\n"
+           "                            length (y, from the top), white = far (Fig. 15)\n"
+           "  --section-spacing K       mm between sections (default " +
+           number(tsk->GetSectionSpacing()) +
+           ")\n"
+           "  --section-rays N          angles per section (default " +
+           number(tsk->GetSectionRays()) +
+           ")\n"
+           "  --quiet                   no progress line\n"
+           "  --timings                 print stage times as JSON on stdout\n",
        runCenterline},
       {"sqm", "quad-dominant tube mesh of a skeleton with radii (SQM)",
-       "usage: medial sqm SKELETON.vtp|SKELETON.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME]\n"
+       "usage: medial sqm SKELETON.vtp|SKELETON.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing "
+       "NAME]\n"
        "                  [--capsule] [--triangle-fans] [--ring-vertices N] [--subdivide K]\n"
        "                  [--sharp-scale S] [--no-fold-repair] [--quiet] [--timings]\n\n"
        "Turns a skeleton with a Radius per node into a closed manifold mesh of quads (a triangle only where\n"
        "a leaf's or a cycle's ring is odd), by SQM with the extensions of the CESCG 2014 paper (re-rooting,\n"
        "linear skeletons, ellipsoid nodes from EllipsoidAxes, capsules, cycles). Every component is meshed.\n"
-       "  -o, --output MESH         the mesh (.vtp .vtk .obj .ply .stl), with point data SkeletonNode\n"
-       + namesHelp("--smoothing NAME", "LIE smoothing:", vtkMedialSQM::GetSmoothingNames(), sqm->GetSmoothing())
-       + namesHelp("--pairing NAME", "ring pairing at branch nodes:", vtkMedialSQM::GetPairingNames(), sqm->GetPairing()) +
-       "  --capsule                 close leaves with capsules instead of cones to their node\n"
-       "  --triangle-fans           keep the papers' triangle fans at leaves and bands at cycles (by\n"
-       "                            default their triangles are joined in pairs into quads)\n"
-       "  --ring-vertices N         vertices around a skeleton without branch nodes (default " + number(sqm->GetLinearRingVertices()) + ")\n"
-       "  --subdivide K             K levels of Catmull-Clark, projected on the skeleton's cones (0-6)\n"
-       "  --sharp-scale S           with --subdivide: scale the cone radius near a sharp vertex (two faces\n"
-       "                            at an acute angle) by a Bezier curve from S (0.05-1) there to 1 one\n"
-       "                            radius away (the paper's radius scaling; off without this option)\n"
-       "  --no-fold-repair          with --subdivide: keep every refined vertex on its cone even where\n"
-       "                            faces then cut each other (by default their vertices move back towards\n"
-       "                            the plain Catmull-Clark surface until none do)\n"
-       "  --quiet                   no progress line\n"
-       "  --timings                 print stage times as JSON on stdout\n",
+       "  -o, --output MESH         the mesh (.vtp .vtk .obj .ply .stl), with point data SkeletonNode\n" +
+           namesHelp("--smoothing NAME", "LIE smoothing:", vtkMedialSQM::GetSmoothingNames(),
+                     sqm->GetSmoothing()) +
+           namesHelp("--pairing NAME", "ring pairing at branch nodes:", vtkMedialSQM::GetPairingNames(),
+                     sqm->GetPairing()) +
+           "  --capsule                 close leaves with capsules instead of cones to their node\n"
+           "  --triangle-fans           keep the papers' triangle fans at leaves and bands at cycles (by\n"
+           "                            default their triangles are joined in pairs into quads)\n"
+           "  --ring-vertices N         vertices around a skeleton without branch nodes (default " +
+           number(sqm->GetLinearRingVertices()) +
+           ")\n"
+           "  --subdivide K             K levels of Catmull-Clark, projected on the skeleton's cones (0-6)\n"
+           "  --sharp-scale S           with --subdivide: scale the cone radius near a sharp vertex (two "
+           "faces\n"
+           "                            at an acute angle) by a Bezier curve from S (0.05-1) there to 1 one\n"
+           "                            radius away (the paper's radius scaling; off without this option)\n"
+           "  --no-fold-repair          with --subdivide: keep every refined vertex on its cone even where\n"
+           "                            faces then cut each other (by default their vertices move back "
+           "towards\n"
+           "                            the plain Catmull-Clark surface until none do)\n"
+           "  --quiet                   no progress line\n"
+           "  --timings                 print stage times as JSON on stdout\n",
        runSqm},
       {"sketch", "animatable skeleton and inflated mesh of closed 2-D strokes",
        "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp] [--simplify ES] [--merge EM]\n"
        "                     [--prune ET] [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U]\n"
        "                     [--resample STEP] [--thickness C] [--quiet] [--timings]\n\n"
-       "Skeletonizes sketched outlines (Ma et al. 2021): each closed stroke of POLYGON.txt ('x y' lines, parts\n"
-       "separated by a blank line, each optionally followed by four rows of its 4x4 placement matrix) gets a\n"
-       "straight skeleton simplified by BoundedDP; parts are joined in drawing order where they intersect and\n"
-       "the whole is refined. Lengths are sketch pixels: a thousandth of the drawing's diagonal (see --unit).\n"
-       "  -o, --output SKELETON     the skeleton (.vtp: Radius, NodeType, Root, Part, Branch; .vtk .obj .ply)\n"
+       "Skeletonizes sketched outlines (Ma et al. 2021): each closed stroke of POLYGON.txt ('x y' lines, "
+       "parts\n"
+       "separated by a blank line, each optionally followed by four rows of its 4x4 placement matrix) gets "
+       "a\n"
+       "straight skeleton simplified by BoundedDP; parts are joined in drawing order where they intersect "
+       "and\n"
+       "the whole is refined. Lengths are sketch pixels: a thousandth of the drawing's diagonal (see "
+       "--unit).\n"
+       "  -o, --output SKELETON     the skeleton (.vtp: Radius, NodeType, Root, Part, Branch; .vtk .obj "
+       ".ply)\n"
        "  --mesh MESH               the inflated strokes, closed triangle meshes with point data Part\n"
-       "  --simplify ES             branch simplification threshold epsilon_s (default " + number(sketch->GetSimplificationThreshold()) + ")\n"
-       "  --merge EM                junction merging threshold epsilon_m (default " + number(sketch->GetMergingThreshold()) + ")\n"
-       "  --prune ET                branch pruning threshold epsilon_t (default " + number(sketch->GetPruningThreshold()) + ")\n"
-       "  --collapse EC             edge collapsing threshold epsilon_c (default " + number(sketch->GetCollapsingThreshold()) + ")\n"
-       "  --part K:ES,EM,ET,EC      the four thresholds for part K only (from 1); repeatable\n"
-       "  --unit U                  stroke units per sketch pixel (default: diagonal / 1000)\n"
-       "  --resample STEP           stroke resampling step in sketch pixels (default " + number(sketch->GetResampleStep()) + ")\n"
-       "  --thickness C             inflation thickness (default " + number(sketch->GetThickness()) + ": round tubes)\n"
-       "  --quiet                   no progress line\n"
-       "  --timings                 print stage times as JSON on stdout\n",
+       "  --simplify ES             branch simplification threshold epsilon_s (default " +
+           number(sketch->GetSimplificationThreshold()) +
+           ")\n"
+           "  --merge EM                junction merging threshold epsilon_m (default " +
+           number(sketch->GetMergingThreshold()) +
+           ")\n"
+           "  --prune ET                branch pruning threshold epsilon_t (default " +
+           number(sketch->GetPruningThreshold()) +
+           ")\n"
+           "  --collapse EC             edge collapsing threshold epsilon_c (default " +
+           number(sketch->GetCollapsingThreshold()) +
+           ")\n"
+           "  --part K:ES,EM,ET,EC      the four thresholds for part K only (from 1); repeatable\n"
+           "  --unit U                  stroke units per sketch pixel (default: diagonal / 1000)\n"
+           "  --resample STEP           stroke resampling step in sketch pixels (default " +
+           number(sketch->GetResampleStep()) +
+           ")\n"
+           "  --thickness C             inflation thickness (default " +
+           number(sketch->GetThickness()) +
+           ": round tubes)\n"
+           "  --quiet                   no progress line\n"
+           "  --timings                 print stage times as JSON on stdout\n",
        runSketch},
       {"render", "render meshes, skeletons and volumes offscreen to a PNG",
        "usage: medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION]\n"

@@ -106,12 +106,14 @@ const char* const kVolumeSample = R"(if (g_currentT < medialGhostSteps)
 bool ghostVolumeShader(std::string& fragmentShader) {
   if (fragmentShader.find("castRay(") == std::string::npos ||
       fragmentShader.find("//VTK::Output::Dec") == std::string::npos ||
-      fragmentShader.find(kRayStart) == std::string::npos || fragmentShader.find(kSampleComposite) == std::string::npos)
+      fragmentShader.find(kRayStart) == std::string::npos ||
+      fragmentShader.find(kSampleComposite) == std::string::npos)
     return false;
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
-                               std::string("//VTK::Output::Dec\n") + kFragmentDeclarations +
-                                   "float medialGhostCap = 1.0;     // the ray's opacity in front of the object\n"
-                                   "float medialGhostSteps = -1.0;  // up to this step\n");
+  vtkShaderProgram::Substitute(
+      fragmentShader, "//VTK::Output::Dec",
+      std::string("//VTK::Output::Dec\n") + kFragmentDeclarations +
+          "float medialGhostCap = 1.0;     // the ray's opacity in front of the object\n"
+          "float medialGhostSteps = -1.0;  // up to this step\n");
   vtkShaderProgram::Substitute(fragmentShader, kRayStart, kVolumeStart);
   vtkShaderProgram::Substitute(fragmentShader, kSampleComposite, kVolumeSample);
   return true;

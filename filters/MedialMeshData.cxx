@@ -42,7 +42,8 @@ TriangleMesh toTriangleMesh(vtkPolyData* triangles) {
   vtkCellArray* polys = triangles->GetPolys();
   Eigen::Index f = 0;
   for (polys->InitTraversal(); polys->GetNextCell(ids);)
-    if (ids->GetNumberOfIds() == 3) mesh.faces.row(f++) << int(ids->GetId(0)), int(ids->GetId(1)), int(ids->GetId(2));
+    if (ids->GetNumberOfIds() == 3)
+      mesh.faces.row(f++) << int(ids->GetId(0)), int(ids->GetId(1)), int(ids->GetId(2));
   mesh.faces.conservativeResize(f, 3);
   return mesh;
 }

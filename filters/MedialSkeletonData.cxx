@@ -45,7 +45,8 @@ bool skeletonFromPolyData(vtkPolyData* polyData, Skeleton& skeleton, std::string
 
   if (vtkDataArray* radius = polyData->GetPointData()->GetArray(kRadiusArray)) {
     if (radius->GetNumberOfComponents() != 1) {
-      error = "the Radius array has " + std::to_string(radius->GetNumberOfComponents()) + " components instead of 1";
+      error = "the Radius array has " + std::to_string(radius->GetNumberOfComponents()) +
+              " components instead of 1";
       return false;
     }
     skeleton.radii.resize(n);

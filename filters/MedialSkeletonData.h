@@ -1,4 +1,5 @@
-// Conversion between the docs/ARCHITECTURE.md §4 skeleton vtkPolyData and medial::Skeleton, and the checks on it.
+// Conversion between the docs/ARCHITECTURE.md §4 skeleton vtkPolyData and medial::Skeleton, and the checks on
+// it.
 #pragma once
 
 #include "skeleton/Skeleton.h"

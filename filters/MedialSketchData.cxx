@@ -29,7 +29,8 @@ vtkSmartPointer<vtkPolyData> placedStrokes(vtkPolyData* sketch) {
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
       double p[3];
       sketch->GetPoint(ids->GetId(k), p);  // (x, y) in the stroke's plane; z is ignored
-      lines->InsertCellPoint(points->InsertNextPoint(m[0] * p[0] + m[1] * p[1] + m[3], m[4] * p[0] + m[5] * p[1] + m[7],
+      lines->InsertCellPoint(points->InsertNextPoint(m[0] * p[0] + m[1] * p[1] + m[3],
+                                                     m[4] * p[0] + m[5] * p[1] + m[7],
                                                      m[8] * p[0] + m[9] * p[1] + m[11]));
     }
   }

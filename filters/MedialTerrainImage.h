@@ -10,7 +10,7 @@ class vtkImageData;
 namespace medial {
 
 struct TerrainGrey {
-  int width = 0, height = 0;   // angles x sections
+  int width = 0, height = 0;    // angles x sections
   std::vector<uint8_t> pixels;  // row-major, the first section on the top row
 };
 

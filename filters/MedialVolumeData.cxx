@@ -14,20 +14,45 @@ bool scalarType(int vtkType, ScalarVolume::Type& type) {
   using Type = ScalarVolume::Type;
   switch (vtkType) {
     case VTK_CHAR:
-    case VTK_SIGNED_CHAR: type = Type::Int8; return true;
-    case VTK_UNSIGNED_CHAR: type = Type::UInt8; return true;
-    case VTK_SHORT: type = Type::Int16; return true;
-    case VTK_UNSIGNED_SHORT: type = Type::UInt16; return true;
-    case VTK_INT: type = Type::Int32; return true;
-    case VTK_UNSIGNED_INT: type = Type::UInt32; return true;
-    case VTK_LONG: type = sizeof(long) == 8 ? Type::Int64 : Type::Int32; return true;
-    case VTK_UNSIGNED_LONG: type = sizeof(long) == 8 ? Type::UInt64 : Type::UInt32; return true;
+    case VTK_SIGNED_CHAR:
+      type = Type::Int8;
+      return true;
+    case VTK_UNSIGNED_CHAR:
+      type = Type::UInt8;
+      return true;
+    case VTK_SHORT:
+      type = Type::Int16;
+      return true;
+    case VTK_UNSIGNED_SHORT:
+      type = Type::UInt16;
+      return true;
+    case VTK_INT:
+      type = Type::Int32;
+      return true;
+    case VTK_UNSIGNED_INT:
+      type = Type::UInt32;
+      return true;
+    case VTK_LONG:
+      type = sizeof(long) == 8 ? Type::Int64 : Type::Int32;
+      return true;
+    case VTK_UNSIGNED_LONG:
+      type = sizeof(long) == 8 ? Type::UInt64 : Type::UInt32;
+      return true;
     case VTK_LONG_LONG:
-    case VTK_ID_TYPE: type = Type::Int64; return true;
-    case VTK_UNSIGNED_LONG_LONG: type = Type::UInt64; return true;
-    case VTK_FLOAT: type = Type::Float32; return true;
-    case VTK_DOUBLE: type = Type::Float64; return true;
-    default: return false;
+    case VTK_ID_TYPE:
+      type = Type::Int64;
+      return true;
+    case VTK_UNSIGNED_LONG_LONG:
+      type = Type::UInt64;
+      return true;
+    case VTK_FLOAT:
+      type = Type::Float32;
+      return true;
+    case VTK_DOUBLE:
+      type = Type::Float64;
+      return true;
+    default:
+      return false;
   }
 }
 

@@ -17,15 +17,20 @@ VTK_MODULE_INIT(vtkRenderingVolumeOpenGL2);
 namespace medial {
 
 namespace {
-const VolumeStyle kStyles[] = {VolumeStyle::Slices, VolumeStyle::CtBone, VolumeStyle::CtSoftTissue, VolumeStyle::FullRange};
+const VolumeStyle kStyles[] = {VolumeStyle::Slices, VolumeStyle::CtBone, VolumeStyle::CtSoftTissue,
+                               VolumeStyle::FullRange};
 }
 
 const char* volumeStyleName(VolumeStyle style) {
   switch (style) {
-    case VolumeStyle::Slices: return "slices";
-    case VolumeStyle::CtBone: return "ct-bone";
-    case VolumeStyle::CtSoftTissue: return "ct-soft-tissue";
-    case VolumeStyle::FullRange: return "full-range";
+    case VolumeStyle::Slices:
+      return "slices";
+    case VolumeStyle::CtBone:
+      return "ct-bone";
+    case VolumeStyle::CtSoftTissue:
+      return "ct-soft-tissue";
+    case VolumeStyle::FullRange:
+      return "full-range";
   }
   return "";
 }

@@ -23,7 +23,7 @@ namespace {
 const int kStageCount = 8;
 const char* const kStages[kStageCount] = {"decimation", "contraction", "factorization", "surgery",
                                           "refinement", "selection",   "radii",         "weights"};
-}
+}  // namespace
 
 vtkMedialContractionSkeleton::vtkMedialContractionSkeleton() {
   this->SetNumberOfOutputPorts(2);
@@ -64,7 +64,9 @@ medial::SkeletonByContractionParameters vtkMedialContractionSkeleton::MakeParame
   return p;
 }
 
-std::string vtkMedialContractionSkeleton::GetSolverNames() { return medial::joinNames(medial::sparseSolverNames()); }
+std::string vtkMedialContractionSkeleton::GetSolverNames() {
+  return medial::joinNames(medial::sparseSolverNames());
+}
 
 void vtkMedialContractionSkeleton::SetSolver(const std::string& name) {
   medial::SparseSolverKind kind;
@@ -106,7 +108,6 @@ void vtkMedialContractionSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Solver: " << this->Solver << "\n";
 }
 
-
 int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                               vtkInformationVector* outputVector) {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
@@ -129,10 +130,10 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   this->ContractedVertices = result.contractedVertices;
   this->Genus = result.cycleRepair.genus;
   this->RestoredCycles = result.cycleRepair.cyclesAdded;
-  const double seconds[kStageCount] = {result.decimationSeconds, result.contractionSeconds, result.factorizationSeconds,
-                                      result.surgerySeconds,     result.refinementSeconds,
-                                      result.selectionSeconds,   result.radiiSeconds,
-                                      result.weightsSeconds};
+  const double seconds[kStageCount] = {result.decimationSeconds,    result.contractionSeconds,
+                                       result.factorizationSeconds, result.surgerySeconds,
+                                       result.refinementSeconds,    result.selectionSeconds,
+                                       result.radiiSeconds,         result.weightsSeconds};
   std::copy(seconds, seconds + kStageCount, this->Seconds);
   if (!result.ok()) {
     vtkErrorMacro(<< result.error);

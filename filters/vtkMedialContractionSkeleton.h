@@ -12,8 +12,9 @@
  * Python's numpy view work on it directly. vtkMedialRigWriter turns both outputs into a rig file.
  *
  * Parameters carry the paper's defaults, taken from medial::SkeletonByContractionParameters: W_L0 factor
- * 1e-3, s_L = 2, W_L <= 2048, W_H <= 10000, w_a = 1, w_b = 0.1, 30 nodes. Bad input (no triangles, NaN coordinates) gives an error and empty outputs.
- * Implements medial::skeletonByContraction (src/contraction/SkeletonByContraction.h).
+ * 1e-3, s_L = 2, W_L <= 2048, W_H <= 10000, w_a = 1, w_b = 0.1, 30 nodes. Bad input (no triangles, NaN
+ * coordinates) gives an error and empty outputs. Implements medial::skeletonByContraction
+ * (src/contraction/SkeletonByContraction.h).
  */
 #pragma once
 

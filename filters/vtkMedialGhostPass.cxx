@@ -76,7 +76,8 @@ vtkSmartPointer<vtkTextureObject> floatTexture(vtkOpenGLRenderWindow* window, in
 // A visible actor with a mapper and an importance above 0.
 bool isInterest(vtkProp* prop) {
   auto* actor = vtkActor::SafeDownCast(prop);
-  return actor && actor->GetVisibility() && actor->GetMapper() && vtkMedialGhostPass::GetImportance(prop) > 0.0;
+  return actor && actor->GetVisibility() && actor->GetMapper() &&
+         vtkMedialGhostPass::GetImportance(prop) > 0.0;
 }
 
 // Window pixels covered by the projected bounding boxes of the objects of interest, grown by `margin`
@@ -85,7 +86,8 @@ bool isInterest(vtkProp* prop) {
 void interestRectangle(vtkRenderer* renderer, const std::vector<vtkProp*>& props, const int viewport[4],
                        double margin, float rect[4]) {
   const float whole[4] = {static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
-                          static_cast<float>(viewport[0] + viewport[2]), static_cast<float>(viewport[1] + viewport[3])};
+                          static_cast<float>(viewport[0] + viewport[2]),
+                          static_cast<float>(viewport[1] + viewport[3])};
   std::copy(whole, whole + 4, rect);
   vtkMatrix4x4* projection = renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
       renderer->GetTiledAspectRatio(), -1, 1);
@@ -95,7 +97,8 @@ void interestRectangle(vtkRenderer* renderer, const std::vector<vtkProp*>& props
     const double* bounds = prop->GetBounds();
     if (!bounds || !(bounds[0] <= bounds[1])) continue;
     for (int corner = 0; corner < 8; ++corner) {
-      const double world[4] = {bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)], 1};
+      const double world[4] = {bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+                               bounds[4 + ((corner >> 2) & 1)], 1};
       double clip[4];
       projection->MultiplyPoint(world, clip);
       if (clip[3] <= 1e-12) return;  // behind the eye: the projection folds over, keep the whole viewport
@@ -132,7 +135,8 @@ void vtkMedialGhostPass::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "BorderWidth: " << this->BorderWidth << "\n";
   os << indent << "Translucency: " << translucencies[this->Translucency] << "\n";
   os << indent << "LayeredGhosts: " << this->LayeredGhosts << "\n";
-  os << indent << "DelegatePass: " << (this->UserDelegate ? this->UserDelegate->GetClassName() : "(default)") << "\n";
+  os << indent << "DelegatePass: " << (this->UserDelegate ? this->UserDelegate->GetClassName() : "(default)")
+     << "\n";
 }
 
 void vtkMedialGhostPass::SetImportance(vtkProp* prop, double importance) {
@@ -208,8 +212,9 @@ void vtkMedialGhostPass::Render(const vtkRenderState* s) {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   // Dual depth peeling draws nothing translucent into a multisampled window: OIT takes over there.
   const bool multisampled = window && window->GetMultiSamples() > 0;
-  vtkRenderPass* delegate = this->ActiveDelegate(
-      this->Translucency == DepthPeeling && multisampled ? static_cast<int>(OrderIndependent) : this->Translucency);
+  vtkRenderPass* delegate = this->ActiveDelegate(this->Translucency == DepthPeeling && multisampled
+                                                     ? static_cast<int>(OrderIndependent)
+                                                     : this->Translucency);
 
   int width = 0, height = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &this->Viewport[0], &this->Viewport[1]);
@@ -269,14 +274,18 @@ void vtkMedialGhostPass::MapScissor(int scissor[4]) const {
   for (int axis = 0; axis < 2; ++axis) {
     const int size = axis == 0 ? this->Gpu->Width : this->Gpu->Height;
     const double scale = static_cast<double>(size) / this->Viewport[2 + axis];
-    const int low = static_cast<int>(std::floor((this->GhostRectangle[axis] - this->Viewport[axis]) * scale)) - reach;
-    const int high = static_cast<int>(std::ceil((this->GhostRectangle[2 + axis] - this->Viewport[axis]) * scale)) + reach;
+    const int low =
+        static_cast<int>(std::floor((this->GhostRectangle[axis] - this->Viewport[axis]) * scale)) - reach;
+    const int high =
+        static_cast<int>(std::ceil((this->GhostRectangle[2 + axis] - this->Viewport[axis]) * scale)) + reach;
     scissor[axis] = std::max(0, low);
     scissor[2 + axis] = std::max(0, std::min(size, high) - scissor[axis]);
   }
 }
 
-int vtkMedialGhostPass::FilterRadius() const { return static_cast<int>(std::lround(this->BorderWidth * this->MapScale)); }
+int vtkMedialGhostPass::FilterRadius() const {
+  return static_cast<int>(std::lround(this->BorderWidth * this->MapScale));
+}
 
 bool vtkMedialGhostPass::RenderImportanceMap(const vtkRenderState* s, vtkOpenGLRenderWindow* window) {
   Resources& gpu = *this->Gpu;
@@ -432,8 +441,9 @@ bool vtkMedialGhostPass::PostReplaceShaderValues(std::string&, std::string&, std
   const bool writesDepth = (this->LayeredGhosts || isInterest(prop)) &&
                            fragmentShader.find("gl_FragDepth =") == std::string::npos &&
                            fragmentShader.find("gl_FragDepth=") == std::string::npos;
-  vtkShaderProgram::Substitute(fragmentShader, medial::ghost::kImplementationTag,
-                               medial::ghost::fragmentImplementation(withSilhouette, writesDepth, isInterest(prop)));
+  vtkShaderProgram::Substitute(
+      fragmentShader, medial::ghost::kImplementationTag,
+      medial::ghost::fragmentImplementation(withSilhouette, writesDepth, isInterest(prop)));
   return true;
 }
 
@@ -455,8 +465,10 @@ bool vtkMedialGhostPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstr
   program->SetUniform4f("medialGhostRect", this->GhostRectangle);
   program->SetUniformf("medialGhostOpacity", cutaway ? 0.0f : static_cast<float>(this->GhostOpacity));
   if (program->IsUniformUsed("medialGhostSilhouette"))
-    program->SetUniformf("medialGhostSilhouette", cutaway ? 0.0f : static_cast<float>(this->SilhouetteStrength));
+    program->SetUniformf("medialGhostSilhouette",
+                         cutaway ? 0.0f : static_cast<float>(this->SilhouetteStrength));
   if (program->IsUniformUsed("medialGhostWriteDepth"))
-    program->SetUniformi("medialGhostWriteDepth", prop && prop->IsRenderingTranslucentPolygonalGeometry() ? 0 : 1);
+    program->SetUniformi("medialGhostWriteDepth",
+                         prop && prop->IsRenderingTranslucentPolygonalGeometry() ? 0 : 1);
   return true;
 }

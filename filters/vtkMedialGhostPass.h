@@ -126,7 +126,8 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
                               std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-                               std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+                               std::string& fragmentShader, vtkAbstractMapper* mapper,
+                               vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
                            vtkOpenGLVertexArrayObject* vao = nullptr) override;
   /// Changes when a prop's shader must be rebuilt: LayeredGhosts, or the set of objects of interest

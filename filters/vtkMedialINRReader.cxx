@@ -19,11 +19,16 @@ int vtkTypeOf(const _image* image) {
   if (image->wordKind != WK_FIXED) return -1;
   const bool isSigned = image->sign == SGN_SIGNED;
   switch (image->wdim) {
-    case 1: return isSigned ? VTK_SIGNED_CHAR : VTK_UNSIGNED_CHAR;
-    case 2: return isSigned ? VTK_SHORT : VTK_UNSIGNED_SHORT;
-    case 4: return isSigned ? VTK_INT : VTK_UNSIGNED_INT;
-    case 8: return isSigned ? VTK_LONG_LONG : VTK_UNSIGNED_LONG_LONG;
-    default: return -1;
+    case 1:
+      return isSigned ? VTK_SIGNED_CHAR : VTK_UNSIGNED_CHAR;
+    case 2:
+      return isSigned ? VTK_SHORT : VTK_UNSIGNED_SHORT;
+    case 4:
+      return isSigned ? VTK_INT : VTK_UNSIGNED_INT;
+    case 8:
+      return isSigned ? VTK_LONG_LONG : VTK_UNSIGNED_LONG_LONG;
+    default:
+      return -1;
   }
 }
 
@@ -37,7 +42,8 @@ bool vtkMedialINRReader::ReadImage(const std::string& path, vtkImageData* image,
   }
   const _image* header = inr.image();
   if (header->vdim != 1) {
-    error = "the image has " + std::to_string(header->vdim) + " components per voxel; Medial reads scalar volumes";
+    error = "the image has " + std::to_string(header->vdim) +
+            " components per voxel; Medial reads scalar volumes";
     return false;
   }
   const int type = vtkTypeOf(header);
@@ -45,7 +51,8 @@ bool vtkMedialINRReader::ReadImage(const std::string& path, vtkImageData* image,
     error = "unsupported voxel type (" + std::to_string(header->wdim) + " bytes)";
     return false;
   }
-  image->SetDimensions(static_cast<int>(inr.xdim()), static_cast<int>(inr.ydim()), static_cast<int>(inr.zdim()));
+  image->SetDimensions(static_cast<int>(inr.xdim()), static_cast<int>(inr.ydim()),
+                       static_cast<int>(inr.zdim()));
   image->SetSpacing(inr.vx(), inr.vy(), inr.vz());
   image->SetOrigin(inr.tx(), inr.ty(), inr.tz());
   image->AllocateScalars(type, 1);

@@ -111,14 +111,30 @@ bool vtkMedialITKImageReader::ReadImage(const std::string& path, vtkImageData* i
     }
     using IOComponent = itk::IOComponentEnum;
     switch (io->GetComponentType()) {
-      case IOComponent::UCHAR: readScalarImage<unsigned char>(path, dicomFiles, image); break;
-      case IOComponent::CHAR: readScalarImage<signed char>(path, dicomFiles, image); break;
-      case IOComponent::USHORT: readScalarImage<unsigned short>(path, dicomFiles, image); break;
-      case IOComponent::SHORT: readScalarImage<short>(path, dicomFiles, image); break;
-      case IOComponent::UINT: readScalarImage<unsigned int>(path, dicomFiles, image); break;
-      case IOComponent::INT: readScalarImage<int>(path, dicomFiles, image); break;
-      case IOComponent::FLOAT: readScalarImage<float>(path, dicomFiles, image); break;
-      case IOComponent::DOUBLE: readScalarImage<double>(path, dicomFiles, image); break;
+      case IOComponent::UCHAR:
+        readScalarImage<unsigned char>(path, dicomFiles, image);
+        break;
+      case IOComponent::CHAR:
+        readScalarImage<signed char>(path, dicomFiles, image);
+        break;
+      case IOComponent::USHORT:
+        readScalarImage<unsigned short>(path, dicomFiles, image);
+        break;
+      case IOComponent::SHORT:
+        readScalarImage<short>(path, dicomFiles, image);
+        break;
+      case IOComponent::UINT:
+        readScalarImage<unsigned int>(path, dicomFiles, image);
+        break;
+      case IOComponent::INT:
+        readScalarImage<int>(path, dicomFiles, image);
+        break;
+      case IOComponent::FLOAT:
+        readScalarImage<float>(path, dicomFiles, image);
+        break;
+      case IOComponent::DOUBLE:
+        readScalarImage<double>(path, dicomFiles, image);
+        break;
       default:
         error = std::string("unsupported voxel type ") +
                 itk::ImageIOBase::GetComponentTypeAsString(io->GetComponentType());

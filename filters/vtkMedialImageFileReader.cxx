@@ -51,7 +51,8 @@ int vtkMedialImageFileReader::RequestInformation(vtkInformation*, vtkInformation
   outInfo->Set(vtkDataObject::ORIGIN(), this->Cache->GetOrigin(), 3);
   outInfo->Set(vtkDataObject::DIRECTION(), this->Cache->GetDirectionMatrix()->GetData(), 9);
   vtkDataArray* scalars = this->Cache->GetPointData()->GetScalars();
-  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, scalars->GetDataType(), scalars->GetNumberOfComponents());
+  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, scalars->GetDataType(),
+                                              scalars->GetNumberOfComponents());
   return 1;
 }
 

@@ -39,8 +39,8 @@ class MEDIALFILTERS_EXPORT vtkMedialImageFileReader : public vtkImageAlgorithm {
   void operator=(const vtkMedialImageFileReader&) = delete;
 
   std::string FileName;
-  std::string CachedFileName;      // what Cache holds
-  vtkMTimeType CachedTime = 0;     // this->GetMTime() when Cache was read
-  std::string CachedError;         // the error of the last read, if it failed
+  std::string CachedFileName;   // what Cache holds
+  vtkMTimeType CachedTime = 0;  // this->GetMTime() when Cache was read
+  std::string CachedError;      // the error of the last read, if it failed
   vtkSmartPointer<vtkImageData> Cache;
 };

@@ -75,7 +75,11 @@ std::vector<double> plistNumbers(vtkXMLDataElement* array) {
 }
 
 int vtkTypeOfNumpy(const std::string& dtype, int& bytes) {
-  struct Entry { const char* name; int type; int bytes; };
+  struct Entry {
+    const char* name;
+    int type;
+    int bytes;
+  };
   static const Entry table[] = {{"int8", VTK_SIGNED_CHAR, 1}, {"uint8", VTK_UNSIGNED_CHAR, 1},
                                 {"int16", VTK_SHORT, 2},      {"uint16", VTK_UNSIGNED_SHORT, 2},
                                 {"int32", VTK_INT, 4},        {"uint32", VTK_UNSIGNED_INT, 4},
@@ -92,8 +96,8 @@ int vtkTypeOfNumpy(const std::string& dtype, int& bytes) {
 
 bool vtkMedialInVesaliusReader::ReadImage(const std::string& path, vtkImageData* image, std::string& error) {
   std::string plistText;
-  if (!readArchiveMember(path, [](const std::string& n) { return baseName(n) == "main.plist"; }, plistText,
-                         error)) {
+  if (!readArchiveMember(
+          path, [](const std::string& n) { return baseName(n) == "main.plist"; }, plistText, error)) {
     if (error == "member not found") error = "no main.plist: not an InVesalius project";
     return false;
   }
@@ -105,8 +109,8 @@ bool vtkMedialInVesaliusReader::ReadImage(const std::string& path, vtkImageData*
   vtkXMLDataElement* fileElement = plistValue(matrix, "filename");
   const std::vector<double> shape = plistNumbers(plistValue(matrix, "shape"));
   const std::vector<double> spacing = plistNumbers(plistValue(dict, "spacing"));
-  if (!dtypeElement || !fileElement || !dtypeElement->GetCharacterData() || !fileElement->GetCharacterData() ||
-      shape.size() != 3 || spacing.size() != 3) {
+  if (!dtypeElement || !fileElement || !dtypeElement->GetCharacterData() ||
+      !fileElement->GetCharacterData() || shape.size() != 3 || spacing.size() != 3) {
     error = "main.plist lacks matrix dtype, filename, shape or spacing";
     return false;
   }
@@ -124,7 +128,8 @@ bool vtkMedialInVesaliusReader::ReadImage(const std::string& path, vtkImageData*
 
   const std::string matrixName = fileElement->GetCharacterData();
   std::string voxels;
-  if (!readArchiveMember(path, [&](const std::string& n) { return baseName(n) == matrixName; }, voxels, error)) {
+  if (!readArchiveMember(
+          path, [&](const std::string& n) { return baseName(n) == matrixName; }, voxels, error)) {
     error = "cannot read the voxel matrix " + matrixName + ": " + error;
     return false;
   }

@@ -141,8 +141,10 @@ bool announcedCounts(const std::string& text, long& vertices, long& faces) {
   std::istringstream words(text);
   std::vector<std::string> tokens;
   for (std::string word; tokens.size() < 3 && words >> word;) tokens.push_back(word);
-  if (tokens.size() < 3 || tokens[0].size() < 3 || tokens[0].compare(tokens[0].size() - 3, 3, "OFF") != 0) return false;
-  if (tokens[0].find('n') != std::string::npos || tokens[1] == "BINARY") return false;  // nOFF: a dimension first
+  if (tokens.size() < 3 || tokens[0].size() < 3 || tokens[0].compare(tokens[0].size() - 3, 3, "OFF") != 0)
+    return false;
+  if (tokens[0].find('n') != std::string::npos || tokens[1] == "BINARY")
+    return false;  // nOFF: a dimension first
   try {
     vertices = std::stol(tokens[1]);
     faces = std::stol(tokens[2]);
@@ -154,7 +156,8 @@ bool announcedCounts(const std::string& text, long& vertices, long& faces) {
 
 }  // namespace
 
-int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
+int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**,
+                                    vtkInformationVector* outputVector) {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   medial::TextFile file;
   std::string error;
@@ -188,8 +191,7 @@ int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtk
   }
   // OpenMesh reads a file that ends early without complaint, and what it makes of the missing numbers
   // is whatever was in memory: hold it to the counts the header announced.
-  if (ascii &&
-      (long(soup.points.size()) < vertices || long(soup.facesSeen) < faces)) {
+  if (ascii && (long(soup.points.size()) < vertices || long(soup.facesSeen) < faces)) {
     vtkErrorMacro(<< this->FileName << ": the file ends early (" << vertices << " vertices and " << faces
                   << " faces announced, " << soup.points.size() << " and " << soup.facesSeen << " read)");
     return 0;

@@ -46,14 +46,16 @@ void vtkMedialPolyDataWriter::WriteData() {
   }
   const std::string extension = medial::fileExtension(this->FileName);
   if (!CanWriteFile(this->FileName.c_str())) {
-    vtkErrorMacro(<< this->FileName << ": cannot write '" << extension << "' files (use one of " << GetExtensions()
-                  << ")");
+    vtkErrorMacro(<< this->FileName << ": cannot write '" << extension << "' files (use one of "
+                  << GetExtensions() << ")");
     this->SetErrorCode(vtkErrorCode::UnrecognizedFileTypeError);
     return;
   }
   std::string error;
   // WriteTo reports its own errors; `error` then stays empty.
-  const auto write = [&](const std::string& temporary, std::string&) { return this->WriteTo(temporary, extension); };
+  const auto write = [&](const std::string& temporary, std::string&) {
+    return this->WriteTo(temporary, extension);
+  };
   if (!medial::writeAtomically(this->FileName, write, error)) {
     if (!error.empty()) vtkErrorMacro(<< error);
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);

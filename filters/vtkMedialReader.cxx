@@ -40,10 +40,10 @@ vtkStandardNewMacro(vtkMedialReader);
 
 namespace {
 
-const std::set<std::string> kMeshExtensions = {".vtp", ".vtk", ".vtu", ".obj", ".ply", ".stl", ".off",
+const std::set<std::string> kMeshExtensions = {".vtp", ".vtk", ".vtu",  ".obj", ".ply", ".stl", ".off",
                                                ".g",   ".byu", ".gltf", ".glb", ".swc", ".txt"};
-const std::set<std::string> kVolumeExtensions = {".nii", ".nii.gz", ".mha", ".mhd", ".nrrd", ".nhdr", ".gipl",
-                                                 ".dcm", ".inr", ".inr.gz", ".vti", ".inv3"};
+const std::set<std::string> kVolumeExtensions = {".nii",  ".nii.gz", ".mha", ".mhd",    ".nrrd", ".nhdr",
+                                                 ".gipl", ".dcm",    ".inr", ".inr.gz", ".vti",  ".inv3"};
 
 bool isDirectory(const std::string& path) {
   struct stat status;
@@ -114,7 +114,8 @@ int vtkMedialReader::FillOutputPortInformation(int, vtkInformation* info) {
   return 1;
 }
 
-int vtkMedialReader::RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
+int vtkMedialReader::RequestDataObject(vtkInformation*, vtkInformationVector**,
+                                       vtkInformationVector* outputVector) {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   // Decided once per update: for a legacy .vtk file it means reading the header.
   const bool volume = this->ReadsVolume = IsVolumeFile(this->FileName.c_str());
@@ -127,7 +128,8 @@ int vtkMedialReader::RequestDataObject(vtkInformation*, vtkInformationVector**, 
   return 1;
 }
 
-int vtkMedialReader::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
+int vtkMedialReader::RequestInformation(vtkInformation*, vtkInformationVector**,
+                                        vtkInformationVector* outputVector) {
   // The whole file is read here, once per file name: volumes need their extent, spacing, origin and
   // direction known now, and most of Medial's volume formats only tell them by being read.
   if (!this->Result || this->ResultFileName != this->FileName || this->ResultTime != this->GetMTime()) {
@@ -142,7 +144,8 @@ int vtkMedialReader::RequestInformation(vtkInformation*, vtkInformationVector**,
     outInfo->Set(vtkDataObject::ORIGIN(), image->GetOrigin(), 3);
     outInfo->Set(vtkDataObject::DIRECTION(), image->GetDirectionMatrix()->GetData(), 9);
     if (vtkDataArray* scalars = image->GetPointData()->GetScalars())
-      vtkDataObject::SetPointDataActiveScalarInfo(outInfo, scalars->GetDataType(), scalars->GetNumberOfComponents());
+      vtkDataObject::SetPointDataActiveScalarInfo(outInfo, scalars->GetDataType(),
+                                                  scalars->GetNumberOfComponents());
   } else if (this->ReadsVolume) {
     const int empty[6] = {0, -1, 0, -1, 0, -1};
     outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), empty, 6);
@@ -150,7 +153,8 @@ int vtkMedialReader::RequestInformation(vtkInformation*, vtkInformationVector**,
   return 1;
 }
 
-int vtkMedialReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
+int vtkMedialReader::RequestData(vtkInformation*, vtkInformationVector**,
+                                 vtkInformationVector* outputVector) {
   vtkDataObject* output = vtkDataObject::GetData(outputVector);
   if (!this->ErrorMessage.empty() || !this->Result) {
     vtkErrorMacro(<< (this->ErrorMessage.empty() ? "nothing was read" : this->ErrorMessage));
@@ -180,8 +184,9 @@ void vtkMedialReader::ReadFile() {
   }
   const std::string extension = medial::fileExtension(path);
   if (!CanReadFile(path.c_str())) {
-    this->ErrorMessage = path + ": unsupported file type '" + extension + "' (meshes: " + GetMeshExtensions() +
-                         "; volumes: " + GetVolumeExtensions() + "; sketches: " + GetSketchExtensions() + ")";
+    this->ErrorMessage = path + ": unsupported file type '" + extension +
+                         "' (meshes: " + GetMeshExtensions() + "; volumes: " + GetVolumeExtensions() +
+                         "; sketches: " + GetSketchExtensions() + ")";
     return;
   }
   this->UpdateProgress(0.05);

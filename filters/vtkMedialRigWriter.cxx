@@ -58,7 +58,8 @@ void vtkMedialRigWriter::WriteData() {
   }
   vtkDataArray* weights = mesh->GetPointData()->GetArray("SkinWeights");
   if (!weights) {
-    vtkErrorMacro(<< this->FileName << ": the mesh has no SkinWeights point data (compute the weights first)");
+    vtkErrorMacro(<< this->FileName
+                  << ": the mesh has no SkinWeights point data (compute the weights first)");
     return this->Fail(vtkErrorCode::UnknownError);
   }
 

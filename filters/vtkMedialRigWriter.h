@@ -5,9 +5,9 @@
  *
  * Input port 0: the mesh with point data `SkinWeights` (one component per bone), as port 1 of
  * vtkMedialContractionSkeleton gives it with ComputeWeights on; polygons are triangulated.
- * Input port 1: the skeleton (docs/ARCHITECTURE.md §4); bone i is its line cell i, rooted at field data `Root`.
- * The rig: one bone per skeleton edge, head at the end nearer the root, Y along the bone, hierarchy from
- * the root, at most 4 influences per vertex (see src/rig/RigExport.h).
+ * Input port 1: the skeleton (docs/ARCHITECTURE.md §4); bone i is its line cell i, rooted at field data
+ * `Root`. The rig: one bone per skeleton edge, head at the end nearer the root, Y along the bone, hierarchy
+ * from the root, at most 4 influences per vertex (see src/rig/RigExport.h).
  *
  * Atomic like vtkMedialPolyDataWriter: nothing is left behind on failure. Errors name the file; Write()
  * returns 0 on failure.

@@ -84,7 +84,8 @@ void vtkMedialSQM::SetPairing(const std::string& name) {
   }
 }
 
-int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector) {
+int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                              vtkInformationVector* outputVector) {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   medial::Skeleton skeleton;
@@ -106,7 +107,8 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   this->MergedNodes = result.mergedNodes;
   this->FoldRepairedVertices = result.foldRepairedVertices;
   // Points and polygons only: the field data the pipeline passed on from the input (`Root`) stays.
-  const vtkSmartPointer<vtkPolyData> mesh = medial::polyDataFromPolygons(result.mesh.vertices, result.mesh.faces);
+  const vtkSmartPointer<vtkPolyData> mesh =
+      medial::polyDataFromPolygons(result.mesh.vertices, result.mesh.faces);
   output->SetPoints(mesh->GetPoints());
   output->SetPolys(mesh->GetPolys());
   output->GetPointData()->AddArray(medial::intArray("SkeletonNode", result.mesh.vertexNode));

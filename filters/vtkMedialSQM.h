@@ -3,9 +3,9 @@
  * @brief Skeleton to quad-dominant mesh (SQM, with the extensions of the CESCG 2014 paper): a skeleton
  * with `Radius` per node becomes a closed manifold mesh of quads, triangles only in the leaf fans.
  *
- * Input: a skeleton (docs/ARCHITECTURE.md §4: nodes, 2-point lines, `Radius`, optional `EllipsoidAxes` and `Root`).
- * Output: a polygonal mesh of quads and triangles (not triangulated), outward oriented, with point data
- * `SkeletonNode` (int: the input node each vertex belongs to). Several components are meshed each.
+ * Input: a skeleton (docs/ARCHITECTURE.md §4: nodes, 2-point lines, `Radius`, optional `EllipsoidAxes` and
+ * `Root`). Output: a polygonal mesh of quads and triangles (not triangulated), outward oriented, with point
+ * data `SkeletonNode` (int: the input node each vertex belongs to). Several components are meshed each.
  * Cycles are meshed (a genus-g surface for g independent cycles). Repairs: self-loop edges are dropped,
  * repeated edges merged, and a node whose centre lies inside the sphere of a neighbouring branch node is
  * merged into it, the branch node keeping the larger radius (its tube would run backwards out of that

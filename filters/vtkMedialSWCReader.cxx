@@ -37,14 +37,16 @@ bool parseSwcLine(const std::string& text, SwcRecord& r) {
   std::vector<double> f;
   if (!medial::parseNumbers(text, f) || f.size() != 7) return false;
   for (int whole : {0, 1, 6})
-    if (!(std::abs(f[size_t(whole)]) < 1e15) || f[size_t(whole)] != std::floor(f[size_t(whole)])) return false;
+    if (!(std::abs(f[size_t(whole)]) < 1e15) || f[size_t(whole)] != std::floor(f[size_t(whole)]))
+      return false;
   r = {long(f[0]), long(f[1]), f[2], f[3], f[4], f[5], long(f[6]), 0};
   return true;
 }
 
 }  // namespace
 
-int vtkMedialSWCReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
+int vtkMedialSWCReader::RequestData(vtkInformation*, vtkInformationVector**,
+                                    vtkInformationVector* outputVector) {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   medial::TextFile file;
   std::string error;
@@ -60,7 +62,8 @@ int vtkMedialSWCReader::RequestData(vtkInformation*, vtkInformationVector**, vtk
     if (medial::isBlank(text)) continue;
     SwcRecord r;
     if (!parseSwcLine(text, r)) {
-      vtkErrorMacro(<< file.where() << "expected 'id type x y z radius parent' (7 numbers), got '" << text << "'");
+      vtkErrorMacro(<< file.where() << "expected 'id type x y z radius parent' (7 numbers), got '" << text
+                    << "'");
       return 0;
     }
     r.line = file.lineNumber();
@@ -88,7 +91,8 @@ int vtkMedialSWCReader::RequestData(vtkInformation*, vtkInformationVector**, vtk
       continue;
     }
     if (r.parent == r.id) {
-      vtkErrorMacro(<< this->FileName << ":" << r.line << ": node " << r.id << " is its own parent (a self-loop)");
+      vtkErrorMacro(<< this->FileName << ":" << r.line << ": node " << r.id
+                    << " is its own parent (a self-loop)");
       return 0;
     }
     const auto parent = indexOfId.find(r.parent);
@@ -108,8 +112,9 @@ int vtkMedialSWCReader::RequestData(vtkInformation*, vtkInformationVector**, vtk
     const bool aboutNode = first.kind == Kind::NonFiniteCoordinate || first.kind == Kind::NonPositiveRadius;
     const int node = aboutNode ? first.index : -1;
     vtkErrorMacro(<< this->FileName
-                  << (node >= 0 && node < static_cast<int>(records.size()) ? ":" + std::to_string(records[node].line)
-                                                                            : std::string())
+                  << (node >= 0 && node < static_cast<int>(records.size())
+                          ? ":" + std::to_string(records[node].line)
+                          : std::string())
                   << ": " << medial::describeProblems(problems));
     return 0;
   }

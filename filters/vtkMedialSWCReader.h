@@ -6,8 +6,8 @@
  * Output point data: `Radius`, `NodeType`, and `SWCType` (the file's type column, kept for round trips).
  * Field data `Root`: the first node whose parent is -1. Node ids of the file may be any integers; nodes are
  * numbered in file order. Lines starting with '#' are comments. A malformed line, a duplicate id, a parent
- * that names no node, or any docs/ARCHITECTURE.md §4 validation problem (NaN, non-positive radius, self-loop) is an error
- * naming the file and line; the output is then empty.
+ * that names no node, or any docs/ARCHITECTURE.md §4 validation problem (NaN, non-positive radius, self-loop)
+ * is an error naming the file and line; the output is then empty.
  */
 #pragma once
 

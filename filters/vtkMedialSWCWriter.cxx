@@ -91,7 +91,8 @@ bool vtkMedialSWCWriter::WriteSkeleton() {
   }
   std::vector<int> order, parent;
   if (!orderAsForest(skeleton, order, parent)) {
-    vtkErrorMacro(<< this->FileName << ": the skeleton has a cycle; SWC stores only trees (write VTP instead)");
+    vtkErrorMacro(<< this->FileName
+                  << ": the skeleton has a cycle; SWC stores only trees (write VTP instead)");
     return false;
   }
 
@@ -109,8 +110,8 @@ bool vtkMedialSWCWriter::WriteSkeleton() {
     for (int v : order) {
       const auto& p = skeleton.nodes[v];
       const int type = swcType ? static_cast<int>(swcType->GetComponent(v, 0)) : this->DefaultType;
-      out << swcId[v] << ' ' << type << ' ' << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << skeleton.radii[v]
-          << ' ' << (parent[v] < 0 ? -1 : swcId[parent[v]]) << '\n';
+      out << swcId[v] << ' ' << type << ' ' << p.x() << ' ' << p.y() << ' ' << p.z() << ' '
+          << skeleton.radii[v] << ' ' << (parent[v] < 0 ? -1 : swcId[parent[v]]) << '\n';
     }
     if (!out.flush()) {
       why = "write failed (disk full?)";

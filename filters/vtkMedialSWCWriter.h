@@ -5,8 +5,9 @@
  * SWC stores forests: every component is written as a tree rooted at `Root` (or, for components without
  * it, at their lowest node id), ids 1-based in breadth-first order so that a parent precedes its
  * children. The type column comes from `SWCType` when present, else `DefaultType` (0, "undefined").
- * Errors (empty output file never left behind): no `Radius` array, invalid skeleton (docs/ARCHITECTURE.md §4), or a cycle,
- * which SWC cannot represent. The file is written to a temporary name and renamed on success.
+ * Errors (empty output file never left behind): no `Radius` array, invalid skeleton (docs/ARCHITECTURE.md
+ * §4), or a cycle, which SWC cannot represent. The file is written to a temporary name and renamed on
+ * success.
  */
 #pragma once
 

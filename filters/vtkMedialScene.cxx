@@ -76,7 +76,9 @@ void vtkMedialScene::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SkeletonRadiusScale: " << this->SkeletonRadiusScale << "\n";
   os << indent << "MeshOpacity: " << this->MeshOpacity << "\n";
-  os << indent << "VolumeStyle: " << medial::volumeStyleName(static_cast<medial::VolumeStyle>(this->VolumeStyle)) << "\n";
+  os << indent
+     << "VolumeStyle: " << medial::volumeStyleName(static_cast<medial::VolumeStyle>(this->VolumeStyle))
+     << "\n";
   os << indent << "GhostPass: " << (this->GhostPass ? "installed" : "(none)") << "\n";
 }
 
@@ -159,8 +161,8 @@ vtkProp3D* vtkMedialScene::AddSkeleton(vtkPolyData* skeleton, const double rgb[3
   // Radius per node: the `Radius` array, else 1 % of the bounding-box diagonal.
   double bounds[6];
   skeleton->GetBounds(bounds);
-  const double diagonal =
-      std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+  const double diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) +
+                                    std::pow(bounds[5] - bounds[4], 2));
   const vtkIdType n = skeleton->GetNumberOfPoints();
   auto radius = vtkSmartPointer<vtkDoubleArray>::New();
   radius->SetName("DrawRadius");
@@ -210,7 +212,8 @@ vtkProp3D* vtkMedialScene::AddSkeleton(vtkPolyData* skeleton, const double rgb[3
 
 vtkProp3D* vtkMedialScene::AddVolume(vtkImageData* image) {
   if (this->VolumeStyle != 0) {
-    vtkSmartPointer<vtkVolume> volume = medial::makeVolumeRendering(image, static_cast<medial::VolumeStyle>(this->VolumeStyle));
+    vtkSmartPointer<vtkVolume> volume =
+        medial::makeVolumeRendering(image, static_cast<medial::VolumeStyle>(this->VolumeStyle));
     this->Renderer->AddVolume(volume);
     return volume;
   }
@@ -257,9 +260,7 @@ void vtkMedialScene::ResetCamera() {
   this->ResetCamera(aspect);
 }
 
-void vtkMedialScene::ResetCamera(double aspect) {
-  this->ResetCamera(aspect, 30.0, 20.0);
-}
+void vtkMedialScene::ResetCamera(double aspect) { this->ResetCamera(aspect, 30.0, 20.0); }
 
 void vtkMedialScene::ResetCamera(double aspect, double azimuth, double elevation) {
   vtkCamera* camera = this->Renderer->GetActiveCamera();
@@ -284,11 +285,13 @@ void vtkMedialScene::ResetCamera(double aspect, double azimuth, double elevation
   const double tanHalf = std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0) * 0.95;
   double distance = 0.0;
   for (int corner = 0; corner < 8; ++corner) {
-    const double p[3] = {bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]};
+    const double p[3] = {bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+                         bounds[4 + ((corner >> 2) & 1)]};
     const double d[3] = {p[0] - focal[0], p[1] - focal[1], p[2] - focal[2]};
     const double x = vtkMath::Dot(d, right), y = vtkMath::Dot(d, up);
     const double towardsCamera = -vtkMath::Dot(d, direction);
-    distance = std::max({distance, towardsCamera + std::abs(x) / (tanHalf * aspect), towardsCamera + std::abs(y) / tanHalf});
+    distance = std::max(
+        {distance, towardsCamera + std::abs(x) / (tanHalf * aspect), towardsCamera + std::abs(y) / tanHalf});
   }
   if (distance <= 0) return;
   camera->SetPosition(focal[0] - distance * direction[0], focal[1] - distance * direction[1],

@@ -1,6 +1,7 @@
 /**
  * @class vtkMedialSkeletonValidator
- * @brief Checks that its input is a docs/ARCHITECTURE.md §4 skeleton and passes it through with `NodeType` added.
+ * @brief Checks that its input is a docs/ARCHITECTURE.md §4 skeleton and passes it through with `NodeType`
+ * added.
  *
  * Checks: only line cells (polylines are accepted and split into edges by later filters), finite
  * coordinates, one positive finite `Radius` per node when the array exists (required when RequireRadius

@@ -34,7 +34,8 @@ struct Part {
 
 }  // namespace
 
-int vtkMedialSketchReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector) {
+int vtkMedialSketchReader::RequestData(vtkInformation*, vtkInformationVector**,
+                                       vtkInformationVector* outputVector) {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   medial::TextFile file;
   std::string error;
@@ -56,13 +57,16 @@ int vtkMedialSketchReader::RequestData(vtkInformation*, vtkInformationVector**, 
     Part& part = parts.back();
     const std::string where = file.where();
     if (!medial::parseNumbers(text, numbers) || (numbers.size() != 2 && numbers.size() != 4)) {
-      vtkErrorMacro(<< where << "expected 'x y' (a stroke point) or four numbers (a row of the placement matrix), got '" << text << "'");
+      vtkErrorMacro(
+          << where << "expected 'x y' (a stroke point) or four numbers (a row of the placement matrix), got '"
+          << text << "'");
       return 0;
     }
     if (part.points.empty()) part.firstLine = lineNumber;
     if (numbers.size() == 2) {
       if (!part.matrixRows.empty()) {
-        vtkErrorMacro(<< where << "a stroke point after the placement matrix; separate parts with a blank line");
+        vtkErrorMacro(<< where
+                      << "a stroke point after the placement matrix; separate parts with a blank line");
         return 0;
       }
       part.points.push_back({numbers[0], numbers[1]});

@@ -55,7 +55,8 @@ void vtkMedialSketchSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "PruningThreshold: " << this->PruningThreshold << "\n";
   os << indent << "CollapsingThreshold: " << this->CollapsingThreshold << "\n";
   for (const auto& [part, t] : this->PartThresholds)
-    os << indent << "PartThresholds[" << part << "]: " << t[0] << " " << t[1] << " " << t[2] << " " << t[3] << "\n";
+    os << indent << "PartThresholds[" << part << "]: " << t[0] << " " << t[1] << " " << t[2] << " " << t[3]
+       << "\n";
   for (const auto& [key, value] : this->BranchThresholds)
     os << indent << "BranchSimplification[" << key.first << ", " << key.second << "]: " << value << "\n";
   os << indent << "UnitLength: " << this->UnitLength << "\n";
@@ -67,8 +68,8 @@ void vtkMedialSketchSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Inflate: " << this->Inflate << "\n";
 }
 
-void vtkMedialSketchSkeleton::SetPartThresholds(int part, double simplification, double merging, double pruning,
-                                                double collapsing) {
+void vtkMedialSketchSkeleton::SetPartThresholds(int part, double simplification, double merging,
+                                                double pruning, double collapsing) {
   this->PartThresholds[part] = {simplification, merging, pruning, collapsing};
   this->Modified();
 }
@@ -133,9 +134,11 @@ int vtkMedialSketchSkeleton::RequestData(vtkInformation*, vtkInformationVector**
     return 0;
   }
   for (const auto& [part, t] : this->PartThresholds)
-    if (part >= 0 && part < int(parts.size())) parts[part].thresholds = medial::RefinementThresholds{t[0], t[1], t[2], t[3]};
+    if (part >= 0 && part < int(parts.size()))
+      parts[part].thresholds = medial::RefinementThresholds{t[0], t[1], t[2], t[3]};
   for (const auto& [key, value] : this->BranchThresholds)
-    if (key.first >= 0 && key.first < int(parts.size())) parts[key.first].branchSimplification[key.second] = value;
+    if (key.first >= 0 && key.first < int(parts.size()))
+      parts[key.first].branchSimplification[key.second] = value;
   const medial::SketchResult result = medial::sketchSkeleton(parts, this->MakeParameters(), [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();

@@ -6,10 +6,10 @@
  * Input: a polydata whose line cells are closed 2-D strokes (x, y; z ignored), one per part in modelling
  * order, optionally with cell data `Placement` (16 doubles, row-major 4x4 matrix placing the stroke's plane
  * in 3-D), as vtkMedialSketchReader produces.
- * Output port 0: the skeleton (docs/ARCHITECTURE.md §4: `Radius` from the inscribed balls, `NodeType`, field `Root`),
- * with point data `Part` (int) and cell data `Part` and `Branch` (int: the branch of the part's local
- * skeleton, -1 for the bones joining parts). Ready for vtkMedialSQM.
- * Output port 1: the inflated parts, closed triangle meshes, point data `Part`.
+ * Output port 0: the skeleton (docs/ARCHITECTURE.md §4: `Radius` from the inscribed balls, `NodeType`, field
+ * `Root`), with point data `Part` (int) and cell data `Part` and `Branch` (int: the branch of the part's
+ * local skeleton, -1 for the bones joining parts). Ready for vtkMedialSQM. Output port 1: the inflated parts,
+ * closed triangle meshes, point data `Part`.
  *
  * Lengths are in sketch pixels, UnitLength stroke units each (0, the default: a thousandth of the
  * drawing's bounding-box diagonal), so the paper's defaults work at any scale.

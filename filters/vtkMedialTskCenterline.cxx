@@ -57,7 +57,8 @@ void writePolylines(const medial::TskCenterlineResult& result, bool branchArrays
 
 // Port 1: the profile, one row per section. Port 2: the unfolded wall, angle along x and arc length
 // along y.
-void writeSections(const medial::TubeSections& sections, double spacing, vtkTable* table, vtkImageData* terrain) {
+void writeSections(const medial::TubeSections& sections, double spacing, vtkTable* table,
+                   vtkImageData* terrain) {
   table->AddColumn(doubleArray("ArcLength", sections.arcLength));
   table->AddColumn(doubleArray("MinDiameter", sections.minDiameter));
   table->AddColumn(doubleArray("MaxDiameter", sections.maxDiameter));
@@ -70,7 +71,8 @@ void writeSections(const medial::TubeSections& sections, double spacing, vtkTabl
   distance->SetName("WallDistance");
   distance->SetNumberOfValues(vtkIdType(rays) * count);
   for (int y = 0; y < count; ++y)
-    for (int x = 0; x < rays; ++x) distance->SetValue(vtkIdType(y) * rays + x, sections.wall[size_t(y)][size_t(x)]);
+    for (int x = 0; x < rays; ++x)
+      distance->SetValue(vtkIdType(y) * rays + x, sections.wall[size_t(y)][size_t(x)]);
   terrain->GetPointData()->SetScalars(distance);
 }
 
@@ -155,7 +157,9 @@ void vtkMedialTskCenterline::SetThreshold(double low, double high) {
 }
 
 const char* vtkMedialTskCenterline::GetSelectionName() const {
-  return this->Mode == Selection::Label ? "label" : this->Mode == Selection::Threshold ? "threshold" : "non-zero";
+  return this->Mode == Selection::Label       ? "label"
+         : this->Mode == Selection::Threshold ? "threshold"
+                                              : "non-zero";
 }
 
 void vtkMedialTskCenterline::SelectNonZero() {

@@ -42,27 +42,35 @@ std::vector<Parameter> centerlineParameters() {
   const auto f = vtkSmartPointer<vtkMedialTskCenterline>::New();
   const char* border[] = {"automatic", "drop", "keep"};
   return {
-      choiceOf("Selection", "Structure", "label, threshold, non-zero", f->GetSelectionName(),
-               "Which voxels form the tube: one label, an intensity window (e.g. colon air), or all non-zero"),
-      P::integer("Label", "Label", f->GetLabel(), -1000000, 1000000, "Voxel value of the structure (label images)"),
-      P::real("ThresholdLow", "Threshold low", f->GetThresholdLow(), -1e6, 1e6, 1, "Lower end of the window (HU for CT)"),
+      choiceOf(
+          "Selection", "Structure", "label, threshold, non-zero", f->GetSelectionName(),
+          "Which voxels form the tube: one label, an intensity window (e.g. colon air), or all non-zero"),
+      P::integer("Label", "Label", f->GetLabel(), -1000000, 1000000,
+                 "Voxel value of the structure (label images)"),
+      P::real("ThresholdLow", "Threshold low", f->GetThresholdLow(), -1e6, 1e6, 1,
+              "Lower end of the window (HU for CT)"),
       P::real("ThresholdHigh", "Threshold high", f->GetThresholdHigh(), -1e6, 1e6, 1,
               "Upper end of the window (colon air: -600 HU)"),
       choiceOf("BorderParts", "Border parts", kBorderParts, border[f->GetBorderParts()],
                "Parts touching the volume border: automatic drops them for a threshold (the air outside the "
                "body) and keeps them otherwise"),
-      MEDIAL_TOGGLE_PARAMETER(f, FillHoles, "Fill holes", "Fill cavities of the structure before the distance field"),
-      MEDIAL_REAL_PARAMETER(f, AntecedentWidth, "Antecedent width", 3,
-                            "Width of the TSK antecedent Gaussians relative to their cluster (§3, default 0.3)"),
-      MEDIAL_TOGGLE_PARAMETER(f, DetectBranches, "Branching structure",
-                              "Vessels, airways: one centerline per branch, joined at the junctions (beyond the paper)"),
-      MEDIAL_INTEGER_PARAMETER(f, CenteringIterations, "Centering passes",
-                               "Moves the TSK curve to the centre of its perpendicular sections (centricity, §2); "
-                               "0: the paper's curve"),
+      MEDIAL_TOGGLE_PARAMETER(f, FillHoles, "Fill holes",
+                              "Fill cavities of the structure before the distance field"),
+      MEDIAL_REAL_PARAMETER(
+          f, AntecedentWidth, "Antecedent width", 3,
+          "Width of the TSK antecedent Gaussians relative to their cluster (§3, default 0.3)"),
+      MEDIAL_TOGGLE_PARAMETER(
+          f, DetectBranches, "Branching structure",
+          "Vessels, airways: one centerline per branch, joined at the junctions (beyond the paper)"),
+      MEDIAL_INTEGER_PARAMETER(
+          f, CenteringIterations, "Centering passes",
+          "Moves the TSK curve to the centre of its perpendicular sections (centricity, §2); "
+          "0: the paper's curve"),
       MEDIAL_REAL_PARAMETER(f, SampleSpacing, "Output spacing (mm)", 2,
                             "Distance between output points; 0: smallest voxel"),
-      MEDIAL_REAL_PARAMETER(f, SectionSpacing, "Section spacing k (mm)", 2,
-                            "Perpendicular sections every k mm for the profile and the unfolded wall (§4, Figs. 14-15)"),
+      MEDIAL_REAL_PARAMETER(
+          f, SectionSpacing, "Section spacing k (mm)", 2,
+          "Perpendicular sections every k mm for the profile and the unfolded wall (§4, Figs. 14-15)"),
   };
 }
 
@@ -103,8 +111,9 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
   terrain_ = new QLabel(this);
   terrain_->setObjectName("terrain");
   terrain_->setMinimumHeight(120);
-  terrain_->setToolTip("Unfolded wall: distance from the axis over the arc length (across, as the profile) "
-                       "and the angle (down); dark bands are folds (paper Fig. 15)");
+  terrain_->setToolTip(
+      "Unfolded wall: distance from the axis over the arc length (across, as the profile) "
+      "and the angle (down); dark bands are folds (paper Fig. 15)");
   extraLayout()->addWidget(new QLabel("Unfolded wall", this));
   extraLayout()->addWidget(terrain_);
 
@@ -127,7 +136,8 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
   flyForm->addRow("Fly-through", flyRow);
   flyForm->addRow("Position", positionSlider_);
   extraLayout()->addLayout(flyForm);
-  for (QWidget* w : {static_cast<QWidget*>(positionSlider_), static_cast<QWidget*>(playButton_)}) w->setEnabled(false);
+  for (QWidget* w : {static_cast<QWidget*>(positionSlider_), static_cast<QWidget*>(playButton_)})
+    w->setEnabled(false);
 
   connect(playButton_, &QPushButton::toggled, this, &CenterlinePanel::play);
   connect(positionSlider_, &QSlider::valueChanged, this, [this](int value) {
@@ -139,7 +149,10 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
 
 void CenterlinePanel::setSeed(const std::array<double, 3>& seed) {
   seed_ = seed;
-  seedLabel_->setText(QString("Seed P0: %1, %2, %3 mm").arg(seed[0], 0, 'f', 1).arg(seed[1], 0, 'f', 1).arg(seed[2], 0, 'f', 1));
+  seedLabel_->setText(QString("Seed P0: %1, %2, %3 mm")
+                          .arg(seed[0], 0, 'f', 1)
+                          .arg(seed[1], 0, 'f', 1)
+                          .arg(seed[2], 0, 'f', 1));
 }
 
 void CenterlinePanel::clearSeed() {
@@ -188,7 +201,8 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
   fly_.setPath(line);
   buildProfile(vtkTable::SafeDownCast(tsk->GetOutputDataObject(1)));
   showTerrain(vtkImageData::SafeDownCast(tsk->GetOutputDataObject(2)));
-  for (QWidget* w : {static_cast<QWidget*>(positionSlider_), static_cast<QWidget*>(playButton_)}) w->setEnabled(!fly_.empty());
+  for (QWidget* w : {static_cast<QWidget*>(positionSlider_), static_cast<QWidget*>(playButton_)})
+    w->setEnabled(!fly_.empty());
   emit message(QString("Centerline: %1 points, %2 mm, %3 structure voxels")
                    .arg(line->GetNumberOfPoints())
                    .arg(fly_.length(), 0, 'f', 1)
@@ -221,7 +235,8 @@ void CenterlinePanel::buildProfile(vtkTable* profile) {
       top = std::max(top, maxima[maxima.size() * 95 / 100]);
     }
   }
-  const auto horizontal = chart_->chart()->axes(Qt::Horizontal), vertical = chart_->chart()->axes(Qt::Vertical);
+  const auto horizontal = chart_->chart()->axes(Qt::Horizontal),
+             vertical = chart_->chart()->axes(Qt::Vertical);
   if (!horizontal.isEmpty()) {
     horizontal.first()->setRange(0, std::max(fly_.length(), 1.0));
     horizontal.first()->setTitleText("arc length (mm)");
@@ -245,7 +260,8 @@ void CenterlinePanel::showTerrain(vtkImageData* terrain) {
   QImage image(grey.height, grey.width, QImage::Format_Grayscale8);  // sections x angles
   for (int angle = 0; angle < grey.width; ++angle) {
     uchar* row = image.scanLine(angle);
-    for (int section = 0; section < grey.height; ++section) row[section] = grey.pixels[size_t(section) * grey.width + angle];
+    for (int section = 0; section < grey.height; ++section)
+      row[section] = grey.pixels[size_t(section) * grey.width + angle];
   }
   terrainImage_ = image;
   terrain_->setPixmap(QPixmap::fromImage(image.scaled(std::max(terrain_->width(), 100), 120)));

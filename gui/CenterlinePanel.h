@@ -46,7 +46,8 @@ class CenterlinePanel : public FilterPanel {
 
  signals:
   // The camera should stand at `eye` looking at `focal` (the slice views follow `eye`).
-  void flyTo(const std::array<double, 3>& eye, const std::array<double, 3>& focal, const std::array<double, 3>& up);
+  void flyTo(const std::array<double, 3>& eye, const std::array<double, 3>& focal,
+             const std::array<double, 3>& up);
 
  protected:
   vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) override;

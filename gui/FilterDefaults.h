@@ -26,12 +26,12 @@ inline Parameter choiceOf(const QString& name, const QString& label, const std::
 }  // namespace medial::gui
 
 // Form rows of property `Property` of `filter` (a fresh vtkSmartPointer of the filter class).
-#define MEDIAL_INTEGER_PARAMETER(filter, Property, label, tooltip)                                           \
-  ::medial::gui::Parameter::integer(#Property, label, (filter)->Get##Property(),                            \
-                                    (filter)->Get##Property##MinValue(), (filter)->Get##Property##MaxValue(), \
-                                    tooltip)
+#define MEDIAL_INTEGER_PARAMETER(filter, Property, label, tooltip)               \
+  ::medial::gui::Parameter::integer(#Property, label, (filter)->Get##Property(), \
+                                    (filter)->Get##Property##MinValue(),         \
+                                    (filter)->Get##Property##MaxValue(), tooltip)
 #define MEDIAL_REAL_PARAMETER(filter, Property, label, decimals, tooltip)                                  \
-  ::medial::gui::Parameter::real(#Property, label, (filter)->Get##Property(),                             \
+  ::medial::gui::Parameter::real(#Property, label, (filter)->Get##Property(),                              \
                                  (filter)->Get##Property##MinValue(), (filter)->Get##Property##MaxValue(), \
                                  decimals, tooltip)
 #define MEDIAL_TOGGLE_PARAMETER(filter, Property, label, tooltip) \

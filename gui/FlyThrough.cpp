@@ -46,7 +46,9 @@ bool FlyThrough::setPath(vtkPolyData* centerline) {
     Point p;
     centerline->GetPoint(ids[i], p.data());
     if (!points_.empty() && vtkMath::Distance2BetweenPoints(p.data(), points_.back().data()) == 0) continue;
-    arc_.push_back(points_.empty() ? 0.0 : arc_.back() + std::sqrt(vtkMath::Distance2BetweenPoints(p.data(), points_.back().data())));
+    arc_.push_back(points_.empty() ? 0.0
+                                   : arc_.back() + std::sqrt(vtkMath::Distance2BetweenPoints(
+                                                       p.data(), points_.back().data())));
     points_.push_back(p);
     radius_.push_back(radius ? radius->GetComponent(ids[i], 0) : 0.0);
   }
@@ -68,11 +70,13 @@ bool FlyThrough::setPath(vtkPolyData* centerline) {
 
 Point FlyThrough::at(double s) const {
   s = std::clamp(s, 0.0, length());
-  const size_t i = std::min<size_t>(std::upper_bound(arc_.begin(), arc_.end(), s) - arc_.begin(), arc_.size() - 1);
+  const size_t i =
+      std::min<size_t>(std::upper_bound(arc_.begin(), arc_.end(), s) - arc_.begin(), arc_.size() - 1);
   const size_t a = i > 0 ? i - 1 : 0;
   const double span = arc_[i] - arc_[a];
   const double t = span > 0 ? (s - arc_[a]) / span : 0.0;
-  return {points_[a][0] + t * (points_[i][0] - points_[a][0]), points_[a][1] + t * (points_[i][1] - points_[a][1]),
+  return {points_[a][0] + t * (points_[i][0] - points_[a][0]),
+          points_[a][1] + t * (points_[i][1] - points_[a][1]),
           points_[a][2] + t * (points_[i][2] - points_[a][2])};
 }
 

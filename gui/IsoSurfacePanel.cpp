@@ -43,7 +43,11 @@ vtkSmartPointer<vtkAlgorithm> IsoSurfacePanel::makeFilter(SceneObject* input, QS
   image->GetPointData()->GetScalars()->GetRange(range, 0);
   const double value = form()->value("Value");
   if (value <= range[0] || value >= range[1]) {
-    error = QString("The iso-value %1 lies outside the values of %2 (%3 to %4).").arg(value).arg(input->name).arg(range[0]).arg(range[1]);
+    error = QString("The iso-value %1 lies outside the values of %2 (%3 to %4).")
+                .arg(value)
+                .arg(input->name)
+                .arg(range[0])
+                .arg(range[1]);
     return nullptr;
   }
   auto contour = vtkSmartPointer<vtkFlyingEdges3D>::New();

@@ -70,7 +70,8 @@ QSettings settings() { return QSettings("Medial", "medial-gui"); }
 
 }  // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), scene_(vtkSmartPointer<vtkMedialScene>::New()) {
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), scene_(vtkSmartPointer<vtkMedialScene>::New()) {
   setWindowTitle("Medial");
   setAcceptDrops(true);
   view_ = new VtkView(this);
@@ -93,7 +94,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), scene_(vtkSmartPo
   setCentralWidget(splitter_);
 
   objects_ = new ObjectList(scene_, this);
-  objects_->setErrorReporter([this](const QString& title, const QString& message) { reportError(title, message); });
+  objects_->setErrorReporter(
+      [this](const QString& title, const QString& message) { reportError(title, message); });
   connect(objects_, &ObjectList::sceneChanged, this, &MainWindow::render);
   connect(objects_, &ObjectList::objectsChanged, this, &MainWindow::onObjectsChanged);
   connect(objects_, &ObjectList::currentChanged, this, [this](SceneObject* object) {
@@ -186,14 +188,15 @@ void MainWindow::buildPanels() {
   legend_->SetMaximumWidthInPixels(110);
   legend_->VisibilityOff();
   scene_->GetRenderer()->AddViewProp(legend_);
-  connect(skeleton_, &SkeletonPanel::legendChanged, this, [this](vtkScalarsToColors* table, const QString& title) {
-    legend_->SetVisibility(table != nullptr);
-    if (table) {
-      legend_->SetLookupTable(table);
-      legend_->SetTitle(title.toUtf8().constData());
-    }
-    render();
-  });
+  connect(skeleton_, &SkeletonPanel::legendChanged, this,
+          [this](vtkScalarsToColors* table, const QString& title) {
+            legend_->SetVisibility(table != nullptr);
+            if (table) {
+              legend_->SetLookupTable(table);
+              legend_->SetTitle(title.toUtf8().constData());
+            }
+            render();
+          });
   connect(centerline_, &CenterlinePanel::flyTo, this, &MainWindow::onFlyTo);
   connect(slices_, &SliceViews::pointClicked, this, [this](const SliceViews::Point& p) {
     if (tabs_->currentWidget() && tabs_->currentWidget()->isAncestorOf(centerline_)) centerline_->setSeed(p);
@@ -224,8 +227,9 @@ void MainWindow::buildGhostToolBar() {
   ghostMode_->setObjectName("ghostMode");
   ghostMode_->addItems({"Off", "Ghost", "Cutaway"});
   ghostMode_->setCurrentIndex(1);
-  ghostMode_->setToolTip("How objects of interest (Interest column; Shift+click in the 3-D view) show through "
-                         "what hides them (Hoffmann et al., WSCG 2008)");
+  ghostMode_->setToolTip(
+      "How objects of interest (Interest column; Shift+click in the 3-D view) show through "
+      "what hides them (Hoffmann et al., WSCG 2008)");
   bar->addWidget(ghostMode_);
   bar->addWidget(new QLabel(" Opacity ", bar));
   ghostOpacity_ = new QSlider(Qt::Horizontal, bar);
@@ -238,8 +242,9 @@ void MainWindow::buildGhostToolBar() {
   QAction* layers = bar->addAction("Layers");
   layers->setObjectName("ghostLayers");
   layers->setCheckable(true);
-  layers->setToolTip("Show every occluding layer in front of an object of interest, not only the one drawn "
-                     "last (slower on software OpenGL)");
+  layers->setToolTip(
+      "Show every occluding layer in front of an object of interest, not only the one drawn "
+      "last (slower on software OpenGL)");
   connect(layers, &QAction::toggled, this, [this](bool on) {
     scene_->GetGhostPass()->SetLayeredGhosts(on);
     render();
@@ -275,7 +280,8 @@ void MainWindow::buildMenus() {
   QAction* slices = view->addAction("&Slice Views");
   slices->setCheckable(true);
   connect(slices, &QAction::toggled, slices_, &QWidget::setVisible);
-  connect(objects_, &ObjectList::objectsChanged, slices, [this, slices] { slices->setChecked(slices_->isVisible()); });
+  connect(objects_, &ObjectList::objectsChanged, slices,
+          [this, slices] { slices->setChecked(slices_->isVisible()); });
   QMenu* rendering = view->addMenu("&Volume Rendering");
   rendering->setToolTip("Ray-cast rendering of the volume shown in the slice views");
   volumeRenderingActions_ = new QActionGroup(this);
@@ -330,9 +336,10 @@ bool MainWindow::openFile(const QString& path) {
   statusBar()->showMessage("Reading " + path);
   QApplication::setOverrideCursor(Qt::WaitCursor);
   QString readError;
-  connect(&runner, &FilterRunner::finished, this, [&readError](vtkAlgorithm*, bool ok, const QString& message, double) {
-    if (!ok) readError = message.isEmpty() ? QString("cannot be read") : message;
-  });
+  connect(&runner, &FilterRunner::finished, this,
+          [&readError](vtkAlgorithm*, bool ok, const QString& message, double) {
+            if (!ok) readError = message.isEmpty() ? QString("cannot be read") : message;
+          });
   runner.start(reader, "read");
   runner.wait();
   QApplication::restoreOverrideCursor();
@@ -382,7 +389,8 @@ bool MainWindow::setVolumeRendering(int preset) {
   }
   const bool on = preset >= 0 && shownVolume_;
   if (on) {
-    volumeRendering_ = makeVolumeRendering(vtkImageData::SafeDownCast(shownVolume_->data), VolumePreset(preset));
+    volumeRendering_ =
+        makeVolumeRendering(vtkImageData::SafeDownCast(shownVolume_->data), VolumePreset(preset));
     scene_->GetRenderer()->AddVolume(volumeRendering_);
     objects_->setVisible(shownVolume_, false);  // its opaque slices would cut through the rendering
     log(shownVolume_->name + ": volume rendering, " + volumePresetNames()[preset]);
@@ -455,7 +463,8 @@ void MainWindow::onViewClicked(const QPointF& position, Qt::KeyboardModifiers mo
       double point[3];
       picker->GetPickPosition(point);
       skeleton_->selectBone(object, SkeletonPanel::nearestBone(object, point));
-    } else if (object->kind == SceneObject::Kind::Skeleton && object->polyData()->GetCellData()->GetArray("Branch")) {
+    } else if (object->kind == SceneObject::Kind::Skeleton &&
+               object->polyData()->GetCellData()->GetArray("Branch")) {
       // A sketch's skeleton: the clicked bone's branch gets its own epsilon_s (branch-level control).
       double point[3];
       picker->GetPickPosition(point);
@@ -464,7 +473,9 @@ void MainWindow::onViewClicked(const QPointF& position, Qt::KeyboardModifiers mo
       vtkDataArray* branch = object->polyData()->GetCellData()->GetArray("Branch");
       if (bone >= 0 && part && branch->GetComponent(bone, 0) >= 0) {
         sketch_->selectBranch(int(part->GetComponent(bone, 0)), int(branch->GetComponent(bone, 0)));
-        log(QString("Sketch: ε_s of part %1, branch %2").arg(int(part->GetComponent(bone, 0)) + 1).arg(int(branch->GetComponent(bone, 0))));
+        log(QString("Sketch: ε_s of part %1, branch %2")
+                .arg(int(part->GetComponent(bone, 0)) + 1)
+                .arg(int(branch->GetComponent(bone, 0))));
       }
     }
     return;
@@ -513,8 +524,10 @@ void MainWindow::onStrokeDrawn(const QVector<QPointF>& positions) {
     const double d[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
     stroke.append(QPointF(vtkMath::Dot(d, u), vtkMath::Dot(d, v)));
   }
-  const Placement placement = {u[0], v[0], w[0], o[0], u[1], v[1], w[1], o[1], u[2], v[2], w[2], o[2], 0, 0, 0, 1};
-  if (!sketch_->addStroke(stroke, placement)) log("Sketch: the stroke needs at least 3 points on the drawing plane");
+  const Placement placement = {u[0], v[0], w[0], o[0], u[1], v[1], w[1], o[1],
+                               u[2], v[2], w[2], o[2], 0,    0,    0,    1};
+  if (!sketch_->addStroke(stroke, placement))
+    log("Sketch: the stroke needs at least 3 points on the drawing plane");
 }
 
 void MainWindow::onFlyTo(const std::array<double, 3>& eye, const std::array<double, 3>& /*focal*/,
@@ -535,7 +548,8 @@ vtkMedialScene* MainWindow::scene() const { return scene_; }
 void MainWindow::resetCamera() {
   vtkCamera* camera = scene_->GetRenderer()->GetActiveCamera();
   camera->ParallelProjectionOff();
-  const double aspect = view_->height() > 0 ? static_cast<double>(view_->width()) / view_->height() : 4.0 / 3.0;
+  const double aspect =
+      view_->height() > 0 ? static_cast<double>(view_->width()) / view_->height() : 4.0 / 3.0;
   scene_->ResetCamera(aspect);
   if (!objects_->ofKind(SceneObject::Kind::Volume).empty()) {
     // Medical volumes (LPS: anterior is -y, superior +z): the patient's front, head up, as in 3D Slicer.
@@ -560,8 +574,9 @@ bool MainWindow::saveScreenshot(const QString& path) {
 
 void MainWindow::openDialog() {
   const QString filter =
-      QString("Meshes, skeletons, volumes and sketches (%1 %2 %3);;Meshes and skeletons (%1);;Volumes (%2);;"
-              "Sketches (%3);;All files (*)")
+      QString(
+          "Meshes, skeletons, volumes and sketches (%1 %2 %3);;Meshes and skeletons (%1);;Volumes (%2);;"
+          "Sketches (%3);;All files (*)")
           .arg(vtkMedialReader::GetMeshExtensions(), vtkMedialReader::GetVolumeExtensions(),
                vtkMedialReader::GetSketchExtensions());
   const QStringList paths = QFileDialog::getOpenFileNames(this, "Open", QString(), filter);
@@ -592,7 +607,8 @@ void MainWindow::addRecent(const QString& path) {
 
 void MainWindow::updateRecentMenu() {
   recentMenu_->clear();
-  for (const QString& path : recentFiles()) recentMenu_->addAction(path, this, [this, path] { openFile(path); });
+  for (const QString& path : recentFiles())
+    recentMenu_->addAction(path, this, [this, path] { openFile(path); });
   recentMenu_->setEnabled(!recentMenu_->isEmpty());
 }
 
@@ -607,12 +623,13 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 void MainWindow::about() {
-  QMessageBox::about(this, "About Medial",
-                     QString("<b>Medial %1</b><br>Skeletons, centerlines, tube meshes and ghost views.<br><br>"
-                             "VTK %2 &middot; Qt %3 (built with %4) &middot; ITK %5 &middot; CGAL %6 &middot; "
-                             "Eigen %7")
-                         .arg(MEDIAL_VERSION, vtkVersion::GetVTKVersion(), qVersion(), QT_VERSION_STR,
-                              MEDIAL_ITK_VERSION, MEDIAL_CGAL_VERSION, MEDIAL_EIGEN_VERSION));
+  QMessageBox::about(
+      this, "About Medial",
+      QString("<b>Medial %1</b><br>Skeletons, centerlines, tube meshes and ghost views.<br><br>"
+              "VTK %2 &middot; Qt %3 (built with %4) &middot; ITK %5 &middot; CGAL %6 &middot; "
+              "Eigen %7")
+          .arg(MEDIAL_VERSION, vtkVersion::GetVTKVersion(), qVersion(), QT_VERSION_STR, MEDIAL_ITK_VERSION,
+               MEDIAL_CGAL_VERSION, MEDIAL_EIGEN_VERSION));
 }
 
 }  // namespace medial::gui

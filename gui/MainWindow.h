@@ -100,11 +100,13 @@ class MainWindow : public QMainWindow {
   void onWindowLevelChanged(double window, double level);
   void onViewClicked(const QPointF& position, Qt::KeyboardModifiers modifiers);
   void onStrokeDrawn(const QVector<QPointF>& positions);
-  void onFlyTo(const std::array<double, 3>& eye, const std::array<double, 3>& focal, const std::array<double, 3>& up);
+  void onFlyTo(const std::array<double, 3>& eye, const std::array<double, 3>& focal,
+               const std::array<double, 3>& up);
   void showVolume(SceneObject* volume);
   std::vector<vtkImageSlice*> shownVolumeSlices() const;
   // The world point under a position of the 3-D view on the plane through `origin` with `normal`.
-  bool viewPlanePoint(const QPointF& position, const double origin[3], const double normal[3], double point[3]) const;
+  bool viewPlanePoint(const QPointF& position, const double origin[3], const double normal[3],
+                      double point[3]) const;
   void render();
 
   VtkView* view_ = nullptr;

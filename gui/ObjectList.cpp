@@ -42,10 +42,14 @@ SceneObject::Kind kindOf(vtkDataObject* data) {
 
 QString kindName(SceneObject::Kind kind) {
   switch (kind) {
-    case SceneObject::Kind::Mesh: return "mesh";
-    case SceneObject::Kind::Skeleton: return "skeleton";
-    case SceneObject::Kind::Volume: return "volume";
-    case SceneObject::Kind::Sketch: return "sketch";
+    case SceneObject::Kind::Mesh:
+      return "mesh";
+    case SceneObject::Kind::Skeleton:
+      return "skeleton";
+    case SceneObject::Kind::Volume:
+      return "volume";
+    case SceneObject::Kind::Sketch:
+      return "sketch";
   }
   return {};
 }
@@ -60,8 +64,9 @@ ObjectList::ObjectList(vtkMedialScene* scene, QWidget* parent) : QWidget(parent)
   tree_->header()->setStretchLastSection(false);
   tree_->setRootIsDecorated(false);
   tree_->setContextMenuPolicy(Qt::CustomContextMenu);
-  tree_->setToolTip("Tick: visible. Interest: stays visible through other objects in the ghost view.\n"
-                    "Right-click for colour, save as, rig export and delete.");
+  tree_->setToolTip(
+      "Tick: visible. Interest: stays visible through other objects in the ghost view.\n"
+      "Right-click for colour, save as, rig export and delete.");
   connect(tree_, &QTreeWidget::itemChanged, this, &ObjectList::onItemChanged);
   connect(tree_, &QTreeWidget::customContextMenuRequested, this, &ObjectList::showMenu);
   connect(tree_, &QTreeWidget::currentItemChanged, this, [this] {
@@ -101,13 +106,15 @@ void ObjectList::fail(const QString& title, const QString& message) {
   if (report_) report_(title, message);
 }
 
-SceneObject* ObjectList::add(const QString& name, vtkDataObject* data, const QString& path, double radiusScale) {
+SceneObject* ObjectList::add(const QString& name, vtkDataObject* data, const QString& path,
+                             double radiusScale) {
   auto errors = medial::ErrorCollector::Watch(scene_);
   const double sceneScale = scene_->GetSkeletonRadiusScale();
   scene_->SetSkeletonRadiusScale(radiusScale);
   // A sketch is drawn where its strokes lie in 3-D (their Placement), not in their own planes' coordinates.
   vtkSmartPointer<vtkDataObject> shown = data;
-  if (data && kindOf(data) == SceneObject::Kind::Sketch) shown = placedStrokes(vtkPolyData::SafeDownCast(data));
+  if (data && kindOf(data) == SceneObject::Kind::Sketch)
+    shown = placedStrokes(vtkPolyData::SafeDownCast(data));
   vtkProp3D* prop = shown ? scene_->AddData(shown) : nullptr;
   scene_->SetSkeletonRadiusScale(sceneScale);
   scene_->RemoveObserver(errors);
@@ -126,7 +133,8 @@ SceneObject* ObjectList::add(const QString& name, vtkDataObject* data, const QSt
 
   auto* item = new QTreeWidgetItem;
   item->setText(kNameColumn, name);
-  item->setToolTip(kNameColumn, (path.isEmpty() ? QString("computed") : path) + " (" + kindName(object->kind) + ")");
+  item->setToolTip(kNameColumn,
+                   (path.isEmpty() ? QString("computed") : path) + " (" + kindName(object->kind) + ")");
   item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
   item->setCheckState(kNameColumn, Qt::Checked);
   if (object->kind != SceneObject::Kind::Volume) item->setCheckState(kInterestColumn, Qt::Unchecked);
@@ -257,7 +265,8 @@ bool ObjectList::save(SceneObject* object, const QString& path) {
 
 bool ObjectList::exportRig(SceneObject* object, const QString& path) {
   if (!object->skinnedMesh) {
-    fail("Cannot export rig", object->name + " has no skinning weights: extract a skeleton with weights first");
+    fail("Cannot export rig",
+         object->name + " has no skinning weights: extract a skeleton with weights first");
     return false;
   }
   auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
@@ -295,7 +304,8 @@ void ObjectList::chooseColor() {
   auto* actor = object ? vtkActor::SafeDownCast(object->prop) : nullptr;
   if (!actor) return;
   const double* rgb = actor->GetProperty()->GetColor();
-  const QColor chosen = QColorDialog::getColor(QColor::fromRgbF(rgb[0], rgb[1], rgb[2]), this, "Colour of " + object->name);
+  const QColor chosen =
+      QColorDialog::getColor(QColor::fromRgbF(rgb[0], rgb[1], rgb[2]), this, "Colour of " + object->name);
   if (chosen.isValid()) setColor(object, chosen.redF(), chosen.greenF(), chosen.blueF());
 }
 
@@ -303,8 +313,9 @@ void ObjectList::saveDialog() {
   SceneObject* object = current();
   if (!object) return;
   const bool volume = object->kind == SceneObject::Kind::Volume;
-  const QString filter = volume ? QString("VTK image data (*.vti)")
-                                : QString("Meshes and skeletons (%1)").arg(vtkMedialPolyDataWriter::GetExtensions());
+  const QString filter =
+      volume ? QString("VTK image data (*.vti)")
+             : QString("Meshes and skeletons (%1)").arg(vtkMedialPolyDataWriter::GetExtensions());
   const QString suggested = QFileInfo(object->name).completeBaseName() + (volume ? ".vti" : ".vtp");
   const QString path = QFileDialog::getSaveFileName(this, "Save " + object->name, suggested, filter);
   if (!path.isEmpty()) save(object, path);
@@ -313,8 +324,9 @@ void ObjectList::saveDialog() {
 void ObjectList::rigDialog() {
   SceneObject* object = current();
   if (!object) return;
-  const QString path = QFileDialog::getSaveFileName(this, "Export rig", QFileInfo(object->name).completeBaseName() + ".glb",
-                                                    QString("Rigs (%1)").arg(vtkMedialRigWriter::GetExtensions()));
+  const QString path =
+      QFileDialog::getSaveFileName(this, "Export rig", QFileInfo(object->name).completeBaseName() + ".glb",
+                                   QString("Rigs (%1)").arg(vtkMedialRigWriter::GetExtensions()));
   if (!path.isEmpty()) exportRig(object, path);
 }
 

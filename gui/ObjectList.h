@@ -29,7 +29,8 @@ class ObjectList : public QWidget {
 
   // Shows `data` in the scene and adds a row; returns null (and reports why) when the scene cannot show it.
   // A skeleton's tubes are drawn at radiusScale x `Radius` (a centerline: thin, to fly inside its tube).
-  SceneObject* add(const QString& name, vtkDataObject* data, const QString& path = QString(), double radiusScale = 1.0);
+  SceneObject* add(const QString& name, vtkDataObject* data, const QString& path = QString(),
+                   double radiusScale = 1.0);
   void remove(SceneObject* object);
   int count() const { return static_cast<int>(objects_.size()); }
   SceneObject* at(int row) const { return objects_[row].get(); }

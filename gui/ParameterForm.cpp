@@ -10,15 +10,16 @@
 
 namespace medial::gui {
 
-Parameter Parameter::integer(QString name, QString label, int value, int minimum, int maximum, QString tooltip) {
+Parameter Parameter::integer(QString name, QString label, int value, int minimum, int maximum,
+                             QString tooltip) {
   Parameter p;
   p.name = std::move(name), p.label = std::move(label), p.tooltip = std::move(tooltip);
   p.type = Type::Integer, p.value = value, p.minimum = minimum, p.maximum = maximum;
   return p;
 }
 
-Parameter Parameter::real(QString name, QString label, double value, double minimum, double maximum, int decimals,
-                          QString tooltip) {
+Parameter Parameter::real(QString name, QString label, double value, double minimum, double maximum,
+                          int decimals, QString tooltip) {
   Parameter p;
   p.name = std::move(name), p.label = std::move(label), p.tooltip = std::move(tooltip);
   p.type = Type::Real, p.value = value, p.minimum = minimum, p.maximum = maximum, p.decimals = decimals;

@@ -26,8 +26,8 @@ struct Parameter {
   QStringList choices;
 
   static Parameter integer(QString name, QString label, int value, int minimum, int maximum, QString tooltip);
-  static Parameter real(QString name, QString label, double value, double minimum, double maximum, int decimals,
-                        QString tooltip);
+  static Parameter real(QString name, QString label, double value, double minimum, double maximum,
+                        int decimals, QString tooltip);
   static Parameter toggle(QString name, QString label, bool value, QString tooltip);
   static Parameter choice(QString name, QString label, QStringList choices, QString tooltip);
 };

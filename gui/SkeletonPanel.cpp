@@ -37,18 +37,23 @@ std::vector<Parameter> contractionParameters() {
       MEDIAL_REAL_PARAMETER(f, InitialContractionFactor, "W_L0 factor", 6,
                             "W_L0 = factor · sqrt(mean face area) (§III.A, default 1e-3)"),
       MEDIAL_REAL_PARAMETER(f, ContractionScale, "s_L", 2, "Growth of W_L per iteration (§III.A, default 2)"),
-      MEDIAL_REAL_PARAMETER(f, MaxContractionWeight, "W_L cap", 0, "Upper bound of W_L (§III.A, default 2048)"),
-      MEDIAL_REAL_PARAMETER(f, MaxAttractionWeight, "W_H cap", 0, "Upper bound of W_H (§III.A, default 10000)"),
+      MEDIAL_REAL_PARAMETER(f, MaxContractionWeight, "W_L cap", 0,
+                            "Upper bound of W_L (§III.A, default 2048)"),
+      MEDIAL_REAL_PARAMETER(f, MaxAttractionWeight, "W_H cap", 0,
+                            "Upper bound of W_H (§III.A, default 10000)"),
       MEDIAL_INTEGER_PARAMETER(f, MaxIterations, "Max iterations", "Contraction iterations at most (§III.A)"),
-      MEDIAL_REAL_PARAMETER(f, ShapeWeight, "w_a", 3, "Shape cost weight of the surgery, eq. (10) (default 1)"),
+      MEDIAL_REAL_PARAMETER(f, ShapeWeight, "w_a", 3,
+                            "Shape cost weight of the surgery, eq. (10) (default 1)"),
       MEDIAL_REAL_PARAMETER(f, SamplingWeight, "w_b", 3,
                             "Sampling cost weight of the surgery, eq. (10) (default 0.1)"),
       MEDIAL_TOGGLE_PARAMETER(f, RefineEmbedding, "Refine embedding",
                               "Move nodes to the centre of their vertices (§III.C)"),
-      MEDIAL_TOGGLE_PARAMETER(f, RestoreCycles, "Restore cycles",
-                              "Put back the cycles surgery lost: as many skeleton cycles as the mesh has genus"),
+      MEDIAL_TOGGLE_PARAMETER(
+          f, RestoreCycles, "Restore cycles",
+          "Put back the cycles surgery lost: as many skeleton cycles as the mesh has genus"),
       weights,
-      MEDIAL_REAL_PARAMETER(f, HeatConstant, "c (heat)", 3, "H_jj = c / d(j)^2 (§III.E, Baran and Popović: 1)"),
+      MEDIAL_REAL_PARAMETER(f, HeatConstant, "c (heat)", 3,
+                            "H_jj = c / d(j)^2 (§III.E, Baran and Popović: 1)"),
       choiceOf("Solver", "Solver", vtkMedialContractionSkeleton::GetSolverNames(), f->GetSolver(),
                "Sparse solver of the normal equations (5)"),
   };
@@ -94,7 +99,8 @@ SkeletonPanel::SkeletonPanel(ObjectList* objects, QWidget* parent)
   });
   connect(objects, &ObjectList::objectsChanged, this, [this] {
     bool live = false;
-    for (SceneObject* s : this->objects()->ofKind(SceneObject::Kind::Skeleton)) live = live || s == lastSkeleton_;
+    for (SceneObject* s : this->objects()->ofKind(SceneObject::Kind::Skeleton))
+      live = live || s == lastSkeleton_;
     if (!live) lastSkeleton_ = nullptr;
   });
 }
@@ -137,7 +143,8 @@ void SkeletonPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
                                      : QString()));
 
   SceneObject* segmentation = objects()->add(input->name + " segments", meshData);
-  SceneObject* skeleton = objects()->add(input->name + " skeleton", skeletonData, QString(), kComputedRadiusScale);
+  SceneObject* skeleton =
+      objects()->add(input->name + " skeleton", skeletonData, QString(), kComputedRadiusScale);
   if (!segmentation || !skeleton) return;
   if (meshData->GetPointData()->GetArray("SkinWeights")) skeleton->skinnedMesh = meshData;
   objects()->setVisible(input, false);  // the segmentation mesh replaces it
@@ -154,7 +161,8 @@ void SkeletonPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
 
 SceneObject* SkeletonPanel::segmentationOf(SceneObject* skeleton) const {
   if (!skeleton) return nullptr;
-  const QString name = skeleton->name.endsWith(" skeleton") ? skeleton->name.chopped(9) + " segments" : QString();
+  const QString name =
+      skeleton->name.endsWith(" skeleton") ? skeleton->name.chopped(9) + " segments" : QString();
   return objects()->findByName(name);
 }
 
@@ -183,7 +191,8 @@ bool SkeletonPanel::selectBone(SceneObject* skeleton, int bone) {
     const QSignalBlocker block(bone_);
     bone_->setValue(bone);
   }
-  emit message(bone < 0 ? QString("Mesh coloured by SkeletonNode") : QString("Mesh coloured by the weight of bone %1").arg(bone));
+  emit message(bone < 0 ? QString("Mesh coloured by SkeletonNode")
+                        : QString("Mesh coloured by the weight of bone %1").arg(bone));
   emit legendChanged(bone < 0 ? nullptr : mapper->GetLookupTable(), QString("bone %1").arg(bone));
   emit sceneChanged();
   return true;

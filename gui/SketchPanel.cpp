@@ -27,10 +27,12 @@ constexpr const char* kDrawnSketch = "drawn sketch";
 std::vector<Parameter> sketchParameters() {
   const auto f = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
   return {
-      MEDIAL_REAL_PARAMETER(f, Thickness, "Thickness", 2,
-                            "Height parameter c of the inflation (§4.1: Poisson equation, Dirichlet boundary); "
-                            "scales the thickness"),
-      MEDIAL_TOGGLE_PARAMETER(f, Inflate, "Inflated mesh", "Also build the inflated mesh of every stroke (§4.1)"),
+      MEDIAL_REAL_PARAMETER(
+          f, Thickness, "Thickness", 2,
+          "Height parameter c of the inflation (§4.1: Poisson equation, Dirichlet boundary); "
+          "scales the thickness"),
+      MEDIAL_TOGGLE_PARAMETER(f, Inflate, "Inflated mesh",
+                              "Also build the inflated mesh of every stroke (§4.1)"),
   };
 }
 
@@ -44,7 +46,8 @@ struct Threshold {
 };
 
 constexpr Threshold kThresholds[4] = {
-    {"Simplification", "ε_s simplify", 50, "Branch simplification ε_s of BoundedDP, Algorithms 1-2 (§3.1; default 5 px)"},
+    {"Simplification", "ε_s simplify", 50,
+     "Branch simplification ε_s of BoundedDP, Algorithms 1-2 (§3.1; default 5 px)"},
     {"Merging", "ε_m merge", 300, "Joint merging ε_m (§3.3; default 30 px)"},
     {"Pruning", "ε_t prune", 300, "Branch pruning ε_t (§3.3; default 30 px)"},
     {"Collapsing", "ε_c collapse", 100, "Edge collapsing ε_c (§3.3; default 10 px)"},
@@ -64,8 +67,9 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
   auto* rows = new QFormLayout;
   scope_ = new QComboBox(this);
   scope_->setObjectName("thresholdScope");
-  scope_->setToolTip("Multi-level control (§3.3): the sliders set the global thresholds, those of one part, or\n"
-                     "ε_s of one branch (click a bone of the sketch's skeleton in the 3-D view)");
+  scope_->setToolTip(
+      "Multi-level control (§3.3): the sliders set the global thresholds, those of one part, or\n"
+      "ε_s of one branch (click a bone of the sketch's skeleton in the 3-D view)");
   rows->addRow("Thresholds of", scope_);
   connect(scope_, &QComboBox::currentIndexChanged, this, &SketchPanel::showScope);
   for (int i = 0; i < 4; ++i) {
@@ -89,9 +93,10 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
   live_->setChecked(true);
   draw_ = new QCheckBox("Draw strokes in the 3-D view", this);
   draw_->setObjectName("draw");
-  draw_->setToolTip("Left-drag draws a closed stroke on the plane facing you through the focal point; each\n"
-                    "stroke is a new part (rotate the view between strokes to draw parts in other planes).\n"
-                    "Turn off to rotate the view again.");
+  draw_->setToolTip(
+      "Left-drag draws a closed stroke on the plane facing you through the focal point; each\n"
+      "stroke is a new part (rotate the view between strokes to draw parts in other planes).\n"
+      "Turn off to rotate the view again.");
   rows->addRow(live_);
   rows->addRow(draw_);
   extraLayout()->addLayout(rows);
@@ -194,7 +199,8 @@ vtkSmartPointer<vtkAlgorithm> SketchPanel::makeFilter(SceneObject* input, QStrin
   filter->SetPruningThreshold(global_[2]);
   filter->SetCollapsingThreshold(global_[3]);
   for (const auto& [part, t] : partThresholds_) filter->SetPartThresholds(part, t[0], t[1], t[2], t[3]);
-  for (const auto& [key, epsilon] : branchSimplification_) filter->SetBranchSimplification(key.first, key.second, epsilon);
+  for (const auto& [key, epsilon] : branchSimplification_)
+    filter->SetBranchSimplification(key.first, key.second, epsilon);
   filter->SetThickness(form()->value("Thickness"));
   filter->SetInflate(form()->isOn("Inflate"));
   return filter;

@@ -99,7 +99,8 @@ void SliceView::updateCrosshair() {
       Point p = cursor_;
       p[along] = bounds[2 * along + end];
       // The camera looks along +z (axial), +y (coronal), -x (sagittal): lift against that direction.
-      p[axis_] = volume_->GetOrigin()[axis_] + sliceIndex() * volume_->GetSpacing()[axis_] + (axis_ == 0 ? lift : -lift);
+      p[axis_] = volume_->GetOrigin()[axis_] + sliceIndex() * volume_->GetSpacing()[axis_] +
+                 (axis_ == 0 ? lift : -lift);
       points->InsertNextPoint(p.data());
     }
   }
@@ -132,7 +133,9 @@ void SliceView::resetCamera() {
   volume_->GetBounds(bounds);
   const int u = (axis_ + 1) % 3, v = (axis_ + 2) % 3;
   const double aspect = height() > 0 ? static_cast<double>(width()) / height() : 1.0;
-  const double horizontal = axis_ == 2 ? bounds[1] - bounds[0] : std::max(bounds[2 * u + 1] - bounds[2 * u], bounds[2 * v + 1] - bounds[2 * v]);
+  const double horizontal =
+      axis_ == 2 ? bounds[1] - bounds[0]
+                 : std::max(bounds[2 * u + 1] - bounds[2 * u], bounds[2 * v + 1] - bounds[2 * v]);
   const double vertical = axis_ == 2 ? bounds[3] - bounds[2] : bounds[5] - bounds[4];
   camera->SetParallelScale(0.52 * std::max(vertical, horizontal / aspect));
   update();

@@ -40,9 +40,9 @@ class SliceView : public VtkView {
   Point worldAt(const QPointF& position) const;
 
  signals:
-  void cursorPicked(const Point& point);         // left click or drag
+  void cursorPicked(const Point& point);  // left click or drag
   void windowLevelDragged(double window, double level);
-  void sliceStepped(int steps);                  // wheel
+  void sliceStepped(int steps);  // wheel
 
  protected:
   void mousePressEvent(QMouseEvent* event) override;

@@ -16,7 +16,8 @@ namespace medial::gui {
 SliceViews::SliceViews(QWidget* parent) : QWidget(parent) {
   presets_ = new QComboBox(this);
   presets_->setObjectName("windowLevelPreset");
-  presets_->addItems({"Full range", "Bone (W 1800, L 400)", "Soft tissue (W 400, L 40)", "Lung / air (W 1500, L -600)"});
+  presets_->addItems(
+      {"Full range", "Bone (W 1800, L 400)", "Soft tissue (W 400, L 40)", "Lung / air (W 1500, L -600)"});
   presets_->setToolTip("Window/level presets (Hounsfield units); right-drag in a slice view adjusts them");
   label_ = new QLabel(this);
   label_->setObjectName("cursorLabel");
@@ -30,7 +31,8 @@ SliceViews::SliceViews(QWidget* parent) : QWidget(parent) {
   for (int axis : {2, 1, 0}) {
     views_[axis] = new SliceView(axis, this);
     views_[axis]->setObjectName(names[axis]);
-    views_[axis]->setToolTip(QString(names[axis]) + ": click to move the crosshair (and pick a seed), wheel for "
+    views_[axis]->setToolTip(QString(names[axis]) +
+                             ": click to move the crosshair (and pick a seed), wheel for "
                              "slices, right-drag for window/level, middle-drag to pan, Ctrl+wheel to zoom");
     row->addWidget(views_[axis]);
     connect(views_[axis], &SliceView::cursorPicked, this, [this](const Point& p) {
@@ -89,10 +91,18 @@ void SliceViews::setWindowLevel(double window, double level) {
 
 void SliceViews::applyPreset(int preset) {
   switch (preset) {
-    case 1: setWindowLevel(1800, 400); break;
-    case 2: setWindowLevel(400, 40); break;
-    case 3: setWindowLevel(1500, -600); break;
-    default: setWindowLevel(std::max(range_[1] - range_[0], 1e-6), 0.5 * (range_[0] + range_[1])); break;
+    case 1:
+      setWindowLevel(1800, 400);
+      break;
+    case 2:
+      setWindowLevel(400, 40);
+      break;
+    case 3:
+      setWindowLevel(1500, -600);
+      break;
+    default:
+      setWindowLevel(std::max(range_[1] - range_[0], 1e-6), 0.5 * (range_[0] + range_[1]));
+      break;
   }
 }
 
@@ -106,8 +116,8 @@ void SliceViews::updateLabel() {
   double x[3] = {cursor_[0], cursor_[1], cursor_[2]};
   QString value;
   if (volume_->ComputeStructuredCoordinates(x, ijk, pcoords))
-    value = QString::number(volume_->GetScalarComponentAsDouble(views_[0]->sliceIndex(), views_[1]->sliceIndex(),
-                                                                views_[2]->sliceIndex(), 0));
+    value = QString::number(volume_->GetScalarComponentAsDouble(
+        views_[0]->sliceIndex(), views_[1]->sliceIndex(), views_[2]->sliceIndex(), 0));
   label_->setText(QString("%1  (%2, %3, %4) mm  value %5  W %6 L %7")
                       .arg(name_)
                       .arg(cursor_[0], 0, 'f', 1)

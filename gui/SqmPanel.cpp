@@ -32,9 +32,10 @@ std::vector<Parameter> sqmParameters() {
       MEDIAL_TOGGLE_PARAMETER(f, PairTriangles, "Quads at leaf tips",
                               "Join the triangles of leaf fans and cycle bands into quads (off: the paper's "
                               "triangle fans)"),
-      MEDIAL_TOGGLE_PARAMETER(f, SharpScaling, "Sharp scaling",
-                              "With subdivision: shrink the cone radius near sharp vertices by a Bézier curve "
-                              "(CESCG 2014, Tessellation)"),
+      MEDIAL_TOGGLE_PARAMETER(
+          f, SharpScaling, "Sharp scaling",
+          "With subdivision: shrink the cone radius near sharp vertices by a Bézier curve "
+          "(CESCG 2014, Tessellation)"),
       MEDIAL_REAL_PARAMETER(f, SharpMinimumScale, "Sharp scale", 2, "Radius factor at a sharp vertex"),
       MEDIAL_TOGGLE_PARAMETER(f, FoldRepair, "Repair folds",
                               "With subdivision: where the projection onto the cones makes faces cut each "
@@ -53,7 +54,8 @@ SqmPanel::SqmPanel(ObjectList* objects, QWidget* parent)
   subdivision_->setValue(defaults->GetSubdivisionLevels());
   subdivision_->setPageStep(1);
   subdivision_->setTickPosition(QSlider::TicksBelow);
-  subdivision_->setToolTip("Catmull-Clark levels, each projected onto the skeleton's cones (CESCG 2014, Tessellation, Fig. 9)");
+  subdivision_->setToolTip(
+      "Catmull-Clark levels, each projected onto the skeleton's cones (CESCG 2014, Tessellation, Fig. 9)");
   live_ = new QCheckBox("Update live", this);
   live_->setObjectName("live");
   live_->setChecked(true);
@@ -99,15 +101,17 @@ void SqmPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
   if (SceneObject* result = objects()->add(name, mesh)) objects()->setOpacity(result, opacity);
   const int merged = static_cast<vtkMedialSQM*>(filter)->GetMergedNodes();
   const int unfolded = static_cast<vtkMedialSQM*>(filter)->GetFoldRepairedVertices();
-  emit message(QString("SQM: %1 faces, %2 vertices, subdivision %3%4%5")
-                   .arg(mesh->GetNumberOfPolys())
-                   .arg(mesh->GetNumberOfPoints())
-                   .arg(subdivision_->value())
-                   .arg(merged > 0 ? QString("; %1 nodes inside a neighbouring branch node's sphere merged into it")
-                                         .arg(merged)
-                                   : QString())
-                   .arg(unfolded > 0 ? QString("; %1 refined vertices moved off their cones to undo folds").arg(unfolded)
-                                     : QString()));
+  emit message(
+      QString("SQM: %1 faces, %2 vertices, subdivision %3%4%5")
+          .arg(mesh->GetNumberOfPolys())
+          .arg(mesh->GetNumberOfPoints())
+          .arg(subdivision_->value())
+          .arg(merged > 0 ? QString("; %1 nodes inside a neighbouring branch node's sphere merged into it")
+                                .arg(merged)
+                          : QString())
+          .arg(unfolded > 0
+                   ? QString("; %1 refined vertices moved off their cones to undo folds").arg(unfolded)
+                   : QString()));
 }
 
 }  // namespace medial::gui

@@ -134,7 +134,8 @@ void VtkView::paintGL() {
   state->Push();
   const int* size = window_->GetSize();
   state->vtkglBindFramebuffer(kDrawFramebuffer, defaultFramebufferObject());
-  window_->BlitDisplayFramebuffer(0, 0, 0, size[0], size[1], 0, 0, size[0], size[1], kColorBufferBit, kNearest);
+  window_->BlitDisplayFramebuffer(0, 0, 0, size[0], size[1], 0, 0, size[0], size[1], kColorBufferBit,
+                                  kNearest);
   state->vtkglColorMask(false, false, false, true);
   state->vtkglClearColor(0, 0, 0, 1);
   state->vtkglClear(kColorBufferBit);
@@ -158,9 +159,9 @@ void VtkView::setDrawingMode(bool on) {
 
 void VtkView::setEventPosition(const QPointF& position, Qt::KeyboardModifiers modifiers, int repeat) {
   const qreal ratio = devicePixelRatioF();
-  interactor_->SetEventInformationFlipY(static_cast<int>(position.x() * ratio), static_cast<int>(position.y() * ratio),
-                                        (modifiers & Qt::ControlModifier) ? 1 : 0,
-                                        (modifiers & Qt::ShiftModifier) ? 1 : 0, 0, repeat);
+  interactor_->SetEventInformationFlipY(
+      static_cast<int>(position.x() * ratio), static_cast<int>(position.y() * ratio),
+      (modifiers & Qt::ControlModifier) ? 1 : 0, (modifiers & Qt::ShiftModifier) ? 1 : 0, 0, repeat);
   interactor_->SetAltKey((modifiers & Qt::AltModifier) ? 1 : 0);
 }
 
@@ -172,10 +173,17 @@ void VtkView::mousePressEvent(QMouseEvent* event) {
   }
   setEventPosition(event->position(), event->modifiers());
   switch (event->button()) {
-    case Qt::LeftButton: interactor_->InvokeEvent(vtkCommand::LeftButtonPressEvent); break;
-    case Qt::MiddleButton: interactor_->InvokeEvent(vtkCommand::MiddleButtonPressEvent); break;
-    case Qt::RightButton: interactor_->InvokeEvent(vtkCommand::RightButtonPressEvent); break;
-    default: break;
+    case Qt::LeftButton:
+      interactor_->InvokeEvent(vtkCommand::LeftButtonPressEvent);
+      break;
+    case Qt::MiddleButton:
+      interactor_->InvokeEvent(vtkCommand::MiddleButtonPressEvent);
+      break;
+    case Qt::RightButton:
+      interactor_->InvokeEvent(vtkCommand::RightButtonPressEvent);
+      break;
+    default:
+      break;
   }
 }
 
@@ -196,10 +204,17 @@ void VtkView::mouseReleaseEvent(QMouseEvent* event) {
     emit clicked(event->position(), event->modifiers());
   setEventPosition(event->position(), event->modifiers());
   switch (event->button()) {
-    case Qt::LeftButton: interactor_->InvokeEvent(vtkCommand::LeftButtonReleaseEvent); break;
-    case Qt::MiddleButton: interactor_->InvokeEvent(vtkCommand::MiddleButtonReleaseEvent); break;
-    case Qt::RightButton: interactor_->InvokeEvent(vtkCommand::RightButtonReleaseEvent); break;
-    default: break;
+    case Qt::LeftButton:
+      interactor_->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
+      break;
+    case Qt::MiddleButton:
+      interactor_->InvokeEvent(vtkCommand::MiddleButtonReleaseEvent);
+      break;
+    case Qt::RightButton:
+      interactor_->InvokeEvent(vtkCommand::RightButtonReleaseEvent);
+      break;
+    default:
+      break;
   }
 }
 
@@ -217,8 +232,10 @@ void VtkView::wheelEvent(QWheelEvent* event) {
   setEventPosition(event->position(), event->modifiers());
   // One VTK wheel step per notch (120 units); touchpads send smaller deltas, which add up.
   wheelRemainder_ += event->angleDelta().y();
-  for (; wheelRemainder_ >= 120; wheelRemainder_ -= 120) interactor_->InvokeEvent(vtkCommand::MouseWheelForwardEvent);
-  for (; wheelRemainder_ <= -120; wheelRemainder_ += 120) interactor_->InvokeEvent(vtkCommand::MouseWheelBackwardEvent);
+  for (; wheelRemainder_ >= 120; wheelRemainder_ -= 120)
+    interactor_->InvokeEvent(vtkCommand::MouseWheelForwardEvent);
+  for (; wheelRemainder_ <= -120; wheelRemainder_ += 120)
+    interactor_->InvokeEvent(vtkCommand::MouseWheelBackwardEvent);
   event->accept();
 }
 

@@ -67,9 +67,9 @@ class VtkView : public QOpenGLWidget {
   vtkNew<vtkGenericRenderWindowInteractor> interactor_;
   bool initialized_ = false;
   bool drawing_ = false;
-  QVector<QPointF> stroke_;     // the stroke being drawn
-  QPointF pressPosition_;       // where the left button went down (click detection)
-  int wheelRemainder_ = 0;  // angle delta not yet turned into wheel steps
+  QVector<QPointF> stroke_;  // the stroke being drawn
+  QPointF pressPosition_;    // where the left button went down (click detection)
+  int wheelRemainder_ = 0;   // angle delta not yet turned into wheel steps
 };
 
 }  // namespace medial::gui

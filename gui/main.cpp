@@ -27,8 +27,9 @@ int main(int argc, char** argv) {
   QCommandLineOption screenshot("screenshot", "Open FILEs, save the 3-D view to IMAGE and quit.", "IMAGE");
   QCommandLineOption size("size", "Window size for --screenshot (default 1024x768).", "WxH", "1024x768");
   QCommandLineOption whole("window", "With --screenshot: the whole window, not only the 3-D view.");
-  QCommandLineOption run("run", "Run a filter panel with its defaults on the last suitable object, before the "
-                                "screenshot (repeatable, in order): skeleton, sqm, centerline, sketch, iso-surface.",
+  QCommandLineOption run("run",
+                         "Run a filter panel with its defaults on the last suitable object, before the "
+                         "screenshot (repeatable, in order): skeleton, sqm, centerline, sketch, iso-surface.",
                          "FILTER");
   parser.addOption(run);
   parser.addOption(screenshot);

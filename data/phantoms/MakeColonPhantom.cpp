@@ -8,8 +8,8 @@
 // every 30 mm and four polyps (tissue spheres of radius 3 to 5 mm centred on the wall); Gaussian noise
 // (sigma 20 HU, fixed seed) over everything. 206 x 165 x 187 voxels of 0.7 x 0.7 x 1.0 mm. The true axis
 // goes to OUTPUT_DIR/axis.txt ("x y z radius" in mm per line) and the polyps to OUTPUT_DIR/polyps.txt
-// ("x y z radius"), so that tests can measure a centerline and find the polyps on the unfolded wall. Threshold -1024..-600 HU with the border air dropped gives the
-// colon alone (as in the TSK paper's CT data).
+// ("x y z radius"), so that tests can measure a centerline and find the polyps on the unfolded wall.
+// Threshold -1024..-600 HU with the border air dropped gives the colon alone (as in the TSK paper's CT data).
 #include <itkGDCMImageIO.h>
 #include <itkImage.h>
 #include <itkImageFileWriter.h>
@@ -39,9 +39,9 @@ constexpr double kSpacing[3] = {0.7, 0.7, 1.0};
 // least 1.9 times the colon's radius, so that the tube does not fold over itself at a flexure: there the
 // lumen's true centre would leave the axis and the axis would be no ground truth. (Found by a local search
 // from a hand-drawn colon: length 422 mm, 5..179 mm in z, inside the body's fat layer.)
-const std::vector<Point> kControl = {{72, 72, 12},  {71, 64, 18},  {65, 46, 38},  {68, 39, 52},  {79, 39, 62},
-                                     {102, 47, 70}, {112, 65, 91}, {109, 67, 147}, {94, 44, 166}, {65, 36, 168},
-                                     {38, 52, 164}, {31, 65, 141}, {39, 50, 86},  {48, 80, 41}};
+const std::vector<Point> kControl = {
+    {72, 72, 12},   {71, 64, 18},  {65, 46, 38},  {68, 39, 52},  {79, 39, 62},  {102, 47, 70}, {112, 65, 91},
+    {109, 67, 147}, {94, 44, 166}, {65, 36, 168}, {38, 52, 164}, {31, 65, 141}, {39, 50, 86},  {48, 80, 41}};
 
 Point catmullRom(const Point& p0, const Point& p1, const Point& p2, const Point& p3, double t) {
   Point p;
@@ -103,8 +103,10 @@ int main(int argc, char** argv) {
     for (int z = lo[2]; z <= hi[2]; ++z)
       for (int y = lo[1]; y <= hi[1]; ++y)
         for (int x = lo[0]; x <= hi[0]; ++x) {
-          const double dx = x * kSpacing[0] - a.p[0], dy = y * kSpacing[1] - a.p[1], dz = z * kSpacing[2] - a.p[2];
-          if (dx * dx + dy * dy + dz * dz <= a.radius * a.radius) colon[(size_t(z) * kSize[1] + y) * kSize[0] + x] = 1;
+          const double dx = x * kSpacing[0] - a.p[0], dy = y * kSpacing[1] - a.p[1],
+                       dz = z * kSpacing[2] - a.p[2];
+          if (dx * dx + dy * dy + dz * dz <= a.radius * a.radius)
+            colon[(size_t(z) * kSize[1] + y) * kSize[0] + x] = 1;
         }
   }
 
@@ -118,16 +120,22 @@ int main(int argc, char** argv) {
     const double t[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     // A direction perpendicular to the tangent: tangent x (x axis), or x (y axis) when nearly parallel.
     double side[3] = {0, t[2], -t[1]};
-    if (std::hypot(side[1], side[2]) < 0.3 * std::hypot(t[0], t[1], t[2])) side[0] = -t[2], side[1] = 0, side[2] = t[0];
+    if (std::hypot(side[1], side[2]) < 0.3 * std::hypot(t[0], t[1], t[2]))
+      side[0] = -t[2], side[1] = 0, side[2] = t[0];
     const double norm = std::hypot(side[0], side[1], side[2]) * (n % 2 ? -1.0 : 1.0);
-    const Point centre = {axis[i].p[0] + axis[i].radius * side[0] / norm, axis[i].p[1] + axis[i].radius * side[1] / norm,
+    const Point centre = {axis[i].p[0] + axis[i].radius * side[0] / norm,
+                          axis[i].p[1] + axis[i].radius * side[1] / norm,
                           axis[i].p[2] + axis[i].radius * side[2] / norm};
     polyps.push_back({centre, polypRadius[n]});
     const double r = polypRadius[n];
-    for (int z = std::max(0, int((centre[2] - r) / kSpacing[2])); z <= std::min(kSize[2] - 1, int((centre[2] + r) / kSpacing[2]) + 1); ++z)
-      for (int y = std::max(0, int((centre[1] - r) / kSpacing[1])); y <= std::min(kSize[1] - 1, int((centre[1] + r) / kSpacing[1]) + 1); ++y)
-        for (int x = std::max(0, int((centre[0] - r) / kSpacing[0])); x <= std::min(kSize[0] - 1, int((centre[0] + r) / kSpacing[0]) + 1); ++x)
-          if (std::hypot(x * kSpacing[0] - centre[0], y * kSpacing[1] - centre[1], z * kSpacing[2] - centre[2]) <= r)
+    for (int z = std::max(0, int((centre[2] - r) / kSpacing[2]));
+         z <= std::min(kSize[2] - 1, int((centre[2] + r) / kSpacing[2]) + 1); ++z)
+      for (int y = std::max(0, int((centre[1] - r) / kSpacing[1]));
+           y <= std::min(kSize[1] - 1, int((centre[1] + r) / kSpacing[1]) + 1); ++y)
+        for (int x = std::max(0, int((centre[0] - r) / kSpacing[0]));
+             x <= std::min(kSize[0] - 1, int((centre[0] + r) / kSpacing[0]) + 1); ++x)
+          if (std::hypot(x * kSpacing[0] - centre[0], y * kSpacing[1] - centre[1],
+                         z * kSpacing[2] - centre[2]) <= r)
             colon[(size_t(z) * kSize[1] + y) * kSize[0] + x] = 0;
   }
 
@@ -166,7 +174,9 @@ int main(int argc, char** argv) {
   for (int z = 0; z < kSize[2]; ++z) {
     owned.push_back(std::make_unique<itk::MetaDataDictionary>());
     itk::MetaDataDictionary& d = *owned.back();
-    auto set = [&d](const char* tag, const std::string& value) { itk::EncapsulateMetaData<std::string>(d, tag, value); };
+    auto set = [&d](const char* tag, const std::string& value) {
+      itk::EncapsulateMetaData<std::string>(d, tag, value);
+    };
     char text[128];
     set("0008|0060", "CT");
     set("0010|0010", "Colon^Phantom");
@@ -220,10 +230,12 @@ int main(int argc, char** argv) {
   }
   std::ofstream polypFile(out / "polyps.txt");
   polypFile << "# polyps: centre x y z and radius (mm)\n";
-  for (const AxisPoint& p : polyps) polypFile << p.p[0] << ' ' << p.p[1] << ' ' << p.p[2] << ' ' << p.radius << '\n';
+  for (const AxisPoint& p : polyps)
+    polypFile << p.p[0] << ' ' << p.p[1] << ' ' << p.p[2] << ' ' << p.radius << '\n';
   std::ofstream axisFile(out / "axis.txt");
   axisFile << "# true colon axis, rectum first: x y z radius (mm)\n";
-  for (const AxisPoint& a : axis) axisFile << a.p[0] << ' ' << a.p[1] << ' ' << a.p[2] << ' ' << a.radius << '\n';
+  for (const AxisPoint& a : axis)
+    axisFile << a.p[0] << ' ' << a.p[1] << ' ' << a.p[2] << ' ' << a.radius << '\n';
   std::printf("wrote %d DICOM slices, axis.txt and polyps.txt to %s%s%s\n", kSize[2], out.string().c_str(),
               argc == 3 ? " and " : "", argc == 3 ? argv[2] : "");
   return 0;

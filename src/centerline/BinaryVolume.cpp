@@ -52,7 +52,8 @@ void scanlineFill(const BinaryVolume& v, bool connect26, const Voxel& start, Fil
 // Labels the connected components of voxels where `member` holds (26- or 6-connected); returns the label
 // per voxel (-1 for non-members) and the size of each component.
 template <typename Member>
-std::vector<int> labelComponents(const BinaryVolume& v, Member member, bool connect26, std::vector<int64_t>& sizes) {
+std::vector<int> labelComponents(const BinaryVolume& v, Member member, bool connect26,
+                                 std::vector<int64_t>& sizes) {
   std::vector<int> label(size_t(v.voxelCount()), -1);
   int64_t start = 0;
   for (int z = 0; z < v.size[2]; ++z)
@@ -86,7 +87,8 @@ void forEachBorderVoxel(const BinaryVolume& v, F f) {
 
 int keepLargestComponent(BinaryVolume& volume) {
   std::vector<int64_t> sizes;
-  const auto label = labelComponents(volume, [&](int64_t i) { return volume.inside[size_t(i)] != 0; }, true, sizes);
+  const auto label = labelComponents(
+      volume, [&](int64_t i) { return volume.inside[size_t(i)] != 0; }, true, sizes);
   if (sizes.empty()) return 0;
   const int largest = int(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
   for (int64_t i = 0; i < volume.voxelCount(); ++i) volume.inside[size_t(i)] = label[size_t(i)] == largest;
@@ -133,7 +135,8 @@ std::array<int, 3> cropToStructure(BinaryVolume& volume, int margin) {
       for (int x = 0; x < volume.size[0]; ++x, ++i)
         if (volume.inside[size_t(i)]) {
           const int c[3] = {x, y, z};
-          for (int a = 0; a < 3; ++a) lo[size_t(a)] = std::min(lo[size_t(a)], c[a]), hi[size_t(a)] = std::max(hi[size_t(a)], c[a]);
+          for (int a = 0; a < 3; ++a)
+            lo[size_t(a)] = std::min(lo[size_t(a)], c[a]), hi[size_t(a)] = std::max(hi[size_t(a)], c[a]);
         }
   if (hi[0] < 0) return {0, 0, 0};  // empty: nothing to crop to
   std::array<int, 3> size{};

@@ -22,7 +22,8 @@ struct BinaryVolume {
   int64_t voxelCount() const { return int64_t(size[0]) * size[1] * size[2]; }
   int64_t index(int i, int j, int k) const { return i + int64_t(size[0]) * (j + int64_t(size[1]) * k); }
   std::array<int, 3> coordinates(int64_t index) const {
-    return {int(index % size[0]), int((index / size[0]) % size[1]), int(index / (int64_t(size[0]) * size[1]))};
+    return {int(index % size[0]), int((index / size[0]) % size[1]),
+            int(index / (int64_t(size[0]) * size[1]))};
   }
   bool contains(int i, int j, int k) const {
     return i >= 0 && j >= 0 && k >= 0 && i < size[0] && j < size[1] && k < size[2];

@@ -23,11 +23,13 @@ void forNeighbours(const BinaryVolume& v, int64_t voxel, Visit visit) {
 
 }  // namespace
 
-BranchVolumes splitBranches(const BinaryVolume& v, int64_t seed, int minimumLength, const std::vector<float>* centrality) {
+BranchVolumes splitBranches(const BinaryVolume& v, int64_t seed, int minimumLength,
+                            const std::vector<float>* centrality) {
   BranchVolumes result;
   if (seed < 0) seed = lowestVoxel(v);
   if (seed < 0 || seed >= v.voxelCount() || !v.inside[size_t(seed)]) {
-    result.error = seed < 0 ? "the structure is empty (no voxel selected)" : "the seed lies outside the structure";
+    result.error =
+        seed < 0 ? "the structure is empty (no voxel selected)" : "the seed lies outside the structure";
     return result;
   }
   std::vector<int> layer;
@@ -55,7 +57,8 @@ BranchVolumes splitBranches(const BinaryVolume& v, int64_t seed, int minimumLeng
             piece[size_t(next)] = id;
             queue.push_back(next);
           }
-          if (l > 0 && layer[size_t(next)] == l - 1 && pieceParent[size_t(id)] < 0) pieceParent[size_t(id)] = piece[size_t(next)];
+          if (l > 0 && layer[size_t(next)] == l - 1 && pieceParent[size_t(id)] < 0)
+            pieceParent[size_t(id)] = piece[size_t(next)];
         });
       }
     }
@@ -67,7 +70,8 @@ BranchVolumes splitBranches(const BinaryVolume& v, int64_t seed, int minimumLeng
   std::vector<std::vector<int>> children(static_cast<size_t>(count));
   for (int p = count - 1; p >= 0; --p)
     if (pieceParent[size_t(p)] >= 0) {
-      height[size_t(pieceParent[size_t(p)])] = std::max(height[size_t(pieceParent[size_t(p)])], height[size_t(p)] + 1);
+      height[size_t(pieceParent[size_t(p)])] =
+          std::max(height[size_t(pieceParent[size_t(p)])], height[size_t(p)] + 1);
       children[size_t(pieceParent[size_t(p)])].push_back(p);
     }
 
@@ -82,8 +86,10 @@ BranchVolumes splitBranches(const BinaryVolume& v, int64_t seed, int minimumLeng
   };
   for (int p = 0; p < count; ++p) {
     if (pieceParent[size_t(p)] < 0) {
-      if (p == piece[size_t(seed)]) branchOf[size_t(p)] = newBranch(-1, seed);
-      else continue;  // unreached from the seed cannot happen: layers only hold reached voxels
+      if (p == piece[size_t(seed)])
+        branchOf[size_t(p)] = newBranch(-1, seed);
+      else
+        continue;  // unreached from the seed cannot happen: layers only hold reached voxels
     }
     const int b = branchOf[size_t(p)];
     if (b < 0) continue;
@@ -98,14 +104,16 @@ BranchVolumes splitBranches(const BinaryVolume& v, int64_t seed, int minimumLeng
       const auto& first = pieceVoxels[size_t(c)];
       int64_t start = first.front();
       if (centrality)
-        start = *std::max_element(first.begin(), first.end(),
-                                  [&](int64_t x, int64_t y) { return (*centrality)[size_t(x)] < (*centrality)[size_t(y)]; });
+        start = *std::max_element(first.begin(), first.end(), [&](int64_t x, int64_t y) {
+          return (*centrality)[size_t(x)] < (*centrality)[size_t(y)];
+        });
       branchOf[size_t(c)] = newBranch(b, start);
     }
   }
   for (int p = 0; p < count; ++p)
     if (branchOf[size_t(p)] >= 0)
-      for (int64_t voxel : pieceVoxels[size_t(p)]) result.voxels[size_t(branchOf[size_t(p)])].push_back(voxel);
+      for (int64_t voxel : pieceVoxels[size_t(p)])
+        result.voxels[size_t(branchOf[size_t(p)])].push_back(voxel);
   return result;
 }
 

@@ -44,7 +44,7 @@ void distanceTransform1d(std::vector<double>& f, double h, std::vector<double>& 
     while (z[size_t(k) + 1] < q * h) ++k;
     const double d = (q - v[size_t(k)]) * h;
     out[size_t(q)] = std::isfinite(f[size_t(v[size_t(k)])]) ? d * d + f[size_t(v[size_t(k)])]
-                                                              : std::numeric_limits<double>::infinity();
+                                                            : std::numeric_limits<double>::infinity();
   }
 }
 
@@ -131,7 +131,8 @@ Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, 
     rule.used = true;
     rule.centre = meanT;
     rule.sigma = std::max(p.antecedentWidth * double(end - begin) / double(count - 1), 1e-9);
-    rule.slope = varT > 1e-18 ? Eigen::Vector3d((sumTX / m - meanT * sumX / m) / varT) : Eigen::Vector3d::Zero();
+    rule.slope =
+        varT > 1e-18 ? Eigen::Vector3d((sumTX / m - meanT * sumX / m) / varT) : Eigen::Vector3d::Zero();
     rule.intercept = sumX / m - rule.slope * meanT;
     begin = end;
   }
@@ -160,8 +161,10 @@ Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, 
   std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
   const float enough = 0.5f * sorted[sorted.size() / 2];
   int firstRule = 0, lastRule = n - 1;
-  while (firstRule < lastRule && (!rules[size_t(firstRule)].used || border[size_t(firstRule)] < enough)) ++firstRule;
-  while (lastRule > firstRule && (!rules[size_t(lastRule)].used || border[size_t(lastRule)] < enough)) --lastRule;
+  while (firstRule < lastRule && (!rules[size_t(firstRule)].used || border[size_t(firstRule)] < enough))
+    ++firstRule;
+  while (lastRule > firstRule && (!rules[size_t(lastRule)].used || border[size_t(lastRule)] < enough))
+    --lastRule;
   double first = rules[size_t(firstRule)].centre, last = rules[size_t(lastRule)].centre;
   if (!(last > first)) {
     first = 0;
@@ -194,7 +197,8 @@ Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, 
     result.points.push_back(point);
     result.arcLength.push_back(at);
     const double halfVoxel = 0.5 * volume.spacing.minCoeff();
-    result.radius.push_back(std::max(trilinear(volume, distance, volume.continuousIndex(point)) - halfVoxel, halfVoxel));
+    result.radius.push_back(
+        std::max(trilinear(volume, distance, volume.continuousIndex(point)) - halfVoxel, halfVoxel));
   }
   return result;
 }

@@ -41,7 +41,8 @@ struct Centerline {
   double length() const { return arcLength.empty() ? 0 : arcLength.back(); }
 };
 
-Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, const TskParameters& parameters = {});
+Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters,
+                   const TskParameters& parameters = {});
 
 // Euclidean distance (mm) from every voxel centre to the nearest voxel centre outside the structure (0
 // outside), exact, separable (Felzenszwalb and Huttenlocher), anisotropic spacing honoured.

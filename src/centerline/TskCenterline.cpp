@@ -96,7 +96,8 @@ std::vector<int> junctionPoints(const std::vector<Centerline>& branches, const s
     const Eigen::Vector3d& start = branches[b].points[0];
     size_t nearest = 0;
     for (size_t k = 1; k < parent.points.size(); ++k)
-      if ((parent.points[k] - start).squaredNorm() < (parent.points[nearest] - start).squaredNorm()) nearest = k;
+      if ((parent.points[k] - start).squaredNorm() < (parent.points[nearest] - start).squaredNorm())
+        nearest = k;
     junction[b] = int(nearest);
   }
   return junction;
@@ -115,16 +116,36 @@ BinaryVolume selectStructure(const ScalarVolume& volume, const TskCenterlinePara
   const int c = std::max(1, volume.components);
   using Type = ScalarVolume::Type;
   switch (volume.type) {
-    case Type::Int8: selected = selectVoxels(static_cast<const int8_t*>(volume.voxels), c, parameters, out); break;
-    case Type::UInt8: selected = selectVoxels(static_cast<const uint8_t*>(volume.voxels), c, parameters, out); break;
-    case Type::Int16: selected = selectVoxels(static_cast<const int16_t*>(volume.voxels), c, parameters, out); break;
-    case Type::UInt16: selected = selectVoxels(static_cast<const uint16_t*>(volume.voxels), c, parameters, out); break;
-    case Type::Int32: selected = selectVoxels(static_cast<const int32_t*>(volume.voxels), c, parameters, out); break;
-    case Type::UInt32: selected = selectVoxels(static_cast<const uint32_t*>(volume.voxels), c, parameters, out); break;
-    case Type::Int64: selected = selectVoxels(static_cast<const int64_t*>(volume.voxels), c, parameters, out); break;
-    case Type::UInt64: selected = selectVoxels(static_cast<const uint64_t*>(volume.voxels), c, parameters, out); break;
-    case Type::Float32: selected = selectVoxels(static_cast<const float*>(volume.voxels), c, parameters, out); break;
-    case Type::Float64: selected = selectVoxels(static_cast<const double*>(volume.voxels), c, parameters, out); break;
+    case Type::Int8:
+      selected = selectVoxels(static_cast<const int8_t*>(volume.voxels), c, parameters, out);
+      break;
+    case Type::UInt8:
+      selected = selectVoxels(static_cast<const uint8_t*>(volume.voxels), c, parameters, out);
+      break;
+    case Type::Int16:
+      selected = selectVoxels(static_cast<const int16_t*>(volume.voxels), c, parameters, out);
+      break;
+    case Type::UInt16:
+      selected = selectVoxels(static_cast<const uint16_t*>(volume.voxels), c, parameters, out);
+      break;
+    case Type::Int32:
+      selected = selectVoxels(static_cast<const int32_t*>(volume.voxels), c, parameters, out);
+      break;
+    case Type::UInt32:
+      selected = selectVoxels(static_cast<const uint32_t*>(volume.voxels), c, parameters, out);
+      break;
+    case Type::Int64:
+      selected = selectVoxels(static_cast<const int64_t*>(volume.voxels), c, parameters, out);
+      break;
+    case Type::UInt64:
+      selected = selectVoxels(static_cast<const uint64_t*>(volume.voxels), c, parameters, out);
+      break;
+    case Type::Float32:
+      selected = selectVoxels(static_cast<const float*>(volume.voxels), c, parameters, out);
+      break;
+    case Type::Float64:
+      selected = selectVoxels(static_cast<const double*>(volume.voxels), c, parameters, out);
+      break;
   }
   return out;
 }
@@ -134,8 +155,8 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
   TskCenterlineResult result;
   const auto& size = input.size;
   if (!input.voxels || size[0] < 2 || size[1] < 2 || size[2] < 2) {
-    result.error = "a 3-D volume is needed (got " + std::to_string(size[0]) + " x " + std::to_string(size[1]) +
-                   " x " + std::to_string(size[2]) + " voxels)";
+    result.error = "a 3-D volume is needed (got " + std::to_string(size[0]) + " x " +
+                   std::to_string(size[1]) + " x " + std::to_string(size[2]) + " voxels)";
     return result;
   }
   const auto report = [&progress](double fraction) { return !progress || progress(fraction); };
@@ -168,7 +189,8 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
   if (parameters.seed) {
     const Eigen::Vector3d& s = *parameters.seed;
     const Eigen::Vector3d index = volume.continuousIndex(s);
-    const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
+    const int i = int(std::lround(index.x())), j = int(std::lround(index.y())),
+              k = int(std::lround(index.z()));
     if (!volume.contains(i, j, k) || !volume.inside[size_t(volume.index(i, j, k))]) {
       result.error = "the seed (" + format(s.x()) + ", " + format(s.y()) + ", " + format(s.z()) +
                      ") mm lies outside the structure";
@@ -179,9 +201,11 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
 
   const bool followed =
       parameters.detectBranches
-          ? followBranches(volume, seed, parameters.tsk, parameters.minimumBranchLength,
-                           [&report](double f) { return report(0.1 + 0.8 * f); }, result)
-          : followTube(volume, seed, parameters.tsk, [&report](double f) { return report(0.1 + 0.7 * f); }, result);
+          ? followBranches(
+                volume, seed, parameters.tsk, parameters.minimumBranchLength,
+                [&report](double f) { return report(0.1 + 0.8 * f); }, result)
+          : followTube(
+                volume, seed, parameters.tsk, [&report](double f) { return report(0.1 + 0.7 * f); }, result);
   if (!followed) return result;
   if (result.branches.empty() || result.branches.front().points.size() < 2) {
     result.error = "the structure is too small for a centerline";

@@ -41,26 +41,26 @@ enum class BorderParts { Automatic, Drop, Keep };
 
 struct TskCenterlineParameters {
   VoxelSelection selection = VoxelSelection::NonZero;
-  double label = 1;                              // with VoxelSelection::Label
+  double label = 1;  // with VoxelSelection::Label
   // With VoxelSelection::Threshold, inclusive; by default the air in the colon on CT (the paper's use).
   double thresholdLow = -1024, thresholdHigh = -600;
   BorderParts borderParts = BorderParts::Automatic;
-  bool fillHoles = false;                        // cavities of the structure filled before phase I
-  std::optional<Eigen::Vector3d> seed;           // P0 in physical coordinates; else the lowest end
-  TskParameters tsk;                             // phase II and the centring passes
-  bool detectBranches = false;                   // one polyline per branch (Branches.h)
-  double minimumBranchLength = 0;                // mm; 0: twice the largest inscribed radius
-  bool computeSections = false;                  // sections along the first polyline (TubeSections.h)
+  bool fillHoles = false;               // cavities of the structure filled before phase I
+  std::optional<Eigen::Vector3d> seed;  // P0 in physical coordinates; else the lowest end
+  TskParameters tsk;                    // phase II and the centring passes
+  bool detectBranches = false;          // one polyline per branch (Branches.h)
+  double minimumBranchLength = 0;       // mm; 0: twice the largest inscribed radius
+  bool computeSections = false;         // sections along the first polyline (TubeSections.h)
   SectionParameters sections;
 };
 
 struct TskCenterlineResult {
-  std::vector<Centerline> branches;  // the first is the root (the only one without detectBranches)
-  std::vector<int> parent;           // per branch: the branch it leaves (-1: the root)
-  std::vector<int> junction;         // per branch: the point of its parent where it starts (-1: the root)
-  TubeSections sections;             // with computeSections
-  int64_t structureVoxels = 0;       // after selection and clean-up
-  int primitiveCenterlinePoints = 0; // phase I's chosen points, over all branches
+  std::vector<Centerline> branches;   // the first is the root (the only one without detectBranches)
+  std::vector<int> parent;            // per branch: the branch it leaves (-1: the root)
+  std::vector<int> junction;          // per branch: the point of its parent where it starts (-1: the root)
+  TubeSections sections;              // with computeSections
+  int64_t structureVoxels = 0;        // after selection and clean-up
+  int primitiveCenterlinePoints = 0;  // phase I's chosen points, over all branches
   std::string error;
   bool ok() const { return error.empty(); }
 };

@@ -21,7 +21,8 @@ double maskAt(const BinaryVolume& volume, const Eigen::Matrix3d& toIndex, const 
   for (int dk = 0; dk < 2; ++dk)
     for (int dj = 0; dj < 2; ++dj)
       for (int di = 0; di < 2; ++di) {
-        if (!volume.contains(i + di, j + dj, k + dk) || !volume.inside[size_t(volume.index(i + di, j + dj, k + dk))])
+        if (!volume.contains(i + di, j + dj, k + dk) ||
+            !volume.inside[size_t(volume.index(i + di, j + dj, k + dk))])
           continue;
         value += (di ? fx : 1 - fx) * (dj ? fy : 1 - fy) * (dk ? fz : 1 - fz);
       }
@@ -51,12 +52,13 @@ struct SectionRays {
         step(0.2 * volume.spacing.minCoeff()),
         limit(maxRadius > 0 ? maxRadius : 100.0 * volume.spacing.minCoeff()) {}
 
-  std::vector<double> walls(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, const Eigen::Vector3d& binormal,
-                            int rays) const {
+  std::vector<double> walls(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal,
+                            const Eigen::Vector3d& binormal, int rays) const {
     std::vector<double> wall(static_cast<size_t>(rays));
     for (int r = 0; r < rays; ++r) {
       const double angle = 2 * M_PI * r / rays;
-      wall[size_t(r)] = wallDistance(volume, toIndex, centre, std::cos(angle) * normal + std::sin(angle) * binormal, step, limit);
+      wall[size_t(r)] = wallDistance(volume, toIndex, centre,
+                                     std::cos(angle) * normal + std::sin(angle) * binormal, step, limit);
     }
     return wall;
   }
@@ -119,7 +121,8 @@ TubeSections tubeSections(const BinaryVolume& volume, const std::vector<Eigen::V
     // jitter overestimate the length by several per cent. Diameters and area use the raw distances.
     std::vector<double> smooth(static_cast<size_t>(rays));
     for (int r = 0; r < rays; ++r)
-      smooth[size_t(r)] = 0.25 * wall[size_t((r + rays - 1) % rays)] + 0.5 * wall[size_t(r)] + 0.25 * wall[size_t((r + 1) % rays)];
+      smooth[size_t(r)] = 0.25 * wall[size_t((r + rays - 1) % rays)] + 0.5 * wall[size_t(r)] +
+                          0.25 * wall[size_t((r + 1) % rays)];
     double minDiameter = std::numeric_limits<double>::infinity(), maxDiameter = 0, perimeter = 0, area = 0;
     const double sinStep = std::sin(2 * M_PI / rays), cosStep = std::cos(2 * M_PI / rays);
     for (int r = 0; r < rays; ++r) {
@@ -185,7 +188,8 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
       // An elongated section (an oblique cut through a bend, or a polyp reaching in) does not locate the
       // centre either: skip it when the longest ray exceeds the shortest by more than 1.8 times.
       double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-      for (const auto& w : wall) shortest = std::min(shortest, w.norm()), longest = std::max(longest, w.norm());
+      for (const auto& w : wall)
+        shortest = std::min(shortest, w.norm()), longest = std::max(longest, w.norm());
       if (longest > 1.8 * shortest) continue;
       radii.push_back(median);
       double area = 0;
@@ -213,8 +217,10 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
       const size_t first = previous == n ? 0 : previous + 1;
       for (size_t k = first; k < i; ++k) {
         if (previous == n && i == n) break;  // nothing measured at all
-        if (previous == n) offset[k] = offset[i];
-        else if (i == n) offset[k] = offset[previous];
+        if (previous == n)
+          offset[k] = offset[i];
+        else if (i == n)
+          offset[k] = offset[previous];
         else {
           const double span = arc[i] - arc[previous];
           const double t = span > 0 ? (arc[k] - arc[previous]) / span : 0.0;
@@ -226,7 +232,8 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
     // Within a radius of either end the sections cut the end caps: the moves fade out towards the ends.
     std::nth_element(radii.begin(), radii.begin() + long(radii.size() / 2), radii.end());
     const double typical = std::max(radii[radii.size() / 2], 1e-9);
-    for (size_t i = 0; i < n; ++i) offset[i] *= std::clamp(std::min(arc[i], arc.back() - arc[i]) / typical, 0.0, 1.0);
+    for (size_t i = 0; i < n; ++i)
+      offset[i] *= std::clamp(std::min(arc[i], arc.back() - arc[i]) / typical, 0.0, 1.0);
     // Moving average of the moves over +-smoothing mm of arc length.
     std::vector<Eigen::Vector3d> moved(axis);
     size_t lo = 0, hi = 0;

@@ -23,11 +23,11 @@ struct SectionParameters {
 
 struct TubeSections {
   int rays = 0;
-  std::vector<double> arcLength;              // mm, per section
-  std::vector<Eigen::Vector3d> center;        // on the axis
-  std::vector<Eigen::Vector3d> tangent;       // unit, along the axis
-  std::vector<Eigen::Vector3d> normal;        // unit, angle 0 of the rays (transported along the axis)
-  std::vector<std::vector<double>> wall;      // per section, per ray: distance axis-wall (mm); NaN: none
+  std::vector<double> arcLength;          // mm, per section
+  std::vector<Eigen::Vector3d> center;    // on the axis
+  std::vector<Eigen::Vector3d> tangent;   // unit, along the axis
+  std::vector<Eigen::Vector3d> normal;    // unit, angle 0 of the rays (transported along the axis)
+  std::vector<std::vector<double>> wall;  // per section, per ray: distance axis-wall (mm); NaN: none
   std::vector<double> minDiameter, maxDiameter, perimeter, area;  // mm, mm, mm, mm^2 (NaN if a ray failed)
 };
 

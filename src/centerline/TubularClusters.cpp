@@ -36,8 +36,10 @@ std::vector<float> sixDirectionBorderDistance(const BinaryVolume& v) {
         int nextOutside = length;
         for (int p = length - 1; p >= 0; --p) {
           const int64_t i = at(p);
-          if (!v.inside[size_t(i)]) nextOutside = p;
-          else distance[size_t(i)] = std::min(distance[size_t(i)], float((nextOutside - p) * step));
+          if (!v.inside[size_t(i)])
+            nextOutside = p;
+          else
+            distance[size_t(i)] = std::min(distance[size_t(i)], float((nextOutside - p) * step));
         }
       }
   }
@@ -46,7 +48,8 @@ std::vector<float> sixDirectionBorderDistance(const BinaryVolume& v) {
 
 }  // namespace
 
-std::vector<std::vector<int64_t>> manhattanLayers(const BinaryVolume& v, int64_t seed, std::vector<int>& layer) {
+std::vector<std::vector<int64_t>> manhattanLayers(const BinaryVolume& v, int64_t seed,
+                                                  std::vector<int>& layer) {
   layer.assign(size_t(v.voxelCount()), -1);
   std::vector<std::vector<int64_t>> layers;
   std::deque<int64_t> queue{seed};
@@ -104,7 +107,8 @@ int64_t lowestVoxel(const BinaryVolume& v) {
   return best;
 }
 
-TubularClusters structureTube(const BinaryVolume& v, int64_t seed, const std::function<bool(double)>& progress) {
+TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
+                              const std::function<bool(double)>& progress) {
   TubularClusters r;
   auto aborted = [&](double f) {
     if (progress && !progress(f)) {
@@ -131,8 +135,7 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed, const std::fu
     int fromSeed = 0, acrossEnds = 0;
     const int64_t f = farEnd(v, seed, fromSeed);
     const int64_t g = farEnd(v, f, acrossEnds);
-    if (double(fromSeed) < 0.9 * double(acrossEnds))
-      seed = v.physical(f).z() <= v.physical(g).z() ? f : g;
+    if (double(fromSeed) < 0.9 * double(acrossEnds)) seed = v.physical(f).z() <= v.physical(g).z() ? f : g;
   }
 
   // Step 2a: Manhattan layers grown inside the structure.
@@ -181,7 +184,8 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed, const std::fu
         for (int dx = -1; dx <= 1; ++dx) {
           if ((dx | dy | dz) == 0 || !v.contains(c[0] + dx, c[1] + dy, c[2] + dz)) continue;
           const int64_t other = v.index(c[0] + dx, c[1] + dy, c[2] + dz);
-          if (r.layer[size_t(other)] >= 0) best = std::min(best, (v.physical(other) - vertex[size_t(j)]).norm());
+          if (r.layer[size_t(other)] >= 0)
+            best = std::min(best, (v.physical(other) - vertex[size_t(j)]).norm());
         }
     if (std::isfinite(best)) nearest[size_t(j)] = best;
   }
@@ -193,7 +197,8 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed, const std::fu
   std::vector<Member> members;
   members.reserve(size_t(reached));
   for (int l = 0; l < int(layers.size()); ++l) {
-    const int after = int(std::lower_bound(r.primitiveLayer.begin(), r.primitiveLayer.end(), l) - r.primitiveLayer.begin());
+    const int after =
+        int(std::lower_bound(r.primitiveLayer.begin(), r.primitiveLayer.end(), l) - r.primitiveLayer.begin());
     const int first = std::max(0, after - 2), lastCandidate = std::min(n - 1, after + 1);
     for (int64_t voxel : layers[size_t(l)]) {
       const Eigen::Vector3d p = v.physical(voxel);

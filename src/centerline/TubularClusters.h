@@ -30,13 +30,13 @@
 namespace medial {
 
 struct TubularClusters {
-  std::vector<int> layer;                  // per voxel; -1 outside or unreached from P0
-  std::vector<float> borderDistance;       // per voxel (mm); 0 outside
-  std::vector<int64_t> primitive;          // the chosen points P_0 ... P_n (voxel indices)
-  std::vector<int> primitiveLayer;         // the layer of each chosen point
-  std::vector<int64_t> orderedVoxels;      // every reached voxel, in the total order of step 5
-  std::vector<int> orderedCluster;         // the cluster (vertex index) of each ordered voxel
-  int64_t unreachedVoxels = 0;             // structure voxels not 6-connected to P0
+  std::vector<int> layer;              // per voxel; -1 outside or unreached from P0
+  std::vector<float> borderDistance;   // per voxel (mm); 0 outside
+  std::vector<int64_t> primitive;      // the chosen points P_0 ... P_n (voxel indices)
+  std::vector<int> primitiveLayer;     // the layer of each chosen point
+  std::vector<int64_t> orderedVoxels;  // every reached voxel, in the total order of step 5
+  std::vector<int> orderedCluster;     // the cluster (vertex index) of each ordered voxel
+  int64_t unreachedVoxels = 0;         // structure voxels not 6-connected to P0
   std::string error;
   bool ok() const { return error.empty(); }
 };
@@ -47,7 +47,8 @@ TubularClusters structureTube(const BinaryVolume& volume, int64_t seed = -1,
 
 // Step 2a on its own: the Manhattan layers from `seed` (6-connected breadth-first steps inside the
 // structure): the voxels of each layer; `layer` gets every voxel's layer (-1 where unreached).
-std::vector<std::vector<int64_t>> manhattanLayers(const BinaryVolume& volume, int64_t seed, std::vector<int>& layer);
+std::vector<std::vector<int64_t>> manhattanLayers(const BinaryVolume& volume, int64_t seed,
+                                                  std::vector<int>& layer);
 
 // The structure's voxel of lowest physical z (-1 when it is empty).
 int64_t lowestVoxel(const BinaryVolume& volume);

@@ -17,8 +17,14 @@ namespace {
 class CollapsibleComplex {
  public:
   CollapsibleComplex(const Vertices& positions, const Faces& faces)
-      : n_(int(positions.rows())), position_(n_), alive_(n_, true), version_(n_, 0), owner_(n_),
-        neighbours_(n_), vertexFaces_(n_), quadric_(n_, Eigen::Matrix4d::Zero()) {
+      : n_(int(positions.rows())),
+        position_(n_),
+        alive_(n_, true),
+        version_(n_, 0),
+        owner_(n_),
+        neighbours_(n_),
+        vertexFaces_(n_),
+        quadric_(n_, Eigen::Matrix4d::Zero()) {
     for (int i = 0; i < n_; ++i) {
       position_[i] = positions.row(i).transpose();
       owner_[i] = i;
@@ -169,8 +175,8 @@ bool isCurrent(const CollapsibleComplex& complex, const Candidate& c) {
 // Runs collapses from a queue until it empties or no face is left; key(i, j) ranks collapsing i into j,
 // accept(candidate) may reject a popped current candidate (and stops the pass when it returns false).
 template <class Key, class Accept>
-int runCollapses(CollapsibleComplex& complex, Key key, Accept accept, const std::function<bool(double)>& progress,
-                 bool& aborted) {
+int runCollapses(CollapsibleComplex& complex, Key key, Accept accept,
+                 const std::function<bool(double)>& progress, bool& aborted) {
   CandidateQueue queue;
   auto pushAround = [&](int v) {
     for (int k : complex.neighbours(v)) {
@@ -199,7 +205,8 @@ int runCollapses(CollapsibleComplex& complex, Key key, Accept accept, const std:
 
 }  // namespace
 
-CurveSkeleton collapseToCurveSkeleton(const Vertices& contracted, const Faces& faces, const SurgeryParameters& p,
+CurveSkeleton collapseToCurveSkeleton(const Vertices& contracted, const Faces& faces,
+                                      const SurgeryParameters& p,
                                       const std::function<bool(double)>& progress) {
   CurveSkeleton skeleton;
   CollapsibleComplex complex(contracted, faces);
@@ -215,7 +222,8 @@ CurveSkeleton collapseToCurveSkeleton(const Vertices& contracted, const Faces& f
 
   // 2. Cost-ranked collapses until no triangle is left.
   if (!aborted)
-    skeleton.costCollapses = runCollapses(complex, total, [](const Candidate&) { return true; }, progress, aborted);
+    skeleton.costCollapses = runCollapses(
+        complex, total, [](const Candidate&) { return true; }, progress, aborted);
   if (aborted) return {};
   skeleton.remainingFaces = complex.aliveFaces();
 

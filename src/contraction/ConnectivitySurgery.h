@@ -30,7 +30,7 @@ struct SurgeryParameters {
 };
 
 struct CurveSkeleton {
-  Vertices nodes;                         // node positions
+  Vertices nodes;                          // node positions
   std::vector<std::pair<int, int>> edges;  // node index pairs
   std::vector<int> vertexToNode;           // for every mesh vertex, the node that absorbed it (-1: unused)
   int prePassCollapses = 0, costCollapses = 0;

@@ -22,7 +22,9 @@ struct Box {
       high = high.cwiseMax(x);
     }
   }
-  bool overlaps(const Box& o) const { return (low.array() <= o.high.array()).all() && (o.low.array() <= high.array()).all(); }
+  bool overlaps(const Box& o) const {
+    return (low.array() <= o.high.array()).all() && (o.low.array() <= high.array()).all();
+  }
 };
 
 // Curves in disjoint boxes are split by a plane, so they do not link.
@@ -39,7 +41,8 @@ Normals meshNormals(const TriangleMesh& mesh) {
   Normals n{Vertices::Zero(mesh.vertices.rows(), 3), Vertices::Zero(mesh.faces.rows(), 3),
             std::vector<std::vector<int>>(size_t(mesh.vertices.rows()))};
   for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
-    const Eigen::RowVector3d p0 = mesh.vertices.row(mesh.faces(f, 0)), p1 = mesh.vertices.row(mesh.faces(f, 1)),
+    const Eigen::RowVector3d p0 = mesh.vertices.row(mesh.faces(f, 0)),
+                             p1 = mesh.vertices.row(mesh.faces(f, 1)),
                              p2 = mesh.vertices.row(mesh.faces(f, 2));
     const Eigen::RowVector3d areaNormal = (p1 - p0).cross(p2 - p0);  // twice the area
     n.face.row(f) = areaNormal.norm() > 0 ? Eigen::RowVector3d(areaNormal.normalized()) : areaNormal;
@@ -54,8 +57,8 @@ Normals meshNormals(const TriangleMesh& mesh) {
 }
 
 struct PushedLoop {
-  Polygon out, in, deep;  // pushed out, in (as far as out), and deep into the material
-  double length = 0;      // of the loop
+  Polygon out, in, deep;                  // pushed out, in (as far as out), and deep into the material
+  double length = 0;                      // of the loop
   bool inside = true, deepInside = true;  // every pushed-in (deep) point found inside the mesh
 };
 
@@ -71,15 +74,19 @@ PushedLoop pushLoop(const std::vector<int>& loop, const TriangleMesh& mesh, cons
   const size_t n = loop.size();
   for (size_t i = 0; i < n; ++i) {
     const int vertex = loop[i];
-    const double edge = std::min((mesh.vertices.row(loop[(i + 1) % n]) - mesh.vertices.row(vertex)).norm(),
-                                 (mesh.vertices.row(loop[(i + n - 1) % n]) - mesh.vertices.row(vertex)).norm());
+    const double edge =
+        std::min((mesh.vertices.row(loop[(i + 1) % n]) - mesh.vertices.row(vertex)).norm(),
+                 (mesh.vertices.row(loop[(i + n - 1) % n]) - mesh.vertices.row(vertex)).norm());
     std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> starts{
         {mesh.vertices.row(vertex).transpose(), normals.vertex.row(vertex).transpose()}};
     for (int f : normals.facesAround[size_t(vertex)])
       starts.emplace_back(mesh.vertices.row(vertex).transpose(), normals.face.row(f).transpose());
     for (int f : normals.facesAround[size_t(vertex)]) {
-      const Eigen::Vector3d centroid = (mesh.vertices.row(mesh.faces(f, 0)) + mesh.vertices.row(mesh.faces(f, 1)) +
-                                        mesh.vertices.row(mesh.faces(f, 2))).transpose() / 3;
+      const Eigen::Vector3d centroid =
+          (mesh.vertices.row(mesh.faces(f, 0)) + mesh.vertices.row(mesh.faces(f, 1)) +
+           mesh.vertices.row(mesh.faces(f, 2)))
+              .transpose() /
+          3;
       starts.emplace_back(centroid, normals.face.row(f).transpose());
     }
     Eigen::Vector3d p = starts.front().first, normal = starts.front().second;
@@ -87,10 +94,12 @@ PushedLoop pushLoop(const std::vector<int>& loop, const TriangleMesh& mesh, cons
     bool found = false;
     for (size_t k = 0; k < 2 * starts.size() && !found; ++k) {
       p = starts[k / 2].first;
-      normal = k % 2 == 0 ? starts[k / 2].second : Eigen::Vector3d(-starts[k / 2].second);  // either orientation
+      normal =
+          k % 2 == 0 ? starts[k / 2].second : Eigen::Vector3d(-starts[k / 2].second);  // either orientation
       const double start = 1e-3 * edge;
       thickness = start + inside.distanceAlongRay(p - start * normal, -normal);
-      found = inside.contains(p - std::min(0.1 * edge, 0.5 * (std::isfinite(thickness) ? thickness : edge)) * normal);
+      found = inside.contains(p - std::min(0.1 * edge, 0.5 * (std::isfinite(thickness) ? thickness : edge)) *
+                                      normal);
     }
     pushed.out.push_back(p + 0.1 * edge * normal);
     auto pushIn = [&](double depth, bool& allInside) {
@@ -140,7 +149,8 @@ std::vector<Polygon> fundamentalCycles(const CurveSkeleton& skeleton) {
     const auto [a, b] = skeleton.edges[e];
     if (inTree[e] || a == b) continue;
     Polygon cycle;
-    for (int node : loopThroughTree(a, b, parent, depth)) cycle.push_back(skeleton.nodes.row(node).transpose());
+    for (int node : loopThroughTree(a, b, parent, depth))
+      cycle.push_back(skeleton.nodes.row(node).transpose());
     cycles.push_back(std::move(cycle));
   }
   return cycles;
@@ -179,7 +189,8 @@ void tieToSkeleton(CurveSkeleton& skeleton, int first, int last, const InsideTes
   };
   std::vector<Pair> pairs;
   for (int a = first; a < last; ++a)
-    for (int b = 0; b < first; ++b) pairs.push_back({(skeleton.nodes.row(a) - skeleton.nodes.row(b)).norm(), a, b});
+    for (int b = 0; b < first; ++b)
+      pairs.push_back({(skeleton.nodes.row(a) - skeleton.nodes.row(b)).norm(), a, b});
   if (pairs.empty()) return;
   std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.distance < y.distance; });
   for (const Pair& p : pairs)
@@ -205,8 +216,10 @@ double linkingNumber(const Polygon& a, const Polygon& b) {
       bool degenerate = false;
       for (auto& v : n) {
         const double norm = v.norm();
-        if (norm == 0) degenerate = true;
-        else v /= norm;
+        if (norm == 0)
+          degenerate = true;
+        else
+          v /= norm;
       }
       if (degenerate) continue;  // the segments are coplanar with a point of the other: no solid angle
       double omega = 0;
@@ -218,7 +231,8 @@ double linkingNumber(const Polygon& a, const Polygon& b) {
   return total / (4 * M_PI);
 }
 
-CycleRepairResult restoreMissingCycles(CurveSkeleton& skeleton, const TriangleMesh& mesh, const InsideTest& inside) {
+CycleRepairResult restoreMissingCycles(CurveSkeleton& skeleton, const TriangleMesh& mesh,
+                                       const InsideTest& inside) {
   CycleRepairResult result;
   result.genus = closedGenus(mesh);
   const std::vector<Polygon> skeletonCycles = fundamentalCycles(skeleton);
@@ -236,7 +250,8 @@ CycleRepairResult restoreMissingCycles(CurveSkeleton& skeleton, const TriangleMe
   auto row = [&](const Polygon& curve) {
     const Box box(curve);
     std::vector<double> r;
-    for (size_t j = 0; j < pushed.size(); ++j) r.push_back(std::round(linkingNumberOrZero(curve, box, pushed[j].out, outBoxes[j])));
+    for (size_t j = 0; j < pushed.size(); ++j)
+      r.push_back(std::round(linkingNumberOrZero(curve, box, pushed[j].out, outBoxes[j])));
     return r;
   };
   RankTracker classes(pushed.size());
@@ -244,7 +259,8 @@ CycleRepairResult restoreMissingCycles(CurveSkeleton& skeleton, const TriangleMe
 
   std::vector<size_t> order(pushed.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return pushed[x].length < pushed[y].length; });
+  std::sort(order.begin(), order.end(),
+            [&](size_t x, size_t y) { return pushed[x].length < pushed[y].length; });
   for (size_t k : order) {
     // Never more cycles than the genus: a skeleton cycle that links no pushed-out loop (one that leaves
     // the mesh, or a knot of surgery around nothing) still counts.
@@ -252,7 +268,8 @@ CycleRepairResult restoreMissingCycles(CurveSkeleton& skeleton, const TriangleMe
     const std::vector<double> inRow = row(pushed[k].in);
     if (!pushed[k].inside || !classes.add(inRow)) continue;
     // The deep loop where it keeps the class (a tunnel wider than the material is thick).
-    const Polygon& cycle = pushed[k].deepInside && row(pushed[k].deep) == inRow ? pushed[k].deep : pushed[k].in;
+    const Polygon& cycle =
+        pushed[k].deepInside && row(pushed[k].deep) == inRow ? pushed[k].deep : pushed[k].in;
     const int first = int(skeleton.nodes.rows()), count = int(cycle.size());
     skeleton.nodes.conservativeResize(first + count, 3);
     for (int i = 0; i < count; ++i) {

@@ -29,7 +29,8 @@ struct CycleRepairResult {
   int cyclesAdded = 0;
 };
 
-CycleRepairResult restoreMissingCycles(CurveSkeleton& skeleton, const TriangleMesh& mesh, const InsideTest& inside);
+CycleRepairResult restoreMissingCycles(CurveSkeleton& skeleton, const TriangleMesh& mesh,
+                                       const InsideTest& inside);
 
 // Gauss linking number of two closed polygons (the last point joins the first), from the exact solid
 // angle of each pair of segments (Klenin & Langowski 2000); an integer for disjoint curves, up to rounding.

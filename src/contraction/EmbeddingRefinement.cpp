@@ -95,8 +95,8 @@ int pushNodesInside(CurveSkeleton& skeleton, const InsideTest& inside) {
   return moved;
 }
 
-int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVertices, const InsideTest& inside,
-                             int maxDepth) {
+int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVertices,
+                             const InsideTest& inside, int maxDepth) {
   std::vector<std::vector<int>> absorbed(size_t(skeleton.nodes.rows()));
   for (size_t v = 0; v < skeleton.vertexToNode.size(); ++v)
     if (skeleton.vertexToNode[v] >= 0) absorbed[size_t(skeleton.vertexToNode[v])].push_back(int(v));
@@ -108,7 +108,8 @@ int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVe
   std::vector<std::pair<int, int>> edges;
   std::vector<Eigen::Vector3d> added;
   auto position = [&](int k) -> Eigen::Vector3d {
-    return k < skeleton.nodes.rows() ? Eigen::Vector3d(skeleton.nodes.row(k).transpose()) : added[size_t(k - skeleton.nodes.rows())];
+    return k < skeleton.nodes.rows() ? Eigen::Vector3d(skeleton.nodes.row(k).transpose())
+                                     : added[size_t(k - skeleton.nodes.rows())];
   };
   while (!pending.empty()) {
     const Pending e = pending.back();
@@ -129,7 +130,8 @@ int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVe
         sum += p;
       }
     Eigen::Vector3d centroid = middle.empty() ? pa : Eigen::Vector3d(sum / double(middle.size()));
-    if ((middle.size() < 3 || !inside.contains(centroid)) && !insidePointNearMiddle(pa, pb, inside, centroid)) {
+    if ((middle.size() < 3 || !inside.contains(centroid)) &&
+        !insidePointNearMiddle(pa, pb, inside, centroid)) {
       edges.emplace_back(e.a, e.b);
       continue;
     }
@@ -138,9 +140,10 @@ int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVe
     absorbed.emplace_back(middle);
     for (int end : {e.a, e.b}) {
       auto& list = absorbed[size_t(end)];
-      list.erase(std::remove_if(list.begin(), list.end(),
-                                [&](int v) { return std::find(middle.begin(), middle.end(), v) != middle.end(); }),
-                 list.end());
+      list.erase(
+          std::remove_if(list.begin(), list.end(),
+                         [&](int v) { return std::find(middle.begin(), middle.end(), v) != middle.end(); }),
+          list.end());
     }
     pending.push_back({e.a, k, e.depth + 1});
     pending.push_back({k, e.b, e.depth + 1});
@@ -148,7 +151,8 @@ int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVe
   if (added.empty()) return 0;
   const Eigen::Index first = skeleton.nodes.rows();
   skeleton.nodes.conservativeResize(first + Eigen::Index(added.size()), 3);
-  for (size_t k = 0; k < added.size(); ++k) skeleton.nodes.row(first + Eigen::Index(k)) = added[k].transpose();
+  for (size_t k = 0; k < added.size(); ++k)
+    skeleton.nodes.row(first + Eigen::Index(k)) = added[k].transpose();
   skeleton.edges = std::move(edges);
   for (size_t node = 0; node < absorbed.size(); ++node)
     for (int v : absorbed[node]) skeleton.vertexToNode[size_t(v)] = int(node);

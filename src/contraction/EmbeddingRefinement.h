@@ -23,7 +23,7 @@ int pushNodesInside(CurveSkeleton& skeleton, const InsideTest& inside);
 // two ends absorbed that project onto the middle half of the edge, when that centroid lies inside; those
 // vertices move to the new node. The halves are split again while they still leave the mesh, up to
 // `maxDepth` times. Returns the number of nodes added.
-int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVertices, const InsideTest& inside,
-                             int maxDepth = 5);
+int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVertices,
+                             const InsideTest& inside, int maxDepth = 5);
 
 }  // namespace medial

@@ -19,7 +19,8 @@ struct NearestBones {
   Eigen::Vector3d closestPoint;  // on the first of those bones
 };
 
-Eigen::Vector3d closestPointOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+Eigen::Vector3d closestPointOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                      const Eigen::Vector3d& b) {
   const Eigen::Vector3d ab = b - a;
   const double length2 = ab.squaredNorm();
   const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
@@ -30,7 +31,8 @@ NearestBones nearestBones(const Eigen::Vector3d& p, const Skeleton& skeleton) {
   NearestBones nearest;
   for (int i = 0; i < skeleton.edgeCount(); ++i) {
     const auto& e = skeleton.edges[size_t(i)];
-    const Eigen::Vector3d q = closestPointOnSegment(p, skeleton.nodes[size_t(e[0])], skeleton.nodes[size_t(e[1])]);
+    const Eigen::Vector3d q =
+        closestPointOnSegment(p, skeleton.nodes[size_t(e[0])], skeleton.nodes[size_t(e[1])]);
     const double d = (q - p).norm();
     if (d < nearest.distance * (1 - 1e-6)) {
       nearest.bones.assign(1, i);

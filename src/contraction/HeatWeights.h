@@ -42,9 +42,9 @@ struct HeatWeightParameters {
 struct HeatWeightResult {
   // weights(j, i): influence of bone i (skeleton edge i) on vertex j; each row sums to 1.
   Eigen::MatrixXd weights;
-  int invisibleVertices = 0;      // vertices no nearest bone sees (H_jj = 0: weight by diffusion only)
-  int componentsWithoutSight = 0; // mesh components handled by the visibility fallback
-  std::string error;              // non-empty on failure (no bones, solver breakdown, aborted)
+  int invisibleVertices = 0;       // vertices no nearest bone sees (H_jj = 0: weight by diffusion only)
+  int componentsWithoutSight = 0;  // mesh components handled by the visibility fallback
+  std::string error;               // non-empty on failure (no bones, solver breakdown, aborted)
   bool ok() const { return error.empty(); }
 };
 

@@ -11,10 +11,9 @@ namespace medial {
 
 namespace {
 
-
 // W_L^2 L^T L + diag(W_H^2): the normal matrix of eq. (5). L is symmetric, so L^T L = L L.
-Eigen::SparseMatrix<double> normalMatrix(const Eigen::SparseMatrix<double>& laplacian, double contractionWeight,
-                                         const Eigen::VectorXd& attraction) {
+Eigen::SparseMatrix<double> normalMatrix(const Eigen::SparseMatrix<double>& laplacian,
+                                         double contractionWeight, const Eigen::VectorXd& attraction) {
   Eigen::SparseMatrix<double> matrix = (laplacian * laplacian) * (contractionWeight * contractionWeight);
   for (Eigen::Index i = 0; i < matrix.rows(); ++i) matrix.coeffRef(i, i) += attraction[i] * attraction[i];
   return matrix;
@@ -32,7 +31,8 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
   }
 
   // Normalized frame (see the header): centre of the bounding box at the origin, diagonal frameDiagonal.
-  const Eigen::RowVector3d centre = 0.5 * (mesh.vertices.colwise().maxCoeff() + mesh.vertices.colwise().minCoeff());
+  const Eigen::RowVector3d centre =
+      0.5 * (mesh.vertices.colwise().maxCoeff() + mesh.vertices.colwise().minCoeff());
   const double diagonal = boundingBoxDiagonal(mesh.vertices) / p.frameDiagonal;
   if (!(diagonal > 0) || !std::isfinite(diagonal)) {
     result.error = "the mesh has no extent (all vertices coincide) or non-finite coordinates";
@@ -62,7 +62,8 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
     if (iteration > 0) {
       const Eigen::MatrixX3d current = faceCotangents(positions, mesh.faces, minAngle);
       for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
-        if (!frozen[size_t(f)] && areas[f] < p.degenerateFaceFraction * initialFaceAreas[f]) frozen[size_t(f)] = true;
+        if (!frozen[size_t(f)] && areas[f] < p.degenerateFaceFraction * initialFaceAreas[f])
+          frozen[size_t(f)] = true;
         if (!frozen[size_t(f)]) cotangents.row(f) = current.row(f);
       }
     }
@@ -100,7 +101,8 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
 
     const double area = areas.sum();
     result.areaRatio = area / initialArea;
-    result.volumeRatio = initialVolume > 0 ? std::abs(enclosedVolume(positions, mesh.faces)) / initialVolume : 0;
+    result.volumeRatio =
+        initialVolume > 0 ? std::abs(enclosedVolume(positions, mesh.faces)) / initialVolume : 0;
     if (progress && !progress(double(result.iterations) / p.maxIterations)) {
       result.error = "aborted";
       return result;

@@ -12,10 +12,12 @@ std::vector<double> nodeRadii(const CurveSkeleton& skeleton, const Vertices& ori
   for (size_t v = 0; v < skeleton.vertexToNode.size(); ++v) {
     const int node = skeleton.vertexToNode[v];
     if (node >= 0)
-      distances[size_t(node)].push_back((originalVertices.row(Eigen::Index(v)) - skeleton.nodes.row(node)).norm());
+      distances[size_t(node)].push_back(
+          (originalVertices.row(Eigen::Index(v)) - skeleton.nodes.row(node)).norm());
   }
   // A floor keeps radii positive (docs/ARCHITECTURE.md §4) for a node that sits on the surface.
-  const double floor = 1e-6 * (originalVertices.colwise().maxCoeff() - originalVertices.colwise().minCoeff()).norm();
+  const double floor =
+      1e-6 * (originalVertices.colwise().maxCoeff() - originalVertices.colwise().minCoeff()).norm();
   std::vector<double> radii(nodeCount);
   for (size_t k = 0; k < nodeCount; ++k) {
     auto& d = distances[k];

@@ -56,7 +56,8 @@ bool staysInside(const Graph& g, const InsideTest& inside, const Eigen::Vector3d
 int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* inside) {
   const int n = int(skeleton.nodes.rows());
   Graph g{std::vector<Eigen::Vector3d>(size_t(n)), std::vector<std::vector<int>>(size_t(n)),
-          std::vector<bool>(size_t(n), true), std::vector<unsigned>(size_t(n), 0), std::vector<int>(size_t(n))};
+          std::vector<bool>(size_t(n), true), std::vector<unsigned>(size_t(n), 0),
+          std::vector<int>(size_t(n))};
   for (int i = 0; i < n; ++i) {
     g.position[size_t(i)] = skeleton.nodes.row(i).transpose();
     g.owner[size_t(i)] = i;
@@ -68,7 +69,9 @@ int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* insi
     }
 
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
-  auto push = [&](int a, int b) { queue.push({g.length(a, b), a, b, g.version[size_t(a)], g.version[size_t(b)]}); };
+  auto push = [&](int a, int b) {
+    queue.push({g.length(a, b), a, b, g.version[size_t(a)], g.version[size_t(b)]});
+  };
   for (int a = 0; a < n; ++a)
     for (int b : g.neighbours[size_t(a)])
       if (a < b) push(a, b);
@@ -81,7 +84,7 @@ int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* insi
         g.version[size_t(c.b)] != c.versionB || !g.adjacent(c.a, c.b))
       continue;
     const int sa = g.significance(c.a), sb = g.significance(c.b);
-    if (sa == 2 && sb == 2) continue;       // a segment on its own
+    if (sa == 2 && sb == 2) continue;          // a segment on its own
     if (g.shareNeighbour(c.a, c.b)) continue;  // would fold a cycle into a double edge
     // Keep the more significant end: a tip or a junction stays where it is. A leaf on a branch node is
     // the one case where the branch node is kept: the side branch, the shortest edge left, goes.
@@ -90,7 +93,8 @@ int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* insi
     if (sb == 2 && sa == 1) keep = c.a;
     const int drop = keep == c.a ? c.b : c.a;
     const Eigen::Vector3d kept =
-        sa == sb ? Eigen::Vector3d(0.5 * (g.position[size_t(c.a)] + g.position[size_t(c.b)])) : g.position[size_t(keep)];
+        sa == sb ? Eigen::Vector3d(0.5 * (g.position[size_t(c.a)] + g.position[size_t(c.b)]))
+                 : g.position[size_t(keep)];
     if (inside && !staysInside(g, *inside, kept, keep, drop)) continue;
     g.position[size_t(keep)] = kept;
     for (int k : g.neighbours[size_t(drop)]) {

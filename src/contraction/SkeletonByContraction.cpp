@@ -14,7 +14,6 @@ namespace medial {
 
 namespace {
 
-
 // The root: the node of highest degree, ties broken by the number of vertices it absorbed.
 int chooseRoot(const Skeleton& skeleton, const std::vector<int>& vertexToNode) {
   if (skeleton.nodes.empty()) return -1;
@@ -82,7 +81,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   // III.B connectivity surgery.
   start.restart();
   CurveSkeleton curve = collapseToCurveSkeleton(contraction.contracted, coarse.mesh.faces, p.surgery,
-                                                  report(contractionEnd, surgeryEnd));
+                                                report(contractionEnd, surgeryEnd));
   result.surgerySeconds = start.seconds();
   if (curve.nodes.rows() == 0) {
     result.error = "aborted";
@@ -118,7 +117,8 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   result.skeleton.radii = nodeRadii(curve, mesh.vertices, inside);
   result.radiiSeconds = start.seconds();
 
-  for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k) result.skeleton.nodes.push_back(curve.nodes.row(k).transpose());
+  for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k)
+    result.skeleton.nodes.push_back(curve.nodes.row(k).transpose());
   for (const auto& [a, b] : curve.edges) result.skeleton.edges.push_back({a, b});
   result.vertexToNode = std::move(curve.vertexToNode);
   result.skeleton.root = chooseRoot(result.skeleton, result.vertexToNode);

@@ -1,7 +1,8 @@
 // SkeletonByContraction: the whole skeleton pipeline of the contraction paper (section III, stages 1-4)
-// plus node radii: optional decimation to a vertex budget, contraction (III.A), connectivity surgery (III.B), embedding refinement (III.C), node
-// selection (III.D), radii, and on request the heat-diffusion skinning weights (III.E). Input: a triangle mesh (any number of components, open or closed). Output: a
-// Skeleton (docs/ARCHITECTURE.md §4) with radii and a root, and the skeleton-mesh mapping (vertex -> node).
+// plus node radii: optional decimation to a vertex budget, contraction (III.A), connectivity surgery (III.B),
+// embedding refinement (III.C), node selection (III.D), radii, and on request the heat-diffusion skinning
+// weights (III.E). Input: a triangle mesh (any number of components, open or closed). Output: a Skeleton
+// (docs/ARCHITECTURE.md §4) with radii and a root, and the skeleton-mesh mapping (vertex -> node).
 #pragma once
 
 #include "contraction/ConnectivitySurgery.h"
@@ -27,7 +28,7 @@ struct SkeletonByContractionParameters {
   // Beyond the paper: put back the cycles surgery lost, so that the skeleton has as many independent
   // cycles as the closed mesh has genus (src/contraction/CycleRepair.h).
   bool restoreCycles = true;
-  int targetNodes = 30;  // node selection; 0 keeps every node of the refined curve skeleton
+  int targetNodes = 30;         // node selection; 0 keeps every node of the refined curve skeleton
   bool computeWeights = false;  // III.E: one weight per vertex and bone (skeleton edge)
   HeatWeightParameters weights;
 };
@@ -38,18 +39,18 @@ struct SkeletonByContractionResult {
   Vertices contracted;            // the contracted mesh positions (same faces as the input)
   Eigen::MatrixXd weights;        // with computeWeights: (vertices x bones), rows summing to 1
   int invisibleVertices = 0;      // vertices no nearest bone sees (HeatWeightResult)
-  int contractedVertices = 0;  // vertices of the mesh that was contracted (the coarse mesh, if decimated)
+  int contractedVertices = 0;     // vertices of the mesh that was contracted (the coarse mesh, if decimated)
   int contractionIterations = 0;
   double contractionVolumeRatio = 1.0;
   std::string contractionStop;
-  int curveSkeletonNodes = 0;  // before selection
-  int refinedNodes = 0;        // nodes the refinement moved
-  int pushedNodes = 0;         // nodes moved from outside into the mesh (pushNodesInside)
+  int curveSkeletonNodes = 0;     // before selection
+  int refinedNodes = 0;           // nodes the refinement moved
+  int pushedNodes = 0;            // nodes moved from outside into the mesh (pushNodesInside)
   CycleRepairResult cycleRepair;  // genus, cycles after surgery, cycles restored
-  int splitEdges = 0;          // nodes added inside edges that left the mesh (splitEdgesLeavingTheMesh)
+  int splitEdges = 0;             // nodes added inside edges that left the mesh (splitEdgesLeavingTheMesh)
   // Seconds per stage, and the share of the contraction spent factorizing.
-  double decimationSeconds = 0, contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0, refinementSeconds = 0,
-         selectionSeconds = 0, radiiSeconds = 0, weightsSeconds = 0;
+  double decimationSeconds = 0, contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0,
+         refinementSeconds = 0, selectionSeconds = 0, radiiSeconds = 0, weightsSeconds = 0;
   std::string error;
   bool ok() const { return error.empty(); }
 };

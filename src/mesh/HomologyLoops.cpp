@@ -46,7 +46,8 @@ EdgeGraph buildEdges(const TriangleMesh& mesh) {
 
 }  // namespace
 
-std::vector<int> loopThroughTree(int a, int b, const std::vector<int>& parent, const std::vector<int>& depth) {
+std::vector<int> loopThroughTree(int a, int b, const std::vector<int>& parent,
+                                 const std::vector<int>& depth) {
   std::vector<int> fromA{a}, fromB{b};
   while (fromA.back() != fromB.back()) {
     std::vector<int>& deeper = depth[size_t(fromA.back())] >= depth[size_t(fromB.back())] ? fromA : fromB;
@@ -62,7 +63,8 @@ int closedGenus(const TriangleMesh& mesh) {
   std::vector<std::pair<int, int>> halfEdges;
   halfEdges.reserve(size_t(3 * mesh.faces.rows()));
   for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
-    for (int c = 0; c < 3; ++c) halfEdges.push_back(std::minmax(mesh.faces(f, c), mesh.faces(f, (c + 1) % 3)));
+    for (int c = 0; c < 3; ++c)
+      halfEdges.push_back(std::minmax(mesh.faces(f, c), mesh.faces(f, (c + 1) % 3)));
   std::sort(halfEdges.begin(), halfEdges.end());
   UnionFind component{size_t(mesh.vertices.rows())};
   for (const auto& [a, b] : halfEdges) component.join(a, b);

@@ -72,7 +72,8 @@ double InsideTest::distanceAlongRay(const Eigen::Vector3d& origin, const Eigen::
   if (const Point* point = boost::get<Point>(&hit->first))
     first = *point;
   else if (const Kernel::Segment_3* segment = boost::get<Kernel::Segment_3>(&hit->first))  // in the plane
-    first = CGAL::squared_distance(ray.source(), segment->source()) < CGAL::squared_distance(ray.source(), segment->target())
+    first = CGAL::squared_distance(ray.source(), segment->source()) <
+                    CGAL::squared_distance(ray.source(), segment->target())
                 ? segment->source()
                 : segment->target();
   return std::sqrt(CGAL::squared_distance(ray.source(), first));

@@ -37,14 +37,15 @@ int survivor(const std::vector<int>& absorbedBy, int v) {
 
 // Adds the points in order (vertex i is point i) and the triangles; false when a triangle cannot be added
 // (a non-manifold edge or vertex, or an orientation clash with a neighbour).
-bool buildSurfaceMesh(const std::vector<Kernel::Point_3>& points, const std::vector<std::array<size_t, 3>>& triangles,
-                      SurfaceMesh& sm) {
+bool buildSurfaceMesh(const std::vector<Kernel::Point_3>& points,
+                      const std::vector<std::array<size_t, 3>>& triangles, SurfaceMesh& sm) {
   sm.clear();
   sm.reserve(SurfaceMesh::size_type(points.size()), SurfaceMesh::size_type(3 * triangles.size() / 2),
              SurfaceMesh::size_type(triangles.size()));
   for (const auto& p : points) sm.add_vertex(p);
   for (const auto& t : triangles)
-    if (sm.add_face(SurfaceMesh::Vertex_index(SurfaceMesh::size_type(t[0])), SurfaceMesh::Vertex_index(SurfaceMesh::size_type(t[1])),
+    if (sm.add_face(SurfaceMesh::Vertex_index(SurfaceMesh::size_type(t[0])),
+                    SurfaceMesh::Vertex_index(SurfaceMesh::size_type(t[1])),
                     SurfaceMesh::Vertex_index(SurfaceMesh::size_type(t[2]))) == SurfaceMesh::null_face())
       return false;
   return true;
@@ -68,19 +69,23 @@ DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices) {
 
   // Decimated in a normalized frame (bounding-box centre at the origin, diagonal 1): CGAL's quadric
   // placement tests singular matrices against absolute thresholds, so the units must not matter.
-  const Eigen::RowVector3d centre = 0.5 * (mesh.vertices.colwise().maxCoeff() + mesh.vertices.colwise().minCoeff());
+  const Eigen::RowVector3d centre =
+      0.5 * (mesh.vertices.colwise().maxCoeff() + mesh.vertices.colwise().minCoeff());
   const double diagonal = (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
-  if (!(diagonal > 0) || !std::isfinite(diagonal)) return unchanged(mesh, "not decimated: the mesh has no extent");
+  if (!(diagonal > 0) || !std::isfinite(diagonal))
+    return unchanged(mesh, "not decimated: the mesh has no extent");
   const Vertices normalized = (mesh.vertices.rowwise() - centre) / diagonal;
 
   std::vector<Kernel::Point_3> points;
   points.reserve(size_t(n));
-  for (Eigen::Index v = 0; v < n; ++v) points.emplace_back(normalized(v, 0), normalized(v, 1), normalized(v, 2));
+  for (Eigen::Index v = 0; v < n; ++v)
+    points.emplace_back(normalized(v, 0), normalized(v, 1), normalized(v, 2));
   std::vector<std::array<size_t, 3>> triangles;
   triangles.reserve(size_t(mesh.faces.rows()));
   for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
     const auto corners = mesh.faces.row(f);
-    if (corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0]) continue;  // no area
+    if (corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0])
+      continue;  // no area
     triangles.push_back({size_t(corners[0]), size_t(corners[1]), size_t(corners[2])});
   }
   SurfaceMesh sm;
@@ -101,8 +106,12 @@ DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices) {
   // Garland-Heckbert plane quadrics: cost and placement.
   SMS::GarlandHeckbert_plane_policies<SurfaceMesh, Kernel> quadrics(sm);
   // About three edges per vertex on a closed triangle mesh (E = 3V - 3 chi).
-  SMS::Count_stop_predicate<SurfaceMesh> stop(SurfaceMesh::size_type(3) * SurfaceMesh::size_type(targetVertices));
-  SMS::edge_collapse(sm, stop, CGAL::parameters::get_cost(quadrics.get_cost()).get_placement(quadrics.get_placement()).visitor(record));
+  SMS::Count_stop_predicate<SurfaceMesh> stop(SurfaceMesh::size_type(3) *
+                                              SurfaceMesh::size_type(targetVertices));
+  SMS::edge_collapse(sm, stop,
+                     CGAL::parameters::get_cost(quadrics.get_cost())
+                         .get_placement(quadrics.get_placement())
+                         .visitor(record));
 
   // Compact numbering of the surviving vertices, then the faces that are left.
   DecimatedMesh result;
@@ -115,13 +124,15 @@ DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices) {
   for (const auto v : sm.vertices())
     if (compact[size_t(v.idx())] >= 0) {
       const Kernel::Point_3& p = sm.point(v);
-      result.mesh.vertices.row(compact[size_t(v.idx())]) = Eigen::RowVector3d(p.x(), p.y(), p.z()) * diagonal + centre;
+      result.mesh.vertices.row(compact[size_t(v.idx())]) =
+          Eigen::RowVector3d(p.x(), p.y(), p.z()) * diagonal + centre;
     }
   result.mesh.faces.resize(Eigen::Index(sm.number_of_faces()), 3);
   Eigen::Index row = 0;
   for (const auto f : sm.faces()) {
     int c = 0;
-    for (const auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) result.mesh.faces(row, c++) = compact[size_t(v.idx())];
+    for (const auto v : CGAL::vertices_around_face(sm.halfedge(f), sm))
+      result.mesh.faces(row, c++) = compact[size_t(v.idx())];
     ++row;
   }
 

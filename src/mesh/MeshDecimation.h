@@ -1,5 +1,6 @@
 // MeshDecimation: quadric-error edge-collapse decimation (Garland & Heckbert 1997, CGAL's
-// Surface_mesh_simplification with its Garland-Heckbert plane policies) down to a vertex budget, with the record of which coarse vertex absorbed each input vertex.
+// Surface_mesh_simplification with its Garland-Heckbert plane policies) down to a vertex budget, with the
+// record of which coarse vertex absorbed each input vertex.
 //
 // The skeleton pipeline contracts this coarse mesh instead of the input when the input has more vertices
 // than the budget (SkeletonByContractionParameters::contractionVertices): the cost of the contraction

@@ -50,7 +50,8 @@ Eigen::SparseMatrix<double> laplacianFromCotangents(const Faces& faces, const Ei
   return laplacian;
 }
 
-Eigen::SparseMatrix<double> cotangentLaplacian(const Vertices& vertices, const Faces& faces, double minAngle) {
+Eigen::SparseMatrix<double> cotangentLaplacian(const Vertices& vertices, const Faces& faces,
+                                               double minAngle) {
   return laplacianFromCotangents(faces, faceCotangents(vertices, faces, minAngle), vertices.rows());
 }
 

@@ -50,7 +50,8 @@ MeshTopology computeMeshTopology(int64_t vertexCount, const std::vector<std::vec
       continue;
     }
     ++t.vertices;
-    auto [it, inserted] = componentIndex.try_emplace(vertexSets.find(int(v)), static_cast<int64_t>(componentIndex.size()));
+    auto [it, inserted] =
+        componentIndex.try_emplace(vertexSets.find(int(v)), static_cast<int64_t>(componentIndex.size()));
     componentOf[v] = it->second;
   }
   t.components = static_cast<int64_t>(componentIndex.size());

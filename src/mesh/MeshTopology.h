@@ -12,17 +12,17 @@
 namespace medial {
 
 struct MeshTopology {
-  int64_t vertices = 0;          // vertices used by at least one face
-  int64_t unusedVertices = 0;    // vertices no face uses
+  int64_t vertices = 0;        // vertices used by at least one face
+  int64_t unusedVertices = 0;  // vertices no face uses
   int64_t faces = 0;
-  int64_t degenerateFaces = 0;   // fewer than 3 distinct vertex ids
+  int64_t degenerateFaces = 0;  // fewer than 3 distinct vertex ids
   int64_t edges = 0;
   int64_t borderEdges = 0;       // edges with exactly one incident face
   int64_t nonManifoldEdges = 0;  // edges with three or more incident faces
   int64_t components = 0;        // connected through shared vertices
   int64_t boundaryLoops = 0;     // connected pieces of the border-edge graph
   int64_t eulerCharacteristic = 0;
-  int64_t genus = 0;             // sum over components of (2 - chi_c - b_c) / 2; meaningful for manifolds
+  int64_t genus = 0;  // sum over components of (2 - chi_c - b_c) / 2; meaningful for manifolds
 
   bool isClosed() const { return borderEdges == 0; }
   bool isEdgeManifold() const { return nonManifoldEdges == 0; }

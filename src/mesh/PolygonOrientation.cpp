@@ -37,7 +37,8 @@ bool consistentlyOriented(const std::vector<std::vector<int>>& faces) {
 
 }  // namespace
 
-int orientPolygonsOutward(const std::vector<Eigen::Vector3d>& vertices, std::vector<std::vector<int>>& faces) {
+int orientPolygonsOutward(const std::vector<Eigen::Vector3d>& vertices,
+                          std::vector<std::vector<int>>& faces) {
   std::vector<std::vector<std::size_t>> polygons;
   for (const auto& f : faces) polygons.emplace_back(f.begin(), f.end());
   if (!consistentlyOriented(faces)) {
@@ -52,7 +53,8 @@ int orientPolygonsOutward(const std::vector<Eigen::Vector3d>& vertices, std::vec
   std::vector<double> volume(vertices.size(), 0.0);
   for (size_t f = 0; f < polygons.size(); ++f)
     for (size_t k = 1; k + 1 < polygons[f].size(); ++k)
-      volume[size_t(component[f])] += vertices[polygons[f][0]].dot(vertices[polygons[f][k]].cross(vertices[polygons[f][k + 1]]));
+      volume[size_t(component[f])] +=
+          vertices[polygons[f][0]].dot(vertices[polygons[f][k]].cross(vertices[polygons[f][k + 1]]));
   int reversed = 0;
   for (size_t f = 0; f < faces.size(); ++f) {
     if (volume[size_t(component[f])] < 0) std::reverse(polygons[f].begin(), polygons[f].end());

@@ -60,21 +60,32 @@ struct CgBackend : EigenBackend<Eigen::ConjugateGradient<SpMat, Eigen::Lower | E
 std::unique_ptr<SparseSolver::Backend> makeBackend(SparseSolverKind kind) {
   using Kind = SparseSolverKind;
   switch (kind) {
-    case Kind::CholmodSupernodalMetis: return std::make_unique<CholmodBackend>(CHOLMOD_METIS);
-    case Kind::CholmodSupernodalAmd: return std::make_unique<CholmodBackend>(CHOLMOD_AMD);
+    case Kind::CholmodSupernodalMetis:
+      return std::make_unique<CholmodBackend>(CHOLMOD_METIS);
+    case Kind::CholmodSupernodalAmd:
+      return std::make_unique<CholmodBackend>(CHOLMOD_AMD);
     case Kind::SimplicialLltAmd:
-      return std::make_unique<EigenBackend<Eigen::SimplicialLLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>>>>();
+      return std::make_unique<
+          EigenBackend<Eigen::SimplicialLLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>>>>();
     case Kind::SimplicialLdltAmd:
-      return std::make_unique<EigenBackend<Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>>>>();
+      return std::make_unique<
+          EigenBackend<Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>>>>();
     case Kind::SimplicialLltMetis:
-      return std::make_unique<EigenBackend<Eigen::SimplicialLLT<SpMat, Eigen::Lower, Eigen::MetisOrdering<int>>>>();
+      return std::make_unique<
+          EigenBackend<Eigen::SimplicialLLT<SpMat, Eigen::Lower, Eigen::MetisOrdering<int>>>>();
     case Kind::SimplicialLdltMetis:
-      return std::make_unique<EigenBackend<Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::MetisOrdering<int>>>>();
-    case Kind::LuColamd: return std::make_unique<EigenBackend<Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>>>>();
-    case Kind::LuAmd: return std::make_unique<EigenBackend<Eigen::SparseLU<SpMat, Eigen::AMDOrdering<int>>>>();
-    case Kind::LuMetis: return std::make_unique<EigenBackend<Eigen::SparseLU<SpMat, Eigen::MetisOrdering<int>>>>();
-    case Kind::QrColamd: return std::make_unique<QrBackend>();
-    case Kind::ConjugateGradient: return std::make_unique<CgBackend>();
+      return std::make_unique<
+          EigenBackend<Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::MetisOrdering<int>>>>();
+    case Kind::LuColamd:
+      return std::make_unique<EigenBackend<Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>>>>();
+    case Kind::LuAmd:
+      return std::make_unique<EigenBackend<Eigen::SparseLU<SpMat, Eigen::AMDOrdering<int>>>>();
+    case Kind::LuMetis:
+      return std::make_unique<EigenBackend<Eigen::SparseLU<SpMat, Eigen::MetisOrdering<int>>>>();
+    case Kind::QrColamd:
+      return std::make_unique<QrBackend>();
+    case Kind::ConjugateGradient:
+      return std::make_unique<CgBackend>();
   }
   return nullptr;
 }

@@ -69,9 +69,11 @@ std::vector<Bone> buildBones(const Skeleton& skeleton) {
       for (const auto& [v, e] : adjacent[size_t(u)]) {
         if (edgeDone[size_t(e)]) continue;
         edgeDone[size_t(e)] = true;
-        Bone bone{e, u, v, incomingBone[size_t(u)], boneFrame(skeleton.nodes[size_t(u)], skeleton.nodes[size_t(v)])};
+        Bone bone{e, u, v, incomingBone[size_t(u)],
+                  boneFrame(skeleton.nodes[size_t(u)], skeleton.nodes[size_t(v)])};
         bones.push_back(bone);
-        if (depth[size_t(v)] < 0) {  // a tree edge; otherwise it closes a cycle and v keeps its own parent bone
+        if (depth[size_t(v)] <
+            0) {  // a tree edge; otherwise it closes a cycle and v keeps its own parent bone
           depth[size_t(v)] = depth[size_t(u)] + 1;
           incomingBone[size_t(v)] = int(bones.size()) - 1;
           queue.push_back(v);
@@ -83,7 +85,8 @@ std::vector<Bone> buildBones(const Skeleton& skeleton) {
 }
 
 std::string boneName(const Bone& bone) {
-  return "Bone_" + std::to_string(bone.edge) + "_" + std::to_string(bone.head) + "_" + std::to_string(bone.tail);
+  return "Bone_" + std::to_string(bone.edge) + "_" + std::to_string(bone.head) + "_" +
+         std::to_string(bone.tail);
 }
 
 aiNode* newNode(const std::string& name, const Transform& local, aiNode* parent) {
@@ -103,7 +106,8 @@ std::string checkRig(const Rig& rig) {
   if (rig.mesh.faces.rows() == 0) return "the mesh has no triangles";
   if (rig.skeleton.edgeCount() == 0) return "the skeleton has no bones (edges)";
   if (rig.weights.rows() != rig.mesh.vertices.rows() || rig.weights.cols() != rig.skeleton.edgeCount())
-    return "the weights are " + std::to_string(rig.weights.rows()) + " x " + std::to_string(rig.weights.cols()) +
+    return "the weights are " + std::to_string(rig.weights.rows()) + " x " +
+           std::to_string(rig.weights.cols()) +
            ", expected vertices x bones = " + std::to_string(rig.mesh.vertices.rows()) + " x " +
            std::to_string(rig.skeleton.edgeCount());
   for (const auto& e : rig.skeleton.edges)
@@ -171,7 +175,8 @@ aiMesh* buildMesh(const Rig& rig, const std::vector<Bone>& bones, const RigExpor
 std::string rigFormatForFile(const std::string& path) {
   const size_t dot = path.find_last_of('.');
   std::string extension = dot == std::string::npos ? "" : path.substr(dot);
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (extension == ".glb") return "glb2";
   if (extension == ".gltf") return "gltf2";
   if (extension == ".fbx") return "fbx";
@@ -191,9 +196,9 @@ std::string exportRig(const Rig& rig, const std::string& path, const std::string
 
   auto scene = std::make_unique<aiScene>();
   scene->mNumMaterials = 1;
-  scene->mMaterials = new aiMaterial*[1]{new aiMaterial};
+  scene->mMaterials = new aiMaterial* [1] { new aiMaterial };
   scene->mNumMeshes = 1;
-  scene->mMeshes = new aiMesh*[1]{buildMesh(rig, bones, options)};
+  scene->mMeshes = new aiMesh* [1] { buildMesh(rig, bones, options) };
 
   // Node tree: Root -> {Mesh, Armature -> bones by hierarchy}.
   scene->mRootNode = new aiNode("Root");
@@ -208,7 +213,8 @@ std::string exportRig(const Rig& rig, const std::string& path, const std::string
   std::vector<aiNode*> armatureChildren;
   for (size_t b = 0; b < bones.size(); ++b) {
     const Bone& bone = bones[b];
-    const Transform parentGlobal = bone.parent < 0 ? Transform::Identity() : bones[size_t(bone.parent)].global;
+    const Transform parentGlobal =
+        bone.parent < 0 ? Transform::Identity() : bones[size_t(bone.parent)].global;
     aiNode* parent = bone.parent < 0 ? armature : boneNodes[size_t(bone.parent)];
     boneNodes[b] = newNode(boneName(bone), parentGlobal.inverse() * bone.global, parent);
     (bone.parent < 0 ? armatureChildren : children[size_t(bone.parent)]).push_back(boneNodes[b]);
@@ -219,7 +225,8 @@ std::string exportRig(const Rig& rig, const std::string& path, const std::string
   Assimp::Exporter exporter;
   if (exporter.Export(scene.get(), format, path) != AI_SUCCESS) {
     const std::string error = exporter.GetErrorString();
-    return "cannot write the rig as " + format + ": " + (error.empty() ? "unknown format or I/O error" : error);
+    return "cannot write the rig as " + format + ": " +
+           (error.empty() ? "unknown format or I/O error" : error);
   }
   return {};
 }

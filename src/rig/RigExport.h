@@ -23,8 +23,8 @@ namespace medial {
 
 struct Rig {
   TriangleMesh mesh;
-  Skeleton skeleton;         // nodes, edges (bones) and root
-  Eigen::MatrixXd weights;   // (mesh vertices x skeleton edges), rows summing to 1
+  Skeleton skeleton;        // nodes, edges (bones) and root
+  Eigen::MatrixXd weights;  // (mesh vertices x skeleton edges), rows summing to 1
 };
 
 struct RigExportOptions {
@@ -45,7 +45,7 @@ std::vector<std::string> rigBoneNames(const Skeleton& skeleton);
 
 // What an exported rig holds when read back (for tests and the CLI's report).
 struct RigSummary {
-  int bones = 0;             // bones that influence the mesh
+  int bones = 0;  // bones that influence the mesh
   int vertices = 0;
   int faces = 0;
   double maxWeightSumError = 0;  // max over vertices of |sum of weights - 1|

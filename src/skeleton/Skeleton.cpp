@@ -35,8 +35,9 @@ std::vector<SkeletonProblem> validateSkeleton(const Skeleton& skeleton, int maxP
 
   for (int i = 0; i < n && !problems.full(); ++i) {
     if (!skeleton.nodes[i].allFinite())
-      problems.add(Kind::NonFiniteCoordinate, i,
-                   "node " + std::to_string(i) + " has non-finite coordinates " + describePoint(skeleton.nodes[i]));
+      problems.add(
+          Kind::NonFiniteCoordinate, i,
+          "node " + std::to_string(i) + " has non-finite coordinates " + describePoint(skeleton.nodes[i]));
   }
 
   if (!skeleton.radii.empty()) {
@@ -58,12 +59,13 @@ std::vector<SkeletonProblem> validateSkeleton(const Skeleton& skeleton, int maxP
   if (!skeleton.ellipsoidAxes.empty()) {
     if (static_cast<int>(skeleton.ellipsoidAxes.size()) != n) {
       problems.add(Kind::EllipsoidCountMismatch, -1,
-                   std::to_string(skeleton.ellipsoidAxes.size()) + " ellipsoid matrices for " + std::to_string(n) +
-                       " nodes");
+                   std::to_string(skeleton.ellipsoidAxes.size()) + " ellipsoid matrices for " +
+                       std::to_string(n) + " nodes");
     } else {
       for (int i = 0; i < n && !problems.full(); ++i)
         if (!skeleton.ellipsoidAxes[i].allFinite())
-          problems.add(Kind::NonFiniteEllipsoid, i, "node " + std::to_string(i) + " has a non-finite ellipsoid matrix");
+          problems.add(Kind::NonFiniteEllipsoid, i,
+                       "node " + std::to_string(i) + " has a non-finite ellipsoid matrix");
     }
   }
 
@@ -71,8 +73,8 @@ std::vector<SkeletonProblem> validateSkeleton(const Skeleton& skeleton, int maxP
     const auto [a, b] = skeleton.edges[e];
     if (a < 0 || a >= n || b < 0 || b >= n) {
       problems.add(Kind::EdgeIdOutOfRange, e,
-                   "edge " + std::to_string(e) + " joins nodes " + std::to_string(a) + " and " + std::to_string(b) +
-                       " but node ids run from 0 to " + std::to_string(n - 1));
+                   "edge " + std::to_string(e) + " joins nodes " + std::to_string(a) + " and " +
+                       std::to_string(b) + " but node ids run from 0 to " + std::to_string(n - 1));
     } else if (a == b) {
       problems.add(Kind::SelfLoopEdge, e,
                    "edge " + std::to_string(e) + " is a self-loop on node " + std::to_string(a));
@@ -80,8 +82,9 @@ std::vector<SkeletonProblem> validateSkeleton(const Skeleton& skeleton, int maxP
   }
 
   if (skeleton.root != -1 && (skeleton.root < 0 || skeleton.root >= n))
-    problems.add(Kind::RootOutOfRange, -1,
-                 "root " + std::to_string(skeleton.root) + " is not a node id (0.." + std::to_string(n - 1) + ")");
+    problems.add(
+        Kind::RootOutOfRange, -1,
+        "root " + std::to_string(skeleton.root) + " is not a node id (0.." + std::to_string(n - 1) + ")");
 
   return problems.take();
 }

@@ -15,10 +15,11 @@ namespace medial {
 
 struct Skeleton {
   std::vector<Eigen::Vector3d> nodes;
-  std::vector<double> radii;                   // one per node, > 0; empty means "no radius known"
-  std::vector<std::array<int, 2>> edges;       // node ids
-  std::vector<Eigen::Matrix3d> ellipsoidAxes;  // optional, one per node: maps the unit sphere to the ellipsoid
-  int root = -1;                               // -1: no root chosen
+  std::vector<double> radii;              // one per node, > 0; empty means "no radius known"
+  std::vector<std::array<int, 2>> edges;  // node ids
+  std::vector<Eigen::Matrix3d>
+      ellipsoidAxes;  // optional, one per node: maps the unit sphere to the ellipsoid
+  int root = -1;      // -1: no root chosen
 
   int nodeCount() const { return static_cast<int>(nodes.size()); }
   int edgeCount() const { return static_cast<int>(edges.size()); }
@@ -44,8 +45,9 @@ struct SkeletonProblem {
   std::string message;
 };
 
-// Checks docs/ARCHITECTURE.md §4: finite coordinates, positive finite radii (one per node), no self-loop edges, edge and
-// root ids in range. Returns every problem found (at most maxProblems), empty when the skeleton is valid.
+// Checks docs/ARCHITECTURE.md §4: finite coordinates, positive finite radii (one per node), no self-loop
+// edges, edge and root ids in range. Returns every problem found (at most maxProblems), empty when the
+// skeleton is valid.
 std::vector<SkeletonProblem> validateSkeleton(const Skeleton& skeleton, int maxProblems = 20);
 
 // Leaf (degree <= 1), connection (degree 2) or branch (degree >= 3) per node. Assumes valid edge ids.

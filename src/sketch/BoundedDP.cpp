@@ -10,7 +10,9 @@ namespace {
 // Centripetal Catmull-Rom point between p1 and p2 (Barry-Goldman pyramid), t in [0, 1].
 Eigen::Vector2d catmullRom(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2,
                            const Eigen::Vector2d& p3, double t) {
-  auto knot = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return std::max(1e-12, std::sqrt((b - a).norm())); };
+  auto knot = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return std::max(1e-12, std::sqrt((b - a).norm()));
+  };
   const double t0 = 0, t1 = t0 + knot(p0, p1), t2 = t1 + knot(p1, p2), t3 = t2 + knot(p2, p3);
   const double u = t1 + t * (t2 - t1);
   const Eigen::Vector2d a1 = (t1 - u) / (t1 - t0) * p0 + (u - t0) / (t1 - t0) * p1;
@@ -48,8 +50,8 @@ SliceWidths sliceWidths(const Polygon2& polygon, const Eigen::Vector2d& p, const
 }
 
 struct Slices {
-  std::vector<Eigen::Vector2d> points;               // p_i
-  std::vector<double> arc, widthLeft, widthRight;    // arc length of p_i, d+_i, d-_i
+  std::vector<Eigen::Vector2d> points;             // p_i
+  std::vector<double> arc, widthLeft, widthRight;  // arc length of p_i, d+_i, d-_i
 };
 
 Slices slice(const std::vector<Eigen::Vector2d>& samples, const Polygon2& polygon) {
@@ -59,7 +61,8 @@ Slices slice(const std::vector<Eigen::Vector2d>& samples, const Polygon2& polygo
   double travelled = 0;
   for (size_t i = 0; i < n; ++i) {
     if (i > 0) travelled += (samples[i] - samples[i - 1]).norm();
-    const Eigen::Vector2d tangent = (samples[std::min(i + 1, n - 1)] - samples[i > 0 ? i - 1 : 0]).normalized();
+    const Eigen::Vector2d tangent =
+        (samples[std::min(i + 1, n - 1)] - samples[i > 0 ? i - 1 : 0]).normalized();
     const Eigen::Vector2d normal(-tangent.y(), tangent.x());
     // Where the axis bends sharply, a perpendicular can run along the tube instead of across it; no
     // half-width of a general cylinder exceeds twice its inscribed radius, so longer hits are capped.
@@ -75,7 +78,8 @@ Slices slice(const std::vector<Eigen::Vector2d>& samples, const Polygon2& polygo
 }
 
 // Algorithm 1 (with alpha_s of eq. 1 and the threshold test before marking, see the header).
-void selectPoints(const Slices& s, int first, int last, double epsilon, double alpha, std::vector<char>& keep) {
+void selectPoints(const Slices& s, int first, int last, double epsilon, double alpha,
+                  std::vector<char>& keep) {
   if (last <= first + 1) return;
   const Eigen::Vector2d a = s.points[first], b = s.points[last];
   const Eigen::Vector2d chord = b - a;
@@ -84,7 +88,8 @@ void selectPoints(const Slices& s, int first, int last, double epsilon, double a
   int best = first;
   double bestError = 0;
   for (int i = first + 1; i < last; ++i) {
-    const double axis = chordLength > 0 ? std::abs(cross2(chord, s.points[i] - a)) / chordLength : (s.points[i] - a).norm();
+    const double axis =
+        chordLength > 0 ? std::abs(cross2(chord, s.points[i] - a)) / chordLength : (s.points[i] - a).norm();
     const double t = span > 0 ? (s.arc[i] - s.arc[first]) / span : 0.0;
     const double sideLeft = (1 - t) * s.widthLeft[first] + t * s.widthLeft[last];
     const double sideRight = (1 - t) * s.widthRight[first] + t * s.widthRight[last];

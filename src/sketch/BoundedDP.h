@@ -4,8 +4,8 @@
 // A spline (centripetal Catmull-Rom) through the branch's nodes is sampled uniformly, p_i every
 // `sliceStep`; at each p_i the line perpendicular to the axis is cut with the polygon, giving the segment
 // s_i (half-widths d+_i to the left and d-_i to the right, capped at twice the inscribed radius where a
-// perpendicular runs along a bent tube); the slices make up the general-cylinder region Omega. Douglas-Peucker then picks, in each range [st, en], the sample with
-// the largest error (eq. 1)
+// perpendicular runs along a bent tube); the slices make up the general-cylinder region Omega.
+// Douglas-Peucker then picks, in each range [st, en], the sample with the largest error (eq. 1)
 //     E_i = E_p + alpha_s E_s,
 // E_p the distance from p_i to the line p_st p_en and E_s = |d+_i - w+_i| + |d-_i - w-_i|, the distances of
 // the segment's ends to the sides of the trapezoid spanned by s_st and s_en on the straightened axis (w+-

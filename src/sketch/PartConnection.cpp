@@ -7,7 +7,8 @@
 
 namespace medial {
 
-double boneDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& joint, double& t) {
+double boneDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& joint,
+                    double& t) {
   const Eigen::Vector3d ab = b - a;
   if (ab.dot(joint - a) >= 0 && (a - b).dot(joint - b) >= 0 && ab.squaredNorm() > 0) {
     t = ab.dot(joint - a) / ab.squaredNorm();
@@ -46,7 +47,8 @@ std::vector<PartAttachment> connectParts(SketchGraph& graph, int partCount) {
     } best;
     for (int parent = 0; parent < child; ++parent) {
       bool intersects = false;
-      for (int c : candidates) intersects = intersects || insideCylinderBall(graph, parent, graph.skeleton.nodes[c]);
+      for (int c : candidates)
+        intersects = intersects || insideCylinderBall(graph, parent, graph.skeleton.nodes[c]);
       if (!intersects) continue;
       for (int c : candidates) {
         const Eigen::Vector3d& p = graph.skeleton.nodes[c];

@@ -18,16 +18,17 @@
 namespace medial {
 
 struct PartAttachment {
-  int parent = -1;             // the part attached to (-1: a root)
-  int childJoint = -1;         // node ids in the connected graph
-  int parentJoint = -1;        // existing joint (joint connect) or the joint created on the split bone
+  int parent = -1;       // the part attached to (-1: a root)
+  int childJoint = -1;   // node ids in the connected graph
+  int parentJoint = -1;  // existing joint (joint connect) or the joint created on the split bone
   bool boneSplit = false;
-  double distance = 0;         // eq. (3)
+  double distance = 0;  // eq. (3)
 };
 
 // Shortest distance of eq. (3) from `joint` to the bone [a, b]; `t` receives the foot's parameter in
 // [0, 1] when the joint is in the influence region, or -1 (nearer end a) / 2 (nearer end b) otherwise.
-double boneDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& joint, double& t);
+double boneDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& joint,
+                    double& t);
 
 // Whether `point` lies in the cylinder-ball region of the nodes and edges of part `part` in `graph`.
 bool insideCylinderBall(const SketchGraph& graph, int part, const Eigen::Vector3d& point);

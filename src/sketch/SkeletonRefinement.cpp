@@ -95,12 +95,15 @@ int pruneBranches(SketchGraph& graph, const std::vector<double>& threshold) {
     if (degree[branch.front()] == 1 && degree[branch.back()] >= 3) std::reverse(branch.begin(), branch.end());
     if (degree[branch.front()] < 3 || degree[branch.back()] != 1) continue;
     double length = 0;
-    for (size_t k = 1; k < branch.size(); ++k) length += (graph.skeleton.nodes[branch[k]] - graph.skeleton.nodes[branch[k - 1]]).norm();
-    length += graph.skeleton.radii[branch.back()] - graph.skeleton.radii[branch.front()];  // reach beyond the junction's ball
+    for (size_t k = 1; k < branch.size(); ++k)
+      length += (graph.skeleton.nodes[branch[k]] - graph.skeleton.nodes[branch[k - 1]]).norm();
+    length += graph.skeleton.radii[branch.back()] -
+              graph.skeleton.radii[branch.front()];  // reach beyond the junction's ball
     const double spur = 0.5 * graph.skeleton.radii[branch.front()];
     if (length < std::max(threshold[branch.back()], spur)) candidates.push_back({length, std::move(branch)});
   }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.length < b.length; });
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.length < b.length; });
   std::vector<char> deleted(n, 0);
   for (const Candidate& c : candidates) {
     if (degree[c.nodes.front()] <= 1) continue;  // the junction keeps a bone
@@ -118,10 +121,12 @@ int collapseEdges(SketchGraph& graph, const std::vector<double>& threshold) {
   std::vector<Eigen::Vector3d> position = graph.skeleton.nodes;
   std::vector<double> radius = graph.skeleton.radii, limit = threshold;
   std::vector<char> junction(n), internal(n);
-  for (int v = 0; v < n; ++v) junction[v] = neighbours[v].size() >= 3, internal[v] = neighbours[v].size() >= 2;
+  for (int v = 0; v < n; ++v)
+    junction[v] = neighbours[v].size() >= 3, internal[v] = neighbours[v].size() >= 2;
   std::vector<int> order(graph.skeleton.edgeCount());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return graph.edgeLength(a) < graph.edgeLength(b); });
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return graph.edgeLength(a) < graph.edgeLength(b); });
   for (int e : order) {
     const int a = groups.find(graph.skeleton.edges[e][0]), b = groups.find(graph.skeleton.edges[e][1]);
     if (a == b || !internal[a] || !internal[b]) continue;

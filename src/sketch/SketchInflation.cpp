@@ -54,7 +54,8 @@ bool inflatePolygon(const Polygon2& polygon, const InflationParameters& paramete
   Cdt cdt;
   std::vector<Cdt::Vertex_handle> outline;
   for (const auto& p : polygon) outline.push_back(cdt.insert(Cdt::Point(p.x(), p.y())));
-  for (size_t i = 0; i < outline.size(); ++i) cdt.insert_constraint(outline[i], outline[(i + 1) % outline.size()]);
+  for (size_t i = 0; i < outline.size(); ++i)
+    cdt.insert_constraint(outline[i], outline[(i + 1) % outline.size()]);
   try {
     CGAL::refine_Delaunay_mesh_2(cdt, Criteria(0.125, parameters.edgeLength));
   } catch (const std::exception& e) {
@@ -76,7 +77,8 @@ bool inflatePolygon(const Polygon2& polygon, const InflationParameters& paramete
     for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
       if (cdt.is_constrained(*e) || outside.count(e->first)) continue;
       const auto a = e->first->vertex(Cdt::cw(e->second)), b = e->first->vertex(Cdt::ccw(e->second));
-      const Eigen::Vector2d middle(0.5 * (a->point().x() + b->point().x()), 0.5 * (a->point().y() + b->point().y()));
+      const Eigen::Vector2d middle(0.5 * (a->point().x() + b->point().x()),
+                                   0.5 * (a->point().y() + b->point().y()));
       if (onOutline(a) && onOutline(b)) midpoints.emplace_back(middle.x(), middle.y());
     }
     if (midpoints.empty()) break;
@@ -114,7 +116,8 @@ bool inflatePolygon(const Polygon2& polygon, const InflationParameters& paramete
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
     for (const auto& t : triangles) {
       const Eigen::Vector2d& a = points[t[0]];
-      const double area = 0.5 * std::abs((points[t[1]] - a).x() * (points[t[2]] - a).y() - (points[t[1]] - a).y() * (points[t[2]] - a).x());
+      const double area = 0.5 * std::abs((points[t[1]] - a).x() * (points[t[2]] - a).y() -
+                                         (points[t[1]] - a).y() * (points[t[2]] - a).x());
       for (int k = 0; k < 3; ++k) {
         const int i = t[k], j = t[(k + 1) % 3], o = t[(k + 2) % 3];
         const Eigen::Vector2d u = points[i] - points[o], w = points[j] - points[o];

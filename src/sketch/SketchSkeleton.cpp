@@ -12,7 +12,6 @@
 namespace medial {
 namespace {
 
-
 Eigen::Vector3d place(const Eigen::Matrix4d& placement, const Eigen::Vector2d& p, double z = 0) {
   return (placement * Eigen::Vector4d(p.x(), p.y(), z, 1)).head<3>();
 }
@@ -23,8 +22,8 @@ double planeScale(const Eigen::Matrix4d& placement) {
 }
 
 // Stage 1-3 for one part: its skeleton nodes and bones, added to `graph` with label `part`.
-bool extractPart(const SketchPart& part, int partIndex, const SketchParameters& p, double unit, SketchGraph& graph,
-                 SketchPartResult& out, std::string& error) {
+bool extractPart(const SketchPart& part, int partIndex, const SketchParameters& p, double unit,
+                 SketchGraph& graph, SketchPartResult& out, std::string& error) {
   out.stroke = prepareStroke(part.stroke, {p.resampleStep * unit, p.polygonTolerance * unit});
   if (!out.stroke.ok()) {
     error = out.stroke.error;
@@ -37,7 +36,8 @@ bool extractPart(const SketchPart& part, int partIndex, const SketchParameters& 
   const RefinementThresholds& thresholds = part.thresholds ? *part.thresholds : p.thresholds;
   std::vector<int> nodeOf(local.nodeCount(), -1);
   auto addNode = [&](const Eigen::Vector2d& q) {
-    return graph.addNode(place(part.placement, q), scale * distanceToBoundary(out.stroke.resampled, q), partIndex);
+    return graph.addNode(place(part.placement, q), scale * distanceToBoundary(out.stroke.resampled, q),
+                         partIndex);
   };
   auto jointNode = [&](int v) {
     if (nodeOf[v] < 0) nodeOf[v] = addNode(local.nodes[v]);
@@ -55,7 +55,8 @@ bool extractPart(const SketchPart& part, int partIndex, const SketchParameters& 
     if (branch.size() >= 3) {
       BoundedDPParameters dp;
       const auto custom = part.branchSimplification.find(b);
-      dp.threshold = (custom != part.branchSimplification.end() ? custom->second : thresholds.simplification) * unit;
+      dp.threshold =
+          (custom != part.branchSimplification.end() ? custom->second : thresholds.simplification) * unit;
       dp.shapeWeight = p.shapeWeight;
       dp.sliceStep = p.sliceStep * unit;
       dp.tuningRatio = p.tuningRatio;
@@ -75,7 +76,8 @@ bool extractPart(const SketchPart& part, int partIndex, const SketchParameters& 
 }
 
 std::vector<double> nodeThresholds(const SketchGraph& graph, const std::vector<SketchPart>& parts,
-                                   const SketchParameters& p, double unit, double RefinementThresholds::*which) {
+                                   const SketchParameters& p, double unit,
+                                   double RefinementThresholds::*which) {
   std::vector<double> result(graph.skeleton.nodeCount());
   for (int v = 0; v < graph.skeleton.nodeCount(); ++v) {
     const auto& part = parts[graph.nodePart[v]];
@@ -144,7 +146,8 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
   collapseEdges(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::collapsing));
   // The root: the widest joint of the first part (the torso of a character drawn torso first).
   for (int v = 0; v < g.skeleton.nodeCount(); ++v)
-    if (g.nodePart[v] == 0 && (g.skeleton.root < 0 || g.skeleton.radii[v] > g.skeleton.radii[g.skeleton.root]))
+    if (g.nodePart[v] == 0 &&
+        (g.skeleton.root < 0 || g.skeleton.radii[v] > g.skeleton.radii[g.skeleton.root]))
       g.skeleton.root = v;
   result.refinementSeconds = refinementStart.seconds();
   if (aborted(0.7)) return result;
@@ -156,7 +159,8 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
     for (int k = 0; k < int(parts.size()); ++k) {
       TriangleMesh piece;
       std::string error;
-      if (!inflatePolygon(result.parts[k].stroke.resampled, {p.thickness, p.meshEdgeLength * unit}, piece, error)) {
+      if (!inflatePolygon(result.parts[k].stroke.resampled, {p.thickness, p.meshEdgeLength * unit}, piece,
+                          error)) {
         result.error = "stroke " + std::to_string(k + 1) + ": " + error;
         return result;
       }

@@ -1,6 +1,6 @@
 // SketchSkeleton: real-time skeletonization for sketch-based modelling (Ma, Wang, Li, Zhang 2021), the
-// whole chain from closed strokes to one animatable skeleton with radii (docs/ARCHITECTURE.md §4, ready for SQM) and an
-// inflated mesh per stroke.
+// whole chain from closed strokes to one animatable skeleton with radii (docs/ARCHITECTURE.md §4, ready for
+// SQM) and an inflated mesh per stroke.
 //
 // Per part (§3.1): stroke -> simple counter-clockwise polygon (SketchStroke) -> CGAL straight skeleton
 // without peripheral edges, short edges collapsed (StraightSkeletonGraph) -> every branch of three or more
@@ -41,10 +41,10 @@ struct RefinementThresholds {
 };
 
 struct SketchPart {
-  Polygon2 stroke;                                      // closed; the last point may repeat the first
+  Polygon2 stroke;                                          // closed; the last point may repeat the first
   Eigen::Matrix4d placement = Eigen::Matrix4d::Identity();  // maps (x, y, 0, 1) of the stroke into 3-D
-  std::optional<RefinementThresholds> thresholds;       // part level; the global ones when empty
-  std::map<int, double> branchSimplification;           // branch level: epsilon_s per branch id of the part
+  std::optional<RefinementThresholds> thresholds;           // part level; the global ones when empty
+  std::map<int, double> branchSimplification;  // branch level: epsilon_s per branch id of the part
 };
 
 struct SketchParameters {
@@ -56,27 +56,27 @@ struct SketchParameters {
   double sliceStep = 2;         // spacing of BoundedDP's slices
   double tuningRatio = 0.8;     // Algorithm 2
   RefinementThresholds thresholds;
-  bool inflate = true;          // stage 4
-  double thickness = 2;         // c of the inflation (2: round tubes)
-  double meshEdgeLength = 10;   // largest edge of the inflation's triangulation
+  bool inflate = true;         // stage 4
+  double thickness = 2;        // c of the inflation (2: round tubes)
+  double meshEdgeLength = 10;  // largest edge of the inflation's triangulation
 };
 
 struct SketchPartResult {
-  PreparedStroke stroke;                // resampled and simplified outlines (stroke units, 2-D)
-  int straightSkeletonNodes = 0;        // after peripheral removal and collapsing
-  int branches = 0;                     // long branches simplified by BoundedDP
-  PartAttachment attachment;            // to the earlier part it hangs from (parent -1: a root)
+  PreparedStroke stroke;          // resampled and simplified outlines (stroke units, 2-D)
+  int straightSkeletonNodes = 0;  // after peripheral removal and collapsing
+  int branches = 0;               // long branches simplified by BoundedDP
+  PartAttachment attachment;      // to the earlier part it hangs from (parent -1: a root)
   int firstMeshVertex = 0, meshVertexCount = 0;
 };
 
 struct SketchResult {
-  SketchGraph graph;                // the skeleton (docs/ARCHITECTURE.md §4: Radius, Root) with part and branch labels
-  TriangleMesh mesh;                // the inflated parts, one closed component per part
+  SketchGraph graph;  // the skeleton (docs/ARCHITECTURE.md §4: Radius, Root) with part and branch labels
+  TriangleMesh mesh;  // the inflated parts, one closed component per part
   std::vector<int> meshVertexPart;  // one per mesh vertex
   std::vector<SketchPartResult> parts;
-  double unitLength = 1;            // the unit used
+  double unitLength = 1;  // the unit used
   double localSeconds = 0, connectionSeconds = 0, refinementSeconds = 0, inflationSeconds = 0;
-  std::string error;                // names the part ("stroke 2: ...") when one is bad
+  std::string error;  // names the part ("stroke 2: ...") when one is bad
   bool ok() const { return error.empty(); }
 };
 

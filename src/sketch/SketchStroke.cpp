@@ -73,7 +73,8 @@ Polygon2 resampleClosed(const Polygon2& stroke, double step) {
       from = t;
     }
   }
-  while (points.size() > 3 && (points.back() - points.front()).norm() < 0.5 * step) points.pop_back(), arcs.pop_back();
+  while (points.size() > 3 && (points.back() - points.front()).norm() < 0.5 * step)
+    points.pop_back(), arcs.pop_back();
   const size_t m = points.size();
   if (m < 3) return points;
   // Mean of the closed polyline over the arc window [from, to] (may wrap around).
@@ -145,11 +146,11 @@ bool segmentsIntersect(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const
   const double d3 = cross2(d - c, a - c), d4 = cross2(d - c, b - c);
   if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
   auto onSegment = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
-    return std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) && std::min(p.y(), q.y()) <= r.y() &&
-           r.y() <= std::max(p.y(), q.y());
+    return std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) &&
+           std::min(p.y(), q.y()) <= r.y() && r.y() <= std::max(p.y(), q.y());
   };
-  return (d1 == 0 && onSegment(a, b, c)) || (d2 == 0 && onSegment(a, b, d)) || (d3 == 0 && onSegment(c, d, a)) ||
-         (d4 == 0 && onSegment(c, d, b));
+  return (d1 == 0 && onSegment(a, b, c)) || (d2 == 0 && onSegment(a, b, d)) ||
+         (d3 == 0 && onSegment(c, d, a)) || (d4 == 0 && onSegment(c, d, b));
 }
 
 std::pair<int, int> findSelfIntersection(const Polygon2& polygon) {
@@ -170,13 +171,15 @@ bool isInside(const Polygon2& polygon, const Eigen::Vector2d& p) {
   for (size_t i = 0, n = polygon.size(), j = n - 1; i < n; j = i++) {
     const Eigen::Vector2d& a = polygon[i];
     const Eigen::Vector2d& b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
       inside = !inside;
   }
   return inside;
 }
 
-double squaredDistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+double squaredDistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                                const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
   const double length2 = ab.squaredNorm();
   const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
@@ -203,7 +206,8 @@ PreparedStroke prepareStroke(const Polygon2& stroke, const StrokeParameters& par
   }
   while (points.size() > 1 && points.back() == points.front()) points.pop_back();  // explicit closure
   if (points.size() < 3) {
-    result.error = "the stroke has " + std::to_string(points.size()) + " distinct points; a closed stroke needs at least 3";
+    result.error = "the stroke has " + std::to_string(points.size()) +
+                   " distinct points; a closed stroke needs at least 3";
     return result;
   }
   if (!(parameters.resampleStep > 0) || !(parameters.tolerance >= 0)) {

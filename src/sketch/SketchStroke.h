@@ -35,7 +35,9 @@ struct PreparedStroke {
 PreparedStroke prepareStroke(const Polygon2& stroke, const StrokeParameters& parameters);
 
 // z of the cross product of two plane vectors (> 0: b turns left of a).
-inline double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+inline double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 // Signed area (> 0 for counter-clockwise).
 double signedArea(const Polygon2& polygon);
 // Total length of the closed polyline.

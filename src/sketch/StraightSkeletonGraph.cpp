@@ -136,8 +136,8 @@ int cgalStraightSkeletonVertexCount(const Polygon2& polygon) {
   return skeleton ? int(skeleton->size_of_vertices()) : -1;
 }
 
-bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, SkeletonGraph2& graph, std::string& error,
-                           SkeletonArithmetic arithmetic) {
+bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, SkeletonGraph2& graph,
+                           std::string& error, SkeletonArithmetic arithmetic) {
   graph = {};
   RawSkeleton raw;
   if (!computeSkeleton(polygon, arithmetic, raw)) {
@@ -208,9 +208,10 @@ std::vector<std::vector<int>> findBranches(int nodeCount, const std::vector<std:
     while (true) {
       branch.push_back(current);
       if (adjacency[current].size() != 2 || current == start) break;
-      const auto& next = adjacency[current][0].first == previous && !used[adjacency[current][1].second] ? adjacency[current][1]
-                         : !used[adjacency[current][0].second]                                          ? adjacency[current][0]
-                                                                                                         : adjacency[current][1];
+      const auto& next = adjacency[current][0].first == previous && !used[adjacency[current][1].second]
+                             ? adjacency[current][1]
+                         : !used[adjacency[current][0].second] ? adjacency[current][0]
+                                                               : adjacency[current][1];
       if (used[next.second]) break;
       used[next.second] = 1;
       previous = current;

@@ -6,7 +6,8 @@
 // edges between skeleton vertices (except at sharp tips, whose bisector is the arm: it is kept, shortened
 // by a third); then every skeleton edge shorter than collapseRatio x the mean
 // skeleton edge length (the paper's 0.5) is collapsed, shortest first; a merged cluster sits at its most
-// central node (largest offset time). The result is a tree (the straight skeleton of a simple polygon is one).
+// central node (largest offset time). The result is a tree (the straight skeleton of a simple polygon is
+// one).
 #pragma once
 
 #include "sketch/SketchStroke.h"
@@ -29,8 +30,8 @@ struct SkeletonGraph2 {
 enum class SkeletonArithmetic { automatic, exactPredicates };
 
 // False with `error` set when CGAL cannot build the skeleton (a degenerate polygon).
-bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, SkeletonGraph2& graph, std::string& error,
-                           SkeletonArithmetic arithmetic = SkeletonArithmetic::automatic);
+bool straightSkeletonGraph(const Polygon2& polygon, double collapseRatio, SkeletonGraph2& graph,
+                           std::string& error, SkeletonArithmetic arithmetic = SkeletonArithmetic::automatic);
 
 // CGAL's straight skeleton alone, for the benchmark's peer: returns its number of skeleton vertices
 // (-1 on failure).

@@ -36,8 +36,8 @@ Eigen::Vector3d projectAlongRay(const Eigen::Vector3d& x, Eigen::Vector3d d, con
 // Triangles of the convex hull of points on a sphere, oriented outwards. Points sharing a supporting
 // plane are fanned once; when every point lies on one plane the result is a closed pillow (two fans from
 // different apexes, so that no diagonal is shared by four triangles).
-std::vector<std::array<int, 3>> hullTriangles(const std::vector<Eigen::Vector3d>& q, const Eigen::Vector3d& centre,
-                                              double radius) {
+std::vector<std::array<int, 3>> hullTriangles(const std::vector<Eigen::Vector3d>& q,
+                                              const Eigen::Vector3d& centre, double radius) {
   const int n = int(q.size());
   const double tolerance = 1e-9 * radius;
   std::vector<std::array<int, 3>> faces;
@@ -70,9 +70,12 @@ std::vector<std::array<int, 3>> hullTriangles(const std::vector<Eigen::Vector3d>
         std::vector<int> onPlane;
         for (int m = 0; m < n; ++m) {
           const double d = normal.dot(q[size_t(m)] - q[size_t(i)]);
-          if (d > tolerance) ++above;
-          else if (d < -tolerance) ++below;
-          else onPlane.push_back(m);
+          if (d > tolerance)
+            ++above;
+          else if (d < -tolerance)
+            ++below;
+          else
+            onPlane.push_back(m);
         }
         if (above > 0 && below > 0) continue;
         if (above == 0 && below == 0) allCoplanar = true;
@@ -81,7 +84,8 @@ std::vector<std::array<int, 3>> hullTriangles(const std::vector<Eigen::Vector3d>
           // Both sides of the one plane: the side facing away from the centre first.
           // The two fans start at neighbouring points so that they share no diagonal (a shared one would
           // carry four triangles: a non-manifold edge).
-          const Eigen::Vector3d side = normal.dot(q[size_t(i)] - centre) >= 0 ? normal : Eigen::Vector3d(-normal);
+          const Eigen::Vector3d side =
+              normal.dot(q[size_t(i)] - centre) >= 0 ? normal : Eigen::Vector3d(-normal);
           std::vector<int> ring = counterClockwise(onPlane, side);
           fan(ring, ring[0]);
           const int otherApex = ring[1];
@@ -89,14 +93,16 @@ std::vector<std::array<int, 3>> hullTriangles(const std::vector<Eigen::Vector3d>
           fan(ring, otherApex);
           return faces;
         }
-        const std::vector<int> ring = counterClockwise(onPlane, above == 0 ? normal : Eigen::Vector3d(-normal));
+        const std::vector<int> ring =
+            counterClockwise(onPlane, above == 0 ? normal : Eigen::Vector3d(-normal));
         fan(ring, ring[0]);
       }
   return faces;
 }
 
 // The LIE of intersection vertices a and b: the chain of common neighbours, from its end of lower index.
-std::vector<BnpMesh::VertexHandle> lieChain(const BnpMesh& mesh, BnpMesh::VertexHandle a, BnpMesh::VertexHandle b) {
+std::vector<BnpMesh::VertexHandle> lieChain(const BnpMesh& mesh, BnpMesh::VertexHandle a,
+                                            BnpMesh::VertexHandle b) {
   std::set<int> ofA, common;
   for (auto v : mesh.vv_range(a)) ofA.insert(v.idx());
   for (auto v : mesh.vv_range(b))
@@ -135,18 +141,22 @@ double oneRingArea(const BnpMesh& mesh, BnpMesh::VertexHandle v) {
   return area;
 }
 
-void smoothLie(BranchNodePolyhedron& bnp, const std::vector<BnpMesh::VertexHandle>& chain, LieSmoothing smoothing) {
+void smoothLie(BranchNodePolyhedron& bnp, const std::vector<BnpMesh::VertexHandle>& chain,
+               LieSmoothing smoothing) {
   if (chain.size() < 3) return;
   BnpMesh& mesh = bnp.mesh;
   const Eigen::Vector3d c = bnp.centre;
-  auto onSphere = [&](const Eigen::Vector3d& p) { return projectAlongRay(p, Eigen::Vector3d::Zero(), c, bnp.radius); };
+  auto onSphere = [&](const Eigen::Vector3d& p) {
+    return projectAlongRay(p, Eigen::Vector3d::Zero(), c, bnp.radius);
+  };
   const size_t last = chain.size() - 1;
   switch (smoothing) {
     case LieSmoothing::Quaternion: {
       // Equal angles along the arc from the first to the last vertex of the LIE. The axis is the chain's
       // mean turning axis, not the shortest rotation from first to last: on a pillow the two ends are
       // antipodal and only the chain says which half circle the LIE runs along.
-      const Eigen::Vector3d first = toEigen(mesh.point(chain.front())) - c, end = toEigen(mesh.point(chain.back())) - c;
+      const Eigen::Vector3d first = toEigen(mesh.point(chain.front())) - c,
+                            end = toEigen(mesh.point(chain.back())) - c;
       Eigen::Vector3d axis = Eigen::Vector3d::Zero();
       for (size_t i = 0; i < last; ++i)
         axis += (toEigen(mesh.point(chain[i])) - c).cross(toEigen(mesh.point(chain[i + 1])) - c);
@@ -196,17 +206,21 @@ void smoothLie(BranchNodePolyhedron& bnp, const std::vector<BnpMesh::VertexHandl
 
 const char* lieSmoothingName(LieSmoothing smoothing) {
   switch (smoothing) {
-    case LieSmoothing::Averaging: return "averaging";
-    case LieSmoothing::Quaternion: return "quaternion";
-    case LieSmoothing::AreaLaplacian: return "area-laplacian";
-    case LieSmoothing::ValencyLaplacian: return "valency-laplacian";
+    case LieSmoothing::Averaging:
+      return "averaging";
+    case LieSmoothing::Quaternion:
+      return "quaternion";
+    case LieSmoothing::AreaLaplacian:
+      return "area-laplacian";
+    case LieSmoothing::ValencyLaplacian:
+      return "valency-laplacian";
   }
   return "";
 }
 
 namespace {
-const LieSmoothing kSmoothings[] = {LieSmoothing::Quaternion, LieSmoothing::Averaging, LieSmoothing::AreaLaplacian,
-                                    LieSmoothing::ValencyLaplacian};
+const LieSmoothing kSmoothings[] = {LieSmoothing::Quaternion, LieSmoothing::Averaging,
+                                    LieSmoothing::AreaLaplacian, LieSmoothing::ValencyLaplacian};
 }
 
 bool parseLieSmoothing(const std::string& name, LieSmoothing& smoothing) {
@@ -238,7 +252,8 @@ std::vector<BnpMesh::VertexHandle> BranchNodePolyhedron::orderedRing(int i) cons
   return ring;
 }
 
-bool generateBnp(int node, const Eigen::Vector3d& centre, double radius, const std::vector<int>& neighbourNodes,
+bool generateBnp(int node, const Eigen::Vector3d& centre, double radius,
+                 const std::vector<int>& neighbourNodes,
                  const std::vector<Eigen::Vector3d>& neighbourPositions, BranchNodePolyhedron& bnp,
                  std::string& error) {
   bnp = BranchNodePolyhedron();
@@ -286,7 +301,8 @@ bool generateBnp(int node, const Eigen::Vector3d& centre, double radius, const s
   std::map<std::pair<int, int>, Eigen::Vector3d> edgeNormal;
   std::vector<Eigen::Vector3d> faceNormal;
   for (const auto& f : hull) {
-    faceNormal.push_back((q[size_t(f[1])] - q[size_t(f[0])]).cross(q[size_t(f[2])] - q[size_t(f[0])]).normalized());
+    faceNormal.push_back(
+        (q[size_t(f[1])] - q[size_t(f[0])]).cross(q[size_t(f[2])] - q[size_t(f[0])]).normalized());
     for (int c = 0; c < 3; ++c) {
       const auto key = std::minmax(f[size_t(c)], f[size_t((c + 1) % 3)]);
       // Eigen vectors start uninitialized: the first face sets the sum, the second adds to it.
@@ -320,7 +336,8 @@ bool generateBnp(int node, const Eigen::Vector3d& centre, double radius, const s
         centroid, fixDirection.dot(faceNormal[f]) > 0 ? fixDirection : faceNormal[f], centre, radius)));
     for (int c = 0; c < 3; ++c) {
       const int index = t[size_t(c)];
-      const auto corner = index < count ? bnp.intersection[size_t(index)] : bnp.steiner[size_t(index - count)];
+      const auto corner =
+          index < count ? bnp.intersection[size_t(index)] : bnp.steiner[size_t(index - count)];
       const auto after = middle[e[size_t(c)]], before = middle[e[size_t((c + 2) % 3)]];
       bnp.mesh.add_face(corner, after, centreVertex);
       bnp.mesh.add_face(before, corner, centreVertex);
@@ -339,7 +356,8 @@ bool refineBnp(BranchNodePolyhedron& bnp, const std::vector<int>& target, const 
     if (!exact[size_t(i)]) order.push_back(i);
   for (int x : order) {
     if (exact[size_t(x)] && bnp.valence(x) > target[size_t(x)]) {
-      error = "node " + std::to_string(bnp.node) + ": its polyhedron has more edges around the tube to node " +
+      error = "node " + std::to_string(bnp.node) +
+              ": its polyhedron has more edges around the tube to node " +
               std::to_string(bnp.neighbourNodes[size_t(x)]) + " than the other end can match";
       return false;
     }
@@ -362,14 +380,16 @@ bool refineBnp(BranchNodePolyhedron& bnp, const std::vector<int>& target, const 
         }
       }
       if (best < 0) {
-        error = "node " + std::to_string(bnp.node) + ": no edge of its polyhedron can be split to match the tube to node " +
+        error = "node " + std::to_string(bnp.node) +
+                ": no edge of its polyhedron can be split to match the tube to node " +
                 std::to_string(bnp.neighbourNodes[size_t(x)]);
         return false;
       }
       const auto [a, b] = bnp.hullEdges[size_t(best)];
       const auto chain = lieChain(bnp.mesh, bnp.hullVertex(a), bnp.hullVertex(b));
       if (chain.size() < 2) {
-        error = "node " + std::to_string(bnp.node) + ": broken polyhedron (no link between two intersection vertices)";
+        error = "node " + std::to_string(bnp.node) +
+                ": broken polyhedron (no link between two intersection vertices)";
         return false;
       }
       const auto edge = bnp.mesh.edge_handle(bnp.mesh.find_halfedge(chain[0], chain[1]));

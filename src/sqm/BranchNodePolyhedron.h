@@ -43,10 +43,10 @@ struct BranchNodePolyhedron {
   Eigen::Vector3d centre;
   double radius = 0;
   BnpMesh mesh;
-  std::vector<int> neighbourNodes;                    // skeleton node each intersection vertex points to
-  std::vector<BnpMesh::VertexHandle> intersection;    // one per neighbour node, same order
-  std::vector<BnpMesh::VertexHandle> steiner;         // hull points in caps no edge leaves through
-  std::vector<int> lieSplits;                         // per hull edge (index into hullEdges): splits so far
+  std::vector<int> neighbourNodes;                  // skeleton node each intersection vertex points to
+  std::vector<BnpMesh::VertexHandle> intersection;  // one per neighbour node, same order
+  std::vector<BnpMesh::VertexHandle> steiner;       // hull points in caps no edge leaves through
+  std::vector<int> lieSplits;                       // per hull edge (index into hullEdges): splits so far
   // Pairs of hull points joined by a LIE: intersection vertices 0..n-1, then Steiner points n, n+1, ...
   std::vector<std::pair<int, int>> hullEdges;
 
@@ -63,8 +63,9 @@ struct BranchNodePolyhedron {
 // Builds the subdivided BNP of a node at `centre` with `radius` whose edges point to `neighbourPositions`
 // (bind pose). Returns false with `error` when two edges leave in the same direction.
 bool generateBnp(int node, const Eigen::Vector3d& centre, double radius,
-                 const std::vector<int>& neighbourNodes, const std::vector<Eigen::Vector3d>& neighbourPositions,
-                 BranchNodePolyhedron& bnp, std::string& error);
+                 const std::vector<int>& neighbourNodes,
+                 const std::vector<Eigen::Vector3d>& neighbourPositions, BranchNodePolyhedron& bnp,
+                 std::string& error);
 
 // Raises the valence of the intersection vertices: exact[i] = true requires valence == target[i] (the
 // parent's vertex, fixed by the parent's BNP), false requires valence >= target[i]. Vertices are served

@@ -58,7 +58,8 @@ std::vector<std::array<int, 3>> closeCycleGap(const std::vector<Eigen::Vector3d>
                                               const std::vector<int>& ringA, const Eigen::Vector3d& centreA,
                                               const std::vector<int>& ringB, const Eigen::Vector3d& centreB) {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::pair<int, int>, Kernel>;  // (ring, vertex)
+  using VertexBase =
+      CGAL::Triangulation_vertex_base_with_info_2<std::pair<int, int>, Kernel>;  // (ring, vertex)
   using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<VertexBase>>;
 
   // The plane across the cut: (e1, e2, d) right-handed, so ring A (counter-clockwise about d) turns
@@ -66,14 +67,16 @@ std::vector<std::array<int, 3>> closeCycleGap(const std::vector<Eigen::Vector3d>
   Eigen::Vector3d d = centreB - centreA;
   if (d.squaredNorm() == 0) d = Eigen::Vector3d::UnitZ();
   d.normalize();
-  const Eigen::Vector3d e1 = (std::abs(d.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).cross(d).normalized();
+  const Eigen::Vector3d e1 =
+      (std::abs(d.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).cross(d).normalized();
   const Eigen::Vector3d e2 = d.cross(e1);
   std::vector<std::pair<Kernel::Point_2, std::pair<int, int>>> points;
   auto addRing = [&](const std::vector<int>& ring, const Eigen::Vector3d& centre, int which, double radius) {
     for (size_t k = 0; k < ring.size(); ++k) {
       const Eigen::Vector3d offset = positions[size_t(ring[k])] - centre;
       const double angle = std::atan2(offset.dot(e2), offset.dot(e1));
-      points.push_back({Kernel::Point_2(radius * std::cos(angle), radius * std::sin(angle)), {which, int(k)}});
+      points.push_back(
+          {Kernel::Point_2(radius * std::cos(angle), radius * std::sin(angle)), {which, int(k)}});
     }
   };
   addRing(ringA, centreA, 0, 1.0);
@@ -83,18 +86,22 @@ std::vector<std::array<int, 3>> closeCycleGap(const std::vector<Eigen::Vector3d>
   std::vector<std::array<int, 3>> triangles;
   bool chord = false;  // a triangle whose two corners on one ring are not neighbours along it
   std::vector<double> angleA, angleB;
-  for (const auto& [point, info] : points) (info.first == 0 ? angleA : angleB).push_back(std::atan2(point.y(), point.x()));
+  for (const auto& [point, info] : points)
+    (info.first == 0 ? angleA : angleB).push_back(std::atan2(point.y(), point.x()));
   for (auto face = triangulation.finite_faces_begin(); face != triangulation.finite_faces_end(); ++face) {
     std::array<std::pair<int, int>, 3> corner;
     for (int c = 0; c < 3; ++c) corner[size_t(c)] = face->vertex(c)->info();
     const int fromA = (corner[0].first == 0) + (corner[1].first == 0) + (corner[2].first == 0);
     if (fromA == 0 || fromA == 3) continue;  // inside one ring: the paper drops these
-    auto id = [&](const std::pair<int, int>& c) { return c.first == 0 ? ringA[size_t(c.second)] : ringB[size_t(c.second)]; };
+    auto id = [&](const std::pair<int, int>& c) {
+      return c.first == 0 ? ringA[size_t(c.second)] : ringB[size_t(c.second)];
+    };
     for (int c = 0; c < 3; ++c) {
       const auto& p = corner[size_t(c)];
       const auto& q = corner[size_t((c + 1) % 3)];
       const int size = int(p.first == 0 ? ringA.size() : ringB.size());
-      if (p.first == q.first && (p.second - q.second + size) % size != 1 && (q.second - p.second + size) % size != 1)
+      if (p.first == q.first && (p.second - q.second + size) % size != 1 &&
+          (q.second - p.second + size) % size != 1)
         chord = true;
     }
     // Delaunay faces are counter-clockwise in the plane; the band needs them the other way round.
@@ -104,7 +111,8 @@ std::vector<std::array<int, 3>> closeCycleGap(const std::vector<Eigen::Vector3d>
   // its centre, as a pillow's one-ring can be) the Delaunay triangulation does not wrap around the
   // annulus, and when a ring does not turn monotonically in this plane a triangle spans a chord of it
   // (a non-manifold band); the rings are then zipped by angle instead.
-  if (chord || triangles.size() != ringA.size() + ringB.size()) triangles = zipByAngle(ringA, angleA, ringB, angleB);
+  if (chord || triangles.size() != ringA.size() + ringB.size())
+    triangles = zipByAngle(ringA, angleA, ringB, angleB);
   return triangles;
 }
 

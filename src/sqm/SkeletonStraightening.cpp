@@ -1,6 +1,5 @@
 #include "sqm/SkeletonStraightening.h"
 
-
 namespace medial {
 
 std::vector<int> SqmTree::neighbours(int k) const {
@@ -31,7 +30,8 @@ SqmTree buildSqmTree(const Skeleton& skeleton, int start, int preferredRoot) {
         stack.push_back(m);
       }
   }
-  int root = preferredRoot >= 0 && preferredRoot < n && inComponent[size_t(preferredRoot)] ? preferredRoot : start;
+  int root =
+      preferredRoot >= 0 && preferredRoot < n && inComponent[size_t(preferredRoot)] ? preferredRoot : start;
 
   SqmTree tree;
   tree.parent.assign(size_t(n), -1);
@@ -80,7 +80,8 @@ SqmTree buildSqmTree(const Skeleton& skeleton, int start, int preferredRoot) {
         tree.parent[size_t(m)] = k;
         tree.children[size_t(k)].push_back(m);
       }
-    for (auto c = tree.children[size_t(k)].rbegin(); c != tree.children[size_t(k)].rend(); ++c) todo.push_back(*c);
+    for (auto c = tree.children[size_t(k)].rbegin(); c != tree.children[size_t(k)].rend(); ++c)
+      todo.push_back(*c);
   }
   return tree;
 }
@@ -92,14 +93,16 @@ BindPose straightenSkeleton(const Skeleton& skeleton, const SqmTree& tree) {
   for (int k : tree.nodes) {  // depth-first: a parent is placed before its children
     const int parent = tree.parent[size_t(k)];
     for (int child : tree.children[size_t(k)]) {
-      const Eigen::Vector3d offset = pose.rotation[size_t(k)] * (skeleton.nodes[size_t(child)] - skeleton.nodes[size_t(k)]);
+      const Eigen::Vector3d offset =
+          pose.rotation[size_t(k)] * (skeleton.nodes[size_t(child)] - skeleton.nodes[size_t(k)]);
       if (parent < 0 || tree.isBranch(k)) {
         // Children of a branch node (or of the root) keep their directions relative to it.
         pose.rotation[size_t(child)] = pose.rotation[size_t(k)];
         pose.position[size_t(child)] = pose.position[size_t(k)] + offset;
       } else {
         // The child of a connection node continues the line parent -> k.
-        const Eigen::Vector3d direction = (pose.position[size_t(k)] - pose.position[size_t(parent)]).normalized();
+        const Eigen::Vector3d direction =
+            (pose.position[size_t(k)] - pose.position[size_t(parent)]).normalized();
         pose.rotation[size_t(child)] =
             (Eigen::Quaterniond::FromTwoVectors(offset, direction) * pose.rotation[size_t(k)]).normalized();
         pose.position[size_t(child)] = pose.position[size_t(k)] + offset.norm() * direction;

@@ -30,7 +30,9 @@ struct SqmTree {
   bool hasBranchNode = false;
   bool isBranch(int k) const { return neighbourCount(k) >= 3; }
   bool isLeaf(int k) const { return neighbourCount(k) <= 1; }
-  int neighbourCount(int k) const { return int(children[size_t(k)].size()) + (parent[size_t(k)] >= 0 ? 1 : 0); }
+  int neighbourCount(int k) const {
+    return int(children[size_t(k)].size()) + (parent[size_t(k)] >= 0 ? 1 : 0);
+  }
   // The neighbours of k: its parent first (when it has one), then its children.
   std::vector<int> neighbours(int k) const;
 };
@@ -40,8 +42,8 @@ struct SqmTree {
 SqmTree buildSqmTree(const Skeleton& skeleton, int start, int preferredRoot);
 
 struct BindPose {
-  std::vector<Eigen::Vector3d> position;      // bind (straightened) position per skeleton node
-  std::vector<Eigen::Quaterniond> rotation;   // reference -> bind offset rotation per node (identity at root)
+  std::vector<Eigen::Vector3d> position;     // bind (straightened) position per skeleton node
+  std::vector<Eigen::Quaterniond> rotation;  // reference -> bind offset rotation per node (identity at root)
 };
 
 BindPose straightenSkeleton(const Skeleton& skeleton, const SqmTree& tree);

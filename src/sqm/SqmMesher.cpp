@@ -23,7 +23,6 @@ namespace medial {
 
 namespace {
 
-
 Eigen::Vector3d toEigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
 
 // A unit vector perpendicular to d.
@@ -37,7 +36,7 @@ Eigen::Vector3d perpendicular(const Eigen::Vector3d& d) {
 struct PreparedSkeleton {
   Skeleton skeleton;
   std::vector<int> origin;
-  std::vector<bool> pseudo;                   // the pseudo children of cut cycle edges (no geometry)
+  std::vector<bool> pseudo;                    // the pseudo children of cut cycle edges (no geometry)
   std::vector<std::pair<int, int>> cycleCuts;  // pseudo child at one end, at the other (extension 5)
   std::vector<bool> merged;                    // swallowed nodes, merged into a neighbour (no geometry)
 };
@@ -75,7 +74,8 @@ void mergeSwallowedNodes(Skeleton& s, std::vector<bool>& merged) {
       const double reach = first && second ? 0.5 * s.radii[size_t(small)] : 0.0;
       if ((s.nodes[size_t(big)] - s.nodes[size_t(small)]).norm() >= s.radii[size_t(big)] + reach) continue;
       const auto& around = neighbours[size_t(small)];
-      if (std::any_of(around.begin(), around.end(), [&](int n) { return neighbours[size_t(big)].count(n) > 0; }))
+      if (std::any_of(around.begin(), around.end(),
+                      [&](int n) { return neighbours[size_t(big)].count(n) > 0; }))
         continue;
       for (int n : around) {
         neighbours[size_t(n)].erase(small);
@@ -156,13 +156,15 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
     const int inputCount = int(s.nodes.size());
     for (int leaf = 0; leaf < inputCount; ++leaf) {
       if (degree[size_t(leaf)] != 1 || out.pseudo[size_t(leaf)]) continue;
-      const Eigen::Vector3d d = (s.nodes[size_t(leaf)] - s.nodes[size_t(neighbour[size_t(leaf)])]).normalized();
+      const Eigen::Vector3d d =
+          (s.nodes[size_t(leaf)] - s.nodes[size_t(neighbour[size_t(leaf)])]).normalized();
       const double r = s.radii[size_t(leaf)];
       int previous = leaf;
       const int steps = std::max(1, p.capsuleSteps);
       for (int k = 1; k <= steps; ++k) {
         // Extension 4: newRadius = sqrt(r^2 (1 - step^2)); the last node is the capsule's tip.
-        const double step = double(k) / double(steps + 1) * (k == steps ? double(steps + 1) / double(steps) : 1.0);
+        const double step =
+            double(k) / double(steps + 1) * (k == steps ? double(steps + 1) / double(steps) : 1.0);
         s.nodes.push_back(s.nodes[size_t(leaf)] + step * r * d);
         s.radii.push_back(std::max(r * std::sqrt(std::max(0.0, 1 - step * step)), 1e-3 * r));
         if (!s.ellipsoidAxes.empty()) s.ellipsoidAxes.push_back(s.ellipsoidAxes[size_t(leaf)]);
@@ -210,8 +212,7 @@ std::vector<int> nextRing(Builder& b, const std::vector<int>& ring, const Eigen:
 
 void bridge(Builder& b, const std::vector<int>& from, const std::vector<int>& to) {
   const size_t m = from.size();
-  for (size_t i = 0; i < m; ++i)
-    b.mesh.faces.push_back({from[i], from[(i + 1) % m], to[(i + 1) % m], to[i]});
+  for (size_t i = 0; i < m; ++i) b.mesh.faces.push_back({from[i], from[(i + 1) % m], to[(i + 1) % m], to[i]});
 }
 
 // The faces around a Steiner point of a BNP touch no intersection vertex, so no tube replaces them: they
@@ -220,7 +221,8 @@ void bridge(Builder& b, const std::vector<int>& from, const std::vector<int>& to
 void addSteinerCap(Builder& b, const BranchNodePolyhedron& bnp, BnpMesh::VertexHandle steiner,
                    const std::vector<int>& ids) {
   const BnpMesh& m = bnp.mesh;
-  std::vector<BnpMesh::VertexHandle> ring;  // triangles (steiner, ring[k], ring[k + 1]), as oriented in the BNP
+  std::vector<BnpMesh::VertexHandle>
+      ring;  // triangles (steiner, ring[k], ring[k + 1]), as oriented in the BNP
   const auto first = m.halfedge_handle(steiner);
   auto h = first;
   do {
@@ -276,7 +278,8 @@ void closeOnRing(Builder& b, const std::vector<int>& ring, const std::vector<int
     }
   }
   for (int i = 0; i < m; ++i)
-    b.mesh.faces.push_back({ring[size_t(i)], ring[size_t((i + 1) % m)], paired(i + 1, best), paired(i, best)});
+    b.mesh.faces.push_back(
+        {ring[size_t(i)], ring[size_t((i + 1) % m)], paired(i + 1, best), paired(i, best)});
 }
 
 void fan(Builder& b, const std::vector<int>& ring, int apex, bool reversed) {
@@ -284,8 +287,10 @@ void fan(Builder& b, const std::vector<int>& ring, int apex, bool reversed) {
   b.strips.emplace_back();
   for (size_t i = 0; i < m; ++i) {
     b.strips.back().push_back(b.mesh.faces.size());
-    if (reversed) b.mesh.faces.push_back({ring[(i + 1) % m], ring[i], apex});
-    else b.mesh.faces.push_back({ring[i], ring[(i + 1) % m], apex});
+    if (reversed)
+      b.mesh.faces.push_back({ring[(i + 1) % m], ring[i], apex});
+    else
+      b.mesh.faces.push_back({ring[i], ring[(i + 1) % m], apex});
   }
 }
 
@@ -301,8 +306,10 @@ void Builder::endAtLeaf(const std::vector<int>& ring, int leaf, const Eigen::Vec
 void meshLoneNode(Builder& b, const Eigen::Vector3d& c, double r, int node) {
   int v[8];
   for (int i = 0; i < 8; ++i)
-    v[i] = b.add(c + r / std::sqrt(3.0) * Eigen::Vector3d(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1), node);
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    v[i] =
+        b.add(c + r / std::sqrt(3.0) * Eigen::Vector3d(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1), node);
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : quads) b.mesh.faces.push_back({v[q[0]], v[q[1]], v[q[2]], v[q[3]]});
 }
 
@@ -351,9 +358,11 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
     // Two nodes only: the ring goes half way, owned by the root.
     const bool midway = connections.empty();
     const int ringNode = midway ? root : connections[0];
-    const Eigen::Vector3d centre = midway ? Eigen::Vector3d(0.5 * (pose.position[size_t(root)] + pose.position[size_t(end)]))
-                                          : pose.position[size_t(ringNode)];
-    const double radius = midway ? 0.5 * (s.radii[size_t(root)] + s.radii[size_t(end)]) : s.radii[size_t(ringNode)];
+    const Eigen::Vector3d centre =
+        midway ? Eigen::Vector3d(0.5 * (pose.position[size_t(root)] + pose.position[size_t(end)]))
+               : pose.position[size_t(ringNode)];
+    const double radius =
+        midway ? 0.5 * (s.radii[size_t(root)] + s.radii[size_t(end)]) : s.radii[size_t(ringNode)];
     const Eigen::Vector3d u = perpendicular(d), v = d.cross(u);
     std::vector<int> ring;
     const int n = std::max(3, p.linearRingVertices);
@@ -377,7 +386,8 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
     std::vector<Eigen::Vector3d> directions;
     const std::vector<int> around = tree.neighbours(k);
     for (int m : around) directions.push_back(pose.position[size_t(m)]);
-    if (!generateBnp(k, pose.position[size_t(k)], s.radii[size_t(k)], around, directions, bnps[k], error)) return error;
+    if (!generateBnp(k, pose.position[size_t(k)], s.radii[size_t(k)], around, directions, bnps[k], error))
+      return error;
   }
   result.generationSeconds += start.seconds();
   start.restart();
@@ -399,7 +409,8 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
         // The parent's BNP was refined first: match its vertex on this path exactly.
         const BranchNodePolyhedron& parentBnp = bnps[end];
         const int lastBefore = connections.empty() ? k : connections.back();
-        const auto at = std::find(parentBnp.neighbourNodes.begin(), parentBnp.neighbourNodes.end(), lastBefore);
+        const auto at =
+            std::find(parentBnp.neighbourNodes.begin(), parentBnp.neighbourNodes.end(), lastBefore);
         exact[size_t(i)] = true;
         target[size_t(i)] = parentBnp.valence(int(at - parentBnp.neighbourNodes.begin()));
       } else {
@@ -438,7 +449,8 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
       const std::vector<int> connections = pathFrom(tree, k, bnp.neighbourNodes[i], end);
       std::vector<int> ring = carryAlong(b, ringOf(k, int(i)), connections, k, s, pose);
       if (tree.isBranch(end)) {
-        const Eigen::Vector3d direction = (pose.position[size_t(end)] - pose.position[size_t(k)]).normalized();
+        const Eigen::Vector3d direction =
+            (pose.position[size_t(end)] - pose.position[size_t(k)]).normalized();
         closeOnRing(b, ring, ringOf(end, 0), direction, p.pairing);
       } else {
         b.endAtLeaf(ring, end, pose.position[size_t(end)], false);
@@ -450,14 +462,16 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
 }
 
 // Step 4: back to the input pose by linear blend skinning with the straightening rotations.
-void placeVertices(const Skeleton& s, const SqmTree& tree, const BindPose& pose, Builder& b, size_t firstVertex) {
+void placeVertices(const Skeleton& s, const SqmTree& tree, const BindPose& pose, Builder& b,
+                   size_t firstVertex) {
   for (size_t v = firstVertex; v < b.mesh.vertices.size(); ++v) {
     const int k = b.owner[v];
     const Eigen::Vector3d offset = b.mesh.vertices[v] - pose.position[size_t(k)];
     Eigen::Vector3d reference = pose.rotation[size_t(k)].conjugate() * offset;
     if (tree.neighbourCount(k) == 2 && tree.parent[size_t(k)] >= 0) {
       // A connection node: half its incoming, half its outgoing rotation; back onto its sphere.
-      const Eigen::Vector3d outgoing = pose.rotation[size_t(tree.children[size_t(k)][0])].conjugate() * offset;
+      const Eigen::Vector3d outgoing =
+          pose.rotation[size_t(tree.children[size_t(k)][0])].conjugate() * offset;
       const Eigen::Vector3d blended = 0.5 * (reference + outgoing);
       if (blended.squaredNorm() > 1e-24) reference = offset.norm() * blended.normalized();
     }
@@ -469,9 +483,12 @@ void placeVertices(const Skeleton& s, const SqmTree& tree, const BindPose& pose,
 
 const char* ringPairingName(RingPairing pairing) {
   switch (pairing) {
-    case RingPairing::MinimalTotalDistance: return "total-distance";
-    case RingPairing::MinimalDistance: return "distance";
-    case RingPairing::MinimalAngle: return "angle";
+    case RingPairing::MinimalTotalDistance:
+      return "total-distance";
+    case RingPairing::MinimalDistance:
+      return "distance";
+    case RingPairing::MinimalAngle:
+      return "angle";
   }
   return "";
 }
@@ -497,10 +514,12 @@ std::vector<std::string> ringPairingNames() {
 }
 
 int SqmMesh::quadCount() const {
-  return int(std::count_if(faces.begin(), faces.end(), [](const std::vector<int>& f) { return f.size() == 4; }));
+  return int(
+      std::count_if(faces.begin(), faces.end(), [](const std::vector<int>& f) { return f.size() == 4; }));
 }
 
-SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::function<bool(double)>& progress) {
+SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
+                  const std::function<bool(double)>& progress) {
   SqmResult result;
   PreparedSkeleton prepared;
   result.error = prepare(input, p, prepared);
@@ -556,19 +575,23 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p, const std::func
   // against their neighbours, and so can the cycle bands; the surface is orientable, so it gets one
   // consistent orientation, outward (OpenMesh's subdivision needs it).
   result.reorientedFaces = orientPolygonsOutward(builder.mesh.vertices, builder.mesh.faces);
-  if (p.pairTriangles) result.pairedTriangles = pairStripTriangles(builder.mesh.vertices, builder.mesh.faces, builder.strips);
+  if (p.pairTriangles)
+    result.pairedTriangles = pairStripTriangles(builder.mesh.vertices, builder.mesh.faces, builder.strips);
   result.mesh = std::move(builder.mesh);
   result.mesh.vertexNode.resize(builder.owner.size());
-  for (size_t v = 0; v < builder.owner.size(); ++v) result.mesh.vertexNode[v] = prepared.origin[size_t(builder.owner[v])];
+  for (size_t v = 0; v < builder.owner.size(); ++v)
+    result.mesh.vertexNode[v] = prepared.origin[size_t(builder.owner[v])];
   if (p.subdivisionLevels > 0) {
     // The cones of the skeleton the mesh was built on (capsule nodes included, pseudo nodes left out).
     Skeleton cones = s;
     cones.edges.clear();
     for (const auto& e : s.edges)
       if (!prepared.pseudo[size_t(e[0])] && !prepared.pseudo[size_t(e[1])]) cones.edges.push_back(e);
-    for (const auto& [a, b] : prepared.cycleCuts) cones.edges.push_back({prepared.origin[size_t(a)], prepared.origin[size_t(b)]});
+    for (const auto& [a, b] : prepared.cycleCuts)
+      cones.edges.push_back({prepared.origin[size_t(a)], prepared.origin[size_t(b)]});
     Stopwatch clock;
-    refineSqmMesh(result.mesh, cones, p.subdivisionLevels, p.sharpScaling, p.foldRepair, &result.foldRepairedVertices);
+    refineSqmMesh(result.mesh, cones, p.subdivisionLevels, p.sharpScaling, p.foldRepair,
+                  &result.foldRepairedVertices);
     for (int& node : result.mesh.vertexNode) node = prepared.origin[size_t(node)];
     result.subdivisionSeconds += clock.seconds();
   }

@@ -57,9 +57,9 @@ struct SqmParameters {
   // Neighbouring triangles of the leaf fans and cycle bands joined into quads where the quad is fair
   // (TrianglePairing): beyond the papers, whose fans stay triangles; off gives the paper's mesh.
   bool pairTriangles = true;
-  int subdivisionLevels = 0;   // stage 8: Catmull-Clark levels with cone projection (SqmRefinement)
-  SharpScaling sharpScaling;   // stage 8: Bézier radius scaling near sharp vertices (SqmRefinement)
-  bool foldRepair = true;      // stage 8: refined vertices of faces that cut others back towards Catmull-Clark
+  int subdivisionLevels = 0;  // stage 8: Catmull-Clark levels with cone projection (SqmRefinement)
+  SharpScaling sharpScaling;  // stage 8: Bézier radius scaling near sharp vertices (SqmRefinement)
+  bool foldRepair = true;     // stage 8: refined vertices of faces that cut others back towards Catmull-Clark
 };
 
 struct SqmMesh {

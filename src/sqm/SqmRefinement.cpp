@@ -29,7 +29,7 @@ Eigen::Vector3d toEigen(const PolyMesh::Point& p) { return {p[0], p[1], p[2]}; }
 constexpr double kConeBlend = 0.8;
 
 struct ConePoint {
-  Eigen::Vector3d axis, radial;  // radial: unit vector from the axis towards the point
+  Eigen::Vector3d axis, radial;     // radial: unit vector from the axis towards the point
   double radius = 0, distance = 0;  // the cone's radius along `radial`; the point's distance from the axis
   bool found = false;
   Eigen::Vector3d onSurface() const { return axis + radius * radial; }
@@ -100,8 +100,10 @@ std::vector<Eigen::Vector3d> sharpVertices(PolyMesh& poly) {
   for (auto e : poly.edges()) {
     if (poly.is_boundary(e)) continue;
     const auto h = poly.halfedge_handle(e, 0);
-    const auto n0 = poly.normal(poly.face_handle(h)), n1 = poly.normal(poly.face_handle(poly.opposite_halfedge_handle(h)));
-    if (OpenMesh::dot(n0, n1) < 0) sharp[size_t(poly.to_vertex_handle(h).idx())] = sharp[size_t(poly.from_vertex_handle(h).idx())] = true;
+    const auto n0 = poly.normal(poly.face_handle(h)),
+               n1 = poly.normal(poly.face_handle(poly.opposite_halfedge_handle(h)));
+    if (OpenMesh::dot(n0, n1) < 0)
+      sharp[size_t(poly.to_vertex_handle(h).idx())] = sharp[size_t(poly.from_vertex_handle(h).idx())] = true;
   }
   poly.release_face_normals();
   std::vector<Eigen::Vector3d> points;
@@ -133,7 +135,8 @@ namespace {
 // as needed (at most kFoldRepairSteps times, then all the way); every other vertex stays on its cone.
 constexpr int kFoldRepairSteps = 6;
 
-int repairFolds(PolyMesh& poly, const std::vector<Eigen::Vector3d>& smooth, const std::vector<Eigen::Vector3d>& projected) {
+int repairFolds(PolyMesh& poly, const std::vector<Eigen::Vector3d>& smooth,
+                const std::vector<Eigen::Vector3d>& projected) {
   std::vector<std::vector<int>> faces;
   for (auto f : poly.faces()) {
     faces.emplace_back();
@@ -165,18 +168,20 @@ int repairFolds(PolyMesh& poly, const std::vector<Eigen::Vector3d>& smooth, cons
 
 }  // namespace
 
-int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling, bool foldRepair,
-                  int* repairedVertices) {
+int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling,
+                  bool foldRepair, int* repairedVertices) {
   if (levels <= 0 || mesh.faces.empty()) return 0;
   PolyMesh poly;
   std::vector<PolyMesh::VertexHandle> handles;
-  for (const auto& v : mesh.vertices) handles.push_back(poly.add_vertex(PolyMesh::Point(v.x(), v.y(), v.z())));
+  for (const auto& v : mesh.vertices)
+    handles.push_back(poly.add_vertex(PolyMesh::Point(v.x(), v.y(), v.z())));
   for (const auto& f : mesh.faces) {
     std::vector<PolyMesh::VertexHandle> face;
     for (int v : f) face.push_back(handles[size_t(v)]);
     poly.add_face(face);
   }
-  const std::vector<Eigen::Vector3d> sharp = scaling.enabled ? sharpVertices(poly) : std::vector<Eigen::Vector3d>{};
+  const std::vector<Eigen::Vector3d> sharp =
+      scaling.enabled ? sharpVertices(poly) : std::vector<Eigen::Vector3d>{};
   OpenMesh::Subdivider::Uniform::CatmullClarkT<PolyMesh> catmullClark;
   for (int level = 0; level < levels; ++level) {
     catmullClark.attach(poly);
@@ -191,7 +196,9 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
       if (!cone.found)
         q = p;
       else if (!sharp.empty())  // the paper's scaling, on the nearest cone
-        q = cone.axis + cone.radius * sharpScaleFactor(distanceToNearest(p, sharp) / cone.radius, scaling.minimumScale) * cone.radial;
+        q = cone.axis +
+            cone.radius * sharpScaleFactor(distanceToNearest(p, sharp) / cone.radius, scaling.minimumScale) *
+                cone.radial;
       projected.push_back(q);
       poly.set_point(v, PolyMesh::Point(q.x(), q.y(), q.z()));
     }

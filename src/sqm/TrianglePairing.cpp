@@ -21,7 +21,8 @@ std::vector<int> joinedQuad(const std::vector<int>& a, const std::vector<int>& b
   for (int i = 0; i < 3; ++i) {
     const int y = a[size_t((i + 1) % 3)], z = a[size_t((i + 2) % 3)];  // edge y -> z of a; b has z -> y
     for (int j = 0; j < 3; ++j)
-      if (b[size_t(j)] == z && b[size_t((j + 1) % 3)] == y) return {y, b[size_t((j + 2) % 3)], z, a[size_t(i)]};
+      if (b[size_t(j)] == z && b[size_t((j + 1) % 3)] == y)
+        return {y, b[size_t((j + 2) % 3)], z, a[size_t(i)]};
   }
   return {};
 }
@@ -100,7 +101,8 @@ std::vector<size_t> walkStrip(const std::vector<std::vector<int>>& faces, const 
   std::vector<size_t> order{start};
   for (size_t previous = size_t(-1);;) {
     const auto& n = neighbours[order.back()];
-    const auto next = std::find_if(n.begin(), n.end(), [&](size_t u) { return u != previous && u != order.front(); });
+    const auto next =
+        std::find_if(n.begin(), n.end(), [&](size_t u) { return u != previous && u != order.front(); });
     if (next == n.end()) break;
     previous = order.back();
     order.push_back(*next);
@@ -129,7 +131,8 @@ int pairStripTriangles(const std::vector<Eigen::Vector3d>& vertices, std::vector
     std::vector<std::vector<int>> quad(weight.size());
     for (size_t k = 0; k < weight.size(); ++k) {
       quad[k] = joinedQuad(faces[order[k]], faces[order[(k + 1) % order.size()]]);
-      const auto fold = quad[k].empty() ? std::array<double, 2>{180.0, 180.0} : foldDegrees(vertices, quad[k]);
+      const auto fold =
+          quad[k].empty() ? std::array<double, 2>{180.0, 180.0} : foldDegrees(vertices, quad[k]);
       const bool fair = fold[0] < maxFoldDegrees && fold[1] < kMaxFoldAcross;
       weight[k] = fair ? 1000.0 + (1.0 - fold[0] / 180.0) : -1.0;  // more pairs, then flatter
     }

@@ -51,13 +51,26 @@ TEST(Cli, HelpAndVersionExitZero) {
 }
 
 TEST(Cli, UsageErrorsExitTwo) {
-  for (const char* args : {"", "frobnicate", "render", "render in.off", "render in.off -o out.png --size 12",
-                           "render in.off -o out.png --bogus", "render in.off -o out.jpg",
-                           "render in.off -o out.png --camera 1", "render in.off -o", "skeleton in.off",
-                           "skeleton in.off -o out.png", "skeleton in.off -o s.vtp --nodes -3",
-                           "skeleton in.off -o s.vtp --solver magic", "skeleton a.off b.off -o s.vtp",
-                           "sqm s.vtp", "sqm s.vtp -o m.png", "sqm s.vtp -o m.vtp --smoothing median",
-                           "sqm s.vtp -o m.vtp --ring-vertices 2", "sqm s.vtp -o m.vtp --subdivide 9", "sqm s.vtp -o m.vtp --pairing best",
+  for (const char* args : {"",
+                           "frobnicate",
+                           "render",
+                           "render in.off",
+                           "render in.off -o out.png --size 12",
+                           "render in.off -o out.png --bogus",
+                           "render in.off -o out.jpg",
+                           "render in.off -o out.png --camera 1",
+                           "render in.off -o",
+                           "skeleton in.off",
+                           "skeleton in.off -o out.png",
+                           "skeleton in.off -o s.vtp --nodes -3",
+                           "skeleton in.off -o s.vtp --solver magic",
+                           "skeleton a.off b.off -o s.vtp",
+                           "sqm s.vtp",
+                           "sqm s.vtp -o m.png",
+                           "sqm s.vtp -o m.vtp --smoothing median",
+                           "sqm s.vtp -o m.vtp --ring-vertices 2",
+                           "sqm s.vtp -o m.vtp --subdivide 9",
+                           "sqm s.vtp -o m.vtp --pairing best",
                            "sqm s.vtp -o m.vtp --sharp-scale 0"}) {
     auto r = runCommand(medialCommand(args));
     EXPECT_EQ(r.exitCode, 2) << "medial " << args << "\n" << r.err;
@@ -68,8 +81,9 @@ TEST(Cli, UsageErrorsExitTwo) {
 TEST(Cli, SketchWritesSkeletonAndMeshThatSqmMeshes) {
   const std::string dir = scratchDir("cli-sketch");
   const std::string skeleton = dir + "/bird.vtp", mesh = dir + "/bird-mesh.vtp", tube = dir + "/bird-sqm.vtp";
-  auto r = runCommand(medialCommand("sketch " + dataPath("sketches/bird.txt") + " -o " + skeleton + " --mesh " + mesh +
-                                    " --simplify 8 --part 2:5,30,30,10 --timings --quiet"));
+  auto r =
+      runCommand(medialCommand("sketch " + dataPath("sketches/bird.txt") + " -o " + skeleton + " --mesh " +
+                               mesh + " --simplify 8 --part 2:5,30,30,10 --timings --quiet"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("\"sketch\""), std::string::npos) << r.out;
   EXPECT_TRUE(std::filesystem::exists(skeleton));
@@ -79,10 +93,11 @@ TEST(Cli, SketchWritesSkeletonAndMeshThatSqmMeshes) {
 }
 
 TEST(Cli, SketchUsageErrorsExitTwo) {
-  for (const char* args : {"sketch", "sketch a.txt", "sketch a.txt -o s.png", "sketch a.txt -o s.vtp --mesh m.jpg",
-                           "sketch a.txt -o s.vtp --prune -1", "sketch a.txt -o s.vtp --part 2",
-                           "sketch a.txt -o s.vtp --part 0:1,2,3,4", "sketch a.txt -o s.vtp --part 1:1,2",
-                           "sketch a.txt -o s.vtp --thickness 0", "sketch a.txt b.txt -o s.vtp"}) {
+  for (const char* args :
+       {"sketch", "sketch a.txt", "sketch a.txt -o s.png", "sketch a.txt -o s.vtp --mesh m.jpg",
+        "sketch a.txt -o s.vtp --prune -1", "sketch a.txt -o s.vtp --part 2",
+        "sketch a.txt -o s.vtp --part 0:1,2,3,4", "sketch a.txt -o s.vtp --part 1:1,2",
+        "sketch a.txt -o s.vtp --thickness 0", "sketch a.txt b.txt -o s.vtp"}) {
     auto r = runCommand(medialCommand(args));
     EXPECT_EQ(r.exitCode, 2) << "medial " << args << "\n" << r.err;
     EXPECT_FALSE(r.err.empty()) << "medial " << args;
@@ -92,15 +107,13 @@ TEST(Cli, SketchUsageErrorsExitTwo) {
 TEST(Cli, SketchBadStrokesExitOneWithoutOutput) {
   const std::string dir = scratchDir("cli-sketch-bad");
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"0 0\n10 0\n", "at least 3"},
-      {"0 0\n100 100\n100 0\n0 60\n", "crosses itself"},
-      {"0 0\n10 0\n20 0\n", "no area"},
-      {"0 0\n100 0\nnan 50\n0 100\n", "non-finite"},
-      {"0 0\n100 0 7\n", "expected 'x y'"},
-      {"0 0\n100 0\n100 50\n1 0 0 0\n0 1 0 0\n", "rows instead of 4"},
+      {"0 0\n10 0\n", "at least 3"},        {"0 0\n100 100\n100 0\n0 60\n", "crosses itself"},
+      {"0 0\n10 0\n20 0\n", "no area"},     {"0 0\n100 0\nnan 50\n0 100\n", "non-finite"},
+      {"0 0\n100 0 7\n", "expected 'x y'"}, {"0 0\n100 0\n100 50\n1 0 0 0\n0 1 0 0\n", "rows instead of 4"},
   };
   for (size_t k = 0; k < cases.size(); ++k) {
-    const std::string input = dir + "/bad" + std::to_string(k) + ".txt", output = dir + "/bad" + std::to_string(k) + ".vtp";
+    const std::string input = dir + "/bad" + std::to_string(k) + ".txt",
+                      output = dir + "/bad" + std::to_string(k) + ".vtp";
     std::ofstream(input) << cases[k].first;
     auto r = runCommand(medialCommand("sketch " + input + " -o " + output + " --quiet"));
     EXPECT_EQ(r.exitCode, 1) << cases[k].first << r.err;
@@ -125,8 +138,8 @@ TEST(Cli, SkeletonOfTorusWritesSkeletonAndSegmentation) {
   EXPECT_TRUE(std::filesystem::exists(skeleton));
   EXPECT_TRUE(std::filesystem::exists(segmentation));
   // The skeleton renders as a valid skeleton (Radius on every node).
-  auto render = runCommand(medialCommand("render " + dataPath("meshes/torus.off") + " " + skeleton +
-                                         " -o " + dir + "/torus-skeleton.png --size 320x240 --quiet"));
+  auto render = runCommand(medialCommand("render " + dataPath("meshes/torus.off") + " " + skeleton + " -o " +
+                                         dir + "/torus-skeleton.png --size 320x240 --quiet"));
   EXPECT_EQ(render.exitCode, 0) << render.err;
 }
 
@@ -139,7 +152,8 @@ long skeletonCycles(const std::string& path) {
   medial::UnionFind sets{size_t(skeleton->GetNumberOfPoints())};
   long components = long(sets.size());
   for (vtkIdType c = 0; c < skeleton->GetNumberOfCells(); ++c)
-    if (sets.join(int(skeleton->GetCell(c)->GetPointId(0)), int(skeleton->GetCell(c)->GetPointId(1)))) --components;
+    if (sets.join(int(skeleton->GetCell(c)->GetPointId(0)), int(skeleton->GetCell(c)->GetPointId(1))))
+      --components;
   return long(skeleton->GetNumberOfCells()) - long(sets.size()) + components;
 }
 
@@ -149,10 +163,12 @@ TEST(Cli, SkeletonPutsBackTheCyclesSurgeryLostAndSaysSo) {
   const std::string dir = scratchDir("cli-skeleton-cycles");
   auto repaired = runCommand(medialCommand("skeleton " + femur + " -o " + dir + "/femur.vtp --quiet"));
   ASSERT_EQ(repaired.exitCode, 0) << repaired.err;
-  EXPECT_NE(repaired.err.find("2 cycles that surgery lost put back (the mesh has genus 2)"), std::string::npos)
+  EXPECT_NE(repaired.err.find("2 cycles that surgery lost put back (the mesh has genus 2)"),
+            std::string::npos)
       << repaired.err;
   EXPECT_EQ(skeletonCycles(dir + "/femur.vtp"), 2);
-  auto plain = runCommand(medialCommand("skeleton " + femur + " -o " + dir + "/femur-plain.vtp --no-cycle-repair --quiet"));
+  auto plain = runCommand(
+      medialCommand("skeleton " + femur + " -o " + dir + "/femur-plain.vtp --no-cycle-repair --quiet"));
   ASSERT_EQ(plain.exitCode, 0) << plain.err;
   EXPECT_EQ(plain.err.find("put back"), std::string::npos) << plain.err;
   EXPECT_EQ(skeletonCycles(dir + "/femur-plain.vtp"), 0);  // surgery loses both of the femur's tiny handles
@@ -213,7 +229,8 @@ TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
     if (line.rfind("f ", 0) == 0 && std::count(line.begin(), line.end(), ' ') == 4) ++quads;
   EXPECT_GT(quads, 100);
   // A mesh is no skeleton; subdivision gives more faces, all quads.
-  auto mesh = runCommand(medialCommand("sqm " + dataPath("meshes/torus.off") + " -o " + dir + "/t.vtp --quiet"));
+  auto mesh =
+      runCommand(medialCommand("sqm " + dataPath("meshes/torus.off") + " -o " + dir + "/t.vtp --quiet"));
   EXPECT_EQ(mesh.exitCode, 1);
   EXPECT_EQ(lineCount(mesh.err), 1) << mesh.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/t.vtp"));
@@ -231,18 +248,21 @@ TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
   EXPECT_EQ(fineTriangles, 0);
   EXPECT_GT(fineQuads, 16 * 100);
   // A repair is told on stderr: the quadruped's spine nodes inside its hips' spheres are merged.
-  auto merged = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/quadruped.vtp") + " -o " + dir + "/q.vtp --quiet"));
+  auto merged = runCommand(
+      medialCommand("sqm " + dataPath("skeletons/sqm/quadruped.vtp") + " -o " + dir + "/q.vtp --quiet"));
   EXPECT_EQ(merged.exitCode, 0) << merged.err;
   EXPECT_NE(merged.err.find("merged into it"), std::string::npos) << merged.err;
   // The worm's two leaf fans of 8: four quads each by default, eight triangles with --triangle-fans.
   auto countTriangles = [&](const std::string& path) {
     std::ifstream in(path);
     int triangles = 0;
-    while (std::getline(in, line)) triangles += line.rfind("f ", 0) == 0 && std::count(line.begin(), line.end(), ' ') == 3;
+    while (std::getline(in, line))
+      triangles += line.rfind("f ", 0) == 0 && std::count(line.begin(), line.end(), ' ') == 3;
     return triangles;
   };
   for (const char* option : {"", " --triangle-fans"}) {
-    auto worm = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/worm.vtp") + " -o " + dir + "/w.obj --quiet" + option));
+    auto worm = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/worm.vtp") + " -o " + dir +
+                                         "/w.obj --quiet" + option));
     ASSERT_EQ(worm.exitCode, 0) << worm.err;
     EXPECT_EQ(countTriangles(dir + "/w.obj"), *option ? 16 : 0) << option;
   }
@@ -255,17 +275,18 @@ TEST(Cli, CenterlineOfAPhantomAndItsErrors) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("\"centerline\""), std::string::npos) << r.out;
   EXPECT_TRUE(std::filesystem::exists(dir + "/helix.vtp"));
-  auto missing = runCommand(medialCommand("centerline " + dataPath("volumes/tubes/helix.nii.gz") + " -o " + dir +
-                                          "/x.vtp --label 9 --quiet"));
+  auto missing = runCommand(medialCommand("centerline " + dataPath("volumes/tubes/helix.nii.gz") + " -o " +
+                                          dir + "/x.vtp --label 9 --quiet"));
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_EQ(lineCount(missing.err), 1) << missing.err;
   EXPECT_NE(missing.err.find("no voxel has the label 9"), std::string::npos) << missing.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.vtp"));
-  auto notVolume = runCommand(medialCommand("centerline " + dataPath("meshes/torus.off") + " -o " + dir + "/y.vtp --quiet"));
+  auto notVolume = runCommand(
+      medialCommand("centerline " + dataPath("meshes/torus.off") + " -o " + dir + "/y.vtp --quiet"));
   EXPECT_EQ(notVolume.exitCode, 1);
   for (const char* bad : {"--threshold 5", "--label 1 --threshold 0:1", "--seed 1,2", "--label 1.5"}) {
-    auto usage = runCommand(medialCommand("centerline " + dataPath("volumes/tubes/helix.nii.gz") + " -o " + dir +
-                                          "/z.vtp " + bad));
+    auto usage = runCommand(medialCommand("centerline " + dataPath("volumes/tubes/helix.nii.gz") + " -o " +
+                                          dir + "/z.vtp " + bad));
     EXPECT_EQ(usage.exitCode, 2) << bad << ": " << usage.err;
   }
 }
@@ -273,10 +294,11 @@ TEST(Cli, CenterlineOfAPhantomAndItsErrors) {
 TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
   // The DICOM colon phantom: sections every 2 mm as CSV, the unfolded wall as PNG.
   const std::string dir = scratchDir("cli-colon");
-  ASSERT_EQ(std::system((binaryDir() + "/bin/medial-make-colon-phantom " + dir + "/dicom > /dev/null").c_str()), 0);
-  auto r = runCommand(medialCommand("centerline " + dir + "/dicom -o " + dir + "/colon.vtp --threshold -1024:-600 " +
-                                    "--profile " + dir + "/profile.csv --terrain " + dir + "/terrain.png " +
-                                    "--section-spacing 2 --quiet"));
+  ASSERT_EQ(
+      std::system((binaryDir() + "/bin/medial-make-colon-phantom " + dir + "/dicom > /dev/null").c_str()), 0);
+  auto r = runCommand(medialCommand(
+      "centerline " + dir + "/dicom -o " + dir + "/colon.vtp --threshold -1024:-600 " + "--profile " + dir +
+      "/profile.csv --terrain " + dir + "/terrain.png " + "--section-spacing 2 --quiet"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   std::ifstream csv(dir + "/profile.csv");
   std::string header, row;
@@ -290,7 +312,8 @@ TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
     if (std::sscanf(row.c_str(), "%lf,%lf,%lf,%lf,%lf", &arc, &low, &high, &perimeter, &area) != 5) continue;
     arcs.push_back(arc);
     minima.push_back(low);
-    if (low <= high && low > 10 && high < 40) ++plausible;  // the colon is 16 to 24 mm wide, folds 18 % narrower
+    if (low <= high && low > 10 && high < 40)
+      ++plausible;  // the colon is 16 to 24 mm wide, folds 18 % narrower
   }
   // Each polyp narrows the section at its place: the min diameter there is at least half the polyp's radius
   // below the median of the sections within 12 mm.
@@ -303,7 +326,9 @@ TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
   int polypCount = 0;
   while (std::getline(polyps, row)) {
     double p[3], radius;
-    if (row.empty() || row[0] == '#' || std::sscanf(row.c_str(), "%lf %lf %lf %lf", &p[0], &p[1], &p[2], &radius) != 4) continue;
+    if (row.empty() || row[0] == '#' ||
+        std::sscanf(row.c_str(), "%lf %lf %lf %lf", &p[0], &p[1], &p[2], &radius) != 4)
+      continue;
     ++polypCount;
     vtkIdType nearest = 0;
     double best = 1e300;
@@ -318,7 +343,8 @@ TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
     double narrowest = 1e300;
     for (size_t k = 0; k < arcs.size(); ++k) {
       if (std::fabs(arcs[k] - at) <= 12 && std::isfinite(minima[k])) around.push_back(minima[k]);
-      if (std::fabs(arcs[k] - at) <= 3 && std::isfinite(minima[k])) narrowest = std::min(narrowest, minima[k]);
+      if (std::fabs(arcs[k] - at) <= 3 && std::isfinite(minima[k]))
+        narrowest = std::min(narrowest, minima[k]);
     }
     ASSERT_FALSE(around.empty());
     std::nth_element(around.begin(), around.begin() + long(around.size() / 2), around.end());
@@ -331,10 +357,13 @@ TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
   std::ifstream axisFile(dir + "/dicom/axis.txt");
   while (std::getline(axisFile, row)) {
     std::array<double, 3> p;
-    if (!row.empty() && row[0] != '#' && std::sscanf(row.c_str(), "%lf %lf %lf", &p[0], &p[1], &p[2]) == 3) axis.push_back(p);
+    if (!row.empty() && row[0] != '#' && std::sscanf(row.c_str(), "%lf %lf %lf", &p[0], &p[1], &p[2]) == 3)
+      axis.push_back(p);
   }
   ASSERT_GT(axis.size(), 100u);
-  auto distance = [](const double* p, const std::array<double, 3>& q) { return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]); };
+  auto distance = [](const double* p, const std::array<double, 3>& q) {
+    return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+  };
   double sum = 0;
   int counted = 0;
   for (vtkIdType i = 0; i < line->GetOutput()->GetNumberOfPoints(); ++i) {
@@ -344,7 +373,8 @@ TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
     double best = 1e300;
     for (size_t k = 0; k + 1 < axis.size(); ++k) {
       double ab[3], ap[3], t = 0, length2 = 0;
-      for (int c = 0; c < 3; ++c) ab[c] = axis[k + 1][size_t(c)] - axis[k][size_t(c)], ap[c] = p[c] - axis[k][size_t(c)];
+      for (int c = 0; c < 3; ++c)
+        ab[c] = axis[k + 1][size_t(c)] - axis[k][size_t(c)], ap[c] = p[c] - axis[k][size_t(c)];
       for (int c = 0; c < 3; ++c) t += ab[c] * ap[c], length2 += ab[c] * ab[c];
       t = std::clamp(t / std::max(length2, 1e-300), 0.0, 1.0);
       best = std::min(best, std::hypot(ap[0] - t * ab[0], ap[1] - t * ab[1], ap[2] - t * ab[2]));
@@ -361,16 +391,19 @@ TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
   terrain->Update();
   EXPECT_EQ(terrain->GetOutput()->GetDimensions()[0], 72);
   EXPECT_EQ(terrain->GetOutput()->GetDimensions()[1], rows);
-  auto usage = runCommand(medialCommand("centerline " + dir + "/dicom -o " + dir + "/x.vtp --terrain " + dir + "/t.jpg"));
+  auto usage = runCommand(
+      medialCommand("centerline " + dir + "/dicom -o " + dir + "/x.vtp --terrain " + dir + "/t.jpg"));
   EXPECT_EQ(usage.exitCode, 2) << usage.err;
 }
 
 TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {
   MEDIAL_REQUIRE_DISPLAY();
   const std::string dir = scratchDir("cli-render");
-  for (const char* input : {"meshes/torus.off", "meshes/capsule.vtp", "skeletons/figure.vtp", "skeletons/hand.swc"}) {
+  for (const char* input :
+       {"meshes/torus.off", "meshes/capsule.vtp", "skeletons/figure.vtp", "skeletons/hand.swc"}) {
     const std::string png = dir + "/" + std::filesystem::path(input).stem().string() + ".png";
-    auto r = runCommand(medialCommand("render " + dataPath(input) + " -o " + png + " --size 200x150 --quiet"));
+    auto r =
+        runCommand(medialCommand("render " + dataPath(input) + " -o " + png + " --size 200x150 --quiet"));
     ASSERT_EQ(r.exitCode, 0) << input << ": " << r.err;
     EXPECT_GT(foregroundFractionOfPng(png), 0.05) << input << " rendered blank";
   }
@@ -392,7 +425,8 @@ TEST(Cli, RenderFailureIsOneLineAndLeavesNoFile) {
   EXPECT_EQ(lineCount(invalid.err), 1) << invalid.err;
   EXPECT_NE(invalid.err.find("radius -3"), std::string::npos) << invalid.err;
 
-  auto unwritable = runCommand(medialCommand("render " + dataPath("meshes/torus.off") + " -o " + dir + "/no/such/dir/x.png"));
+  auto unwritable = runCommand(
+      medialCommand("render " + dataPath("meshes/torus.off") + " -o " + dir + "/no/such/dir/x.png"));
   EXPECT_EQ(unwritable.exitCode, 1);
   EXPECT_EQ(lineCount(unwritable.err), 1) << unwritable.err;
   EXPECT_TRUE(std::filesystem::is_empty(dir + "/") || !std::filesystem::exists(png));
@@ -403,8 +437,8 @@ TEST(Cli, RenderFailureIsOneLineAndLeavesNoFile) {
 TEST(Cli, RenderStartsPrivateXvfbWithoutDisplay) {
   if (std::system("command -v Xvfb >/dev/null") != 0) GTEST_SKIP() << "Xvfb is not installed";
   const std::string png = scratchDir("cli-private-xvfb") + "/torus.png";
-  auto r = runCommand("env -u DISPLAY " + medialCommand("render " + dataPath("meshes/torus.off") + " -o " + png +
-                                                 " --size 160x120"));
+  auto r = runCommand("env -u DISPLAY " + medialCommand("render " + dataPath("meshes/torus.off") + " -o " +
+                                                        png + " --size 160x120"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_GT(foregroundFractionOfPng(png), 0.05);
 }
@@ -412,7 +446,8 @@ TEST(Cli, RenderStartsPrivateXvfbWithoutDisplay) {
 TEST(Cli, TimingsArePrintedAsJson) {
   MEDIAL_REQUIRE_DISPLAY();
   const std::string png = scratchDir("cli-timings") + "/t.png";
-  auto r = runCommand(medialCommand("render " + dataPath("meshes/torus.off") + " -o " + png + " --size 64x48 --timings"));
+  auto r = runCommand(
+      medialCommand("render " + dataPath("meshes/torus.off") + " -o " + png + " --size 64x48 --timings"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.out.front(), '{');
   EXPECT_NE(r.out.find("\"read\": "), std::string::npos) << r.out;
@@ -452,11 +487,12 @@ TEST(Cli, RenderGhostsAVolumeRendering) {
   MEDIAL_REQUIRE_DISPLAY();
   // The helix phantom drawn by ray casting (full-range preset) hides its axis; the ghost shows it.
   const std::string dir = scratchDir("cli-ghost-volume");
-  const std::string volume = dataPath("volumes/tubes/helix.nii.gz"), axis = dataPath("volumes/tubes/helix-axis.vtp");
+  const std::string volume = dataPath("volumes/tubes/helix.nii.gz"),
+                    axis = dataPath("volumes/tubes/helix-axis.vtp");
   auto renderTo = [&](const std::string& name, const std::string& options) {
     const std::string png = dir + "/" + name;
-    auto r = runCommand(medialCommand("render " + volume + " " + axis + " --volume-rendering full-range " + options +
-                                      " -o " + png + " --size 200x150 --quiet"));
+    auto r = runCommand(medialCommand("render " + volume + " " + axis + " --volume-rendering full-range " +
+                                      options + " -o " + png + " --size 200x150 --quiet"));
     EXPECT_EQ(r.exitCode, 0) << options << ": " << r.err;
     vtkSmartPointer<vtkImageData> image;
     image.TakeReference(loadPng(png));
@@ -471,10 +507,10 @@ TEST(Cli, RenderGhostsAVolumeRendering) {
 
 TEST(Cli, RenderGhostOptionErrors) {
   const std::string mesh = dataPath("meshes/torus.off");
-  for (const char* bad : {"--ghost-importance 1", "--ghost x.vtp --ghost-importance 1,1", "--ghost x.vtp --ghost-importance 0",
-                          "--ghost x.vtp --ghost-opacity 2", "--ghost x.vtp --ghost-conflict closest",
-                          "--ghost x.vtp --ghost-map-scale 0", "--ghost", "--ghost-layers",
-                          "--volume-rendering mri"}) {
+  for (const char* bad :
+       {"--ghost-importance 1", "--ghost x.vtp --ghost-importance 1,1", "--ghost x.vtp --ghost-importance 0",
+        "--ghost x.vtp --ghost-opacity 2", "--ghost x.vtp --ghost-conflict closest",
+        "--ghost x.vtp --ghost-map-scale 0", "--ghost", "--ghost-layers", "--volume-rendering mri"}) {
     auto r = runCommand(medialCommand("render " + mesh + " -o out.png " + bad));
     EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.err;
   }
@@ -517,8 +553,8 @@ TEST(Cli, ReadmeUsageMatchesEveryCommandsHelp) {
     ASSERT_EQ(help.exitCode, 0) << command;
     const size_t start = help.out.find("usage: ") + 7;
     const std::string synopsis = help.out.substr(start, help.out.find("\n\n", start) - start);
-    EXPECT_EQ(words(readmeUsage[command]), words(synopsis)) << "README.md's usage of medial " << command
-                                                          << " differs from medial " << command << " --help";
+    EXPECT_EQ(words(readmeUsage[command]), words(synopsis))
+        << "README.md's usage of medial " << command << " differs from medial " << command << " --help";
   }
 }
 
@@ -542,17 +578,20 @@ TEST(Cli, UsageErrorIsOneLineWithAHint) {
 TEST(Cli, AWriteThatFailsMidwayLeavesNoFileBehind) {
   const std::string dir = scratchDir("cli-disk-full");
   const std::string input = dataPath("volumes/tubes/helix.nii.gz");
-  for (const auto& [blocks, failing] : {std::make_pair(30, std::string("profile.csv")), std::make_pair(4, std::string("helix.vtp"))}) {
+  for (const auto& [blocks, failing] :
+       {std::make_pair(30, std::string("profile.csv")), std::make_pair(4, std::string("helix.vtp"))}) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
-    const auto r = runCommand("sh -c \"trap '' XFSZ; ulimit -f " + std::to_string(blocks) + "; exec " + medialExe() +
-                              " centerline " + input + " -o " + dir + "/helix.vtp --label 1 --profile " + dir +
-                              "/profile.csv --section-spacing 0.05 --quiet\"");
+    const auto r =
+        runCommand("sh -c \"trap '' XFSZ; ulimit -f " + std::to_string(blocks) + "; exec " + medialExe() +
+                   " centerline " + input + " -o " + dir + "/helix.vtp --label 1 --profile " + dir +
+                   "/profile.csv --section-spacing 0.05 --quiet\"");
     EXPECT_EQ(r.exitCode, 1) << r.err;
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_NE(r.err.find(dir + "/" + failing), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir + "/" + failing));
     for (const auto& entry : std::filesystem::directory_iterator(dir))
-      EXPECT_EQ(entry.path().filename().string().rfind(".tmp-", 0), std::string::npos) << "left behind: " << entry.path();
+      EXPECT_EQ(entry.path().filename().string().rfind(".tmp-", 0), std::string::npos)
+          << "left behind: " << entry.path();
   }
 }

@@ -26,7 +26,7 @@ namespace {
 struct Sample {
   const char* name;
   int genus;
-  bool closed;    // inside tests are meaningful for closed meshes only
+  bool closed;  // inside tests are meaningful for closed meshes only
   // Edge midpoints allowed outside: 0, except where the surface intersects itself (man: 848 triangle pairs
   // where the fingers of the fists and the toes interpenetrate), so that inside is ambiguous there.
   int midpointsOutside = 0;
@@ -77,28 +77,30 @@ TEST_P(ContractionSamples, ConnectedWithItsCyclesAndInside) {
   triangles->Update();
   const medial::InsideTest inside(medial::toTriangleMesh(triangles->GetOutput()));
   int nodesInside = 0, midpointsInside = 0;
-  for (vtkIdType i = 0; i < nodes; ++i) nodesInside += inside.contains(Eigen::Vector3d(skeleton->GetPoint(i)));
+  for (vtkIdType i = 0; i < nodes; ++i)
+    nodesInside += inside.contains(Eigen::Vector3d(skeleton->GetPoint(i)));
   for (const auto& [a, b] : edges)
-    midpointsInside +=
-        inside.contains(0.5 * (Eigen::Vector3d(skeleton->GetPoint(a)) + Eigen::Vector3d(skeleton->GetPoint(b))));
-  std::printf("%s: %d of %lld nodes and %d of %zu edge midpoints inside, %ld cycles (genus %d)\n", sample.name,
-              nodesInside, static_cast<long long>(nodes), midpointsInside, edges.size(), cycles, sample.genus);
+    midpointsInside += inside.contains(
+        0.5 * (Eigen::Vector3d(skeleton->GetPoint(a)) + Eigen::Vector3d(skeleton->GetPoint(b))));
+  std::printf("%s: %d of %lld nodes and %d of %zu edge midpoints inside, %ld cycles (genus %d)\n",
+              sample.name, nodesInside, static_cast<long long>(nodes), midpointsInside, edges.size(), cycles,
+              sample.genus);
   EXPECT_EQ(nodesInside, nodes);
   EXPECT_GE(midpointsInside, long(edges.size()) - sample.midpointsOutside);
 }
 
-INSTANTIATE_TEST_SUITE_P(Cgal, ContractionSamples,
-                         ::testing::Values(Sample{"armadillo", 0, true}, Sample{"man", 0, true, 1},
-                                           Sample{"hand", 0, true}, Sample{"elephant", 3, true},
-                                           Sample{"femur", 2, true}, Sample{"knot1", 1, true},
-                                           Sample{"mannequin-devil", 0, false},
-                                           // above the default vertex budget: decimated before the contraction
-                                           Sample{"diplodocus", 0, true}, Sample{"bunny00", 0, true},
-                                           Sample{"refined_elephant", 3, true}),
-                         [](const ::testing::TestParamInfo<Sample>& info) {
-                           std::string name = info.param.name;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Cgal, ContractionSamples,
+    ::testing::Values(Sample{"armadillo", 0, true}, Sample{"man", 0, true, 1}, Sample{"hand", 0, true},
+                      Sample{"elephant", 3, true}, Sample{"femur", 2, true}, Sample{"knot1", 1, true},
+                      Sample{"mannequin-devil", 0, false},
+                      // above the default vertex budget: decimated before the contraction
+                      Sample{"diplodocus", 0, true}, Sample{"bunny00", 0, true},
+                      Sample{"refined_elephant", 3, true}),
+    [](const ::testing::TestParamInfo<Sample>& info) {
+      std::string name = info.param.name;
+      std::replace(name.begin(), name.end(), '-', '_');
+      return name;
+    });
 
 }  // namespace

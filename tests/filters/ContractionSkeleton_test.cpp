@@ -101,7 +101,8 @@ TEST(ContractionSkeleton, NaNCoordinateIsAnError) {
   auto errors = medial::ErrorCollector::Watch(filter);
   filter->SetInputData(copy);
   filter->Update();
-  EXPECT_NE(errors->Joined().find("vertex 5 has a non-finite coordinate"), std::string::npos) << errors->Joined();
+  EXPECT_NE(errors->Joined().find("vertex 5 has a non-finite coordinate"), std::string::npos)
+      << errors->Joined();
   EXPECT_EQ(filter->GetOutput(0)->GetNumberOfPoints(), 0);
   EXPECT_EQ(filter->GetOutput(1)->GetNumberOfPoints(), 0);
 }

@@ -156,8 +156,9 @@ TEST(Readers, CgalSampleMeshesHaveTheirKnownTopology) {
     const char* name;
     vtkIdType vertices, genus, borderEdges;
   };
-  for (const Known& k : {Known{"armadillo", 26002, 0, 0}, Known{"elephant", 2775, 3, 0}, Known{"femur", 3897, 2, 0},
-                         Known{"knot1", 3200, 1, 0}, Known{"mannequin-devil", 12977, 0, 64}}) {
+  for (const Known& k :
+       {Known{"armadillo", 26002, 0, 0}, Known{"elephant", 2775, 3, 0}, Known{"femur", 3897, 2, 0},
+        Known{"knot1", 3200, 1, 0}, Known{"mannequin-devil", 12977, 0, 64}}) {
     const std::string path = externalPath(std::string("cgal/meshes/") + k.name + ".off");
     MEDIAL_REQUIRE_FILE(path);
     const ReadResult r = readFile(path);
@@ -310,12 +311,12 @@ TEST(Readers, ClearErrorsOnBadFiles) {
   struct Case {
     std::string path, expected;
   };
-  for (const Case& c : {Case{dir + "/missing.off", "no such file"}, Case{dir + "/notes.docx", "unsupported file type"},
-                        Case{dir + "/notes.txt", "notes.txt:1: expected 'x y'"},
-                        Case{dir + "/garbage.vtp", ""}, Case{dir + "/garbage.off", "the file ends early (3 vertices and 1 faces announced, 2 and"},
-                        Case{dir + "/bad-index.off", "vertex that does not exist"},
-                        Case{dir + "/empty.obj", "holds no mesh"}, Case{dir + "/garbage.nii", ""},
-                        Case{dir + "/garbage.inv3", "not an InVesalius project"}}) {
+  for (const Case& c :
+       {Case{dir + "/missing.off", "no such file"}, Case{dir + "/notes.docx", "unsupported file type"},
+        Case{dir + "/notes.txt", "notes.txt:1: expected 'x y'"}, Case{dir + "/garbage.vtp", ""},
+        Case{dir + "/garbage.off", "the file ends early (3 vertices and 1 faces announced, 2 and"},
+        Case{dir + "/bad-index.off", "vertex that does not exist"}, Case{dir + "/empty.obj", "holds no mesh"},
+        Case{dir + "/garbage.nii", ""}, Case{dir + "/garbage.inv3", "not an InVesalius project"}}) {
     const ReadResult r = readFile(c.path);
     EXPECT_FALSE(r.error.empty()) << c.path;
     EXPECT_NE(r.error.find(c.path), std::string::npos) << r.error;
@@ -353,8 +354,7 @@ TEST(Readers, DicomSeriesDirectory) {
     itk::EncapsulateMetaData<std::string>(d, "0020|000e", "1.2.826.0.1.3680043.2.1125.1.2");
     itk::EncapsulateMetaData<std::string>(d, "0020|0013", std::to_string(z + 1));
     itk::EncapsulateMetaData<std::string>(d, "0020|0037", "1\\0\\0\\0\\1\\0");
-    itk::EncapsulateMetaData<std::string>(d, "0020|0032",
-                                          "-20\\15\\" + std::to_string(100.0 + 1.25 * z));
+    itk::EncapsulateMetaData<std::string>(d, "0020|0032", "-20\\15\\" + std::to_string(100.0 + 1.25 * z));
     itk::EncapsulateMetaData<std::string>(d, "0028|0030", "0.7\\0.7");
     itk::EncapsulateMetaData<std::string>(d, "0018|0050", "1.25");
     dictionaries.push_back(&d);

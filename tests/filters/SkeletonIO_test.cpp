@@ -1,4 +1,5 @@
-// Skeleton I/O (docs/ARCHITECTURE.md §4): SWC and VTP round trips, and each validation error through the readers.
+// Skeleton I/O (docs/ARCHITECTURE.md §4): SWC and VTP round trips, and each validation error through the
+// readers.
 #include "TestPaths.h"
 
 #include "MedialErrorCollector.h"
@@ -110,7 +111,8 @@ bool writeWith(const std::string& path, vtkPolyData* data, std::string* error = 
 }
 
 // Writes `skeleton` to dir/name with vtkMedialPolyDataWriter and reads it back with vtkMedialReader.
-vtkSmartPointer<vtkPolyData> roundTrip(vtkPolyData* skeleton, const std::string& dir, const std::string& name) {
+vtkSmartPointer<vtkPolyData> roundTrip(vtkPolyData* skeleton, const std::string& dir,
+                                       const std::string& name) {
   const std::string path = dir + "/" + name;
   EXPECT_TRUE(writeWith(path, skeleton));
   vtkSmartPointer<vtkDataObject> read;
@@ -133,7 +135,8 @@ TEST(SkeletonIO, SwcRoundTripKeepsNodesRadiiEdgesAndRoot) {
   }
   ASSERT_NE(skeleton->GetFieldData()->GetArray("Root"), nullptr);
   double rootPoint[3];
-  skeleton->GetPoint(static_cast<vtkIdType>(skeleton->GetFieldData()->GetArray("Root")->GetComponent(0, 0)), rootPoint);
+  skeleton->GetPoint(static_cast<vtkIdType>(skeleton->GetFieldData()->GetArray("Root")->GetComponent(0, 0)),
+                     rootPoint);
   EXPECT_EQ(rootPoint[0], 0.0);
   EXPECT_NE(skeleton->GetPointData()->GetArray("NodeType"), nullptr);
 }
@@ -185,7 +188,8 @@ TEST_P(SwcErrors, AreReportedWithFileAndLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     SkeletonIO, SwcErrors,
-    ::testing::Values(BadSwc{"nan", "1 1 0 0 0 1 -1\n2 3 nan 0 0 1 1\n", ":2: node 1 has non-finite coordinates"},
+    ::testing::Values(BadSwc{"nan", "1 1 0 0 0 1 -1\n2 3 nan 0 0 1 1\n",
+                             ":2: node 1 has non-finite coordinates"},
                       BadSwc{"negative-radius", "1 1 0 0 0 1 -1\n2 3 1 0 0 -2 1\n", "radius -2"},
                       BadSwc{"zero-radius", "1 1 0 0 0 0 -1\n", "radius 0"},
                       BadSwc{"self-loop", "1 1 0 0 0 1 -1\n2 3 1 0 0 1 2\n", "its own parent"},
@@ -209,7 +213,8 @@ TEST(SkeletonIO, VtpValidationErrorsAreReported) {
     const char* expected;
   };
   const std::vector<Case> cases = {
-      {"nan", [](vtkPolyData* s) { s->GetPoints()->SetPoint(2, std::nan(""), 0, 0); }, "non-finite coordinates"},
+      {"nan", [](vtkPolyData* s) { s->GetPoints()->SetPoint(2, std::nan(""), 0, 0); },
+       "non-finite coordinates"},
       {"radius", [](vtkPolyData* s) { s->GetPointData()->GetArray("Radius")->SetComponent(3, 0, 0.0); },
        "node 3 has radius 0"},
       {"self-loop",

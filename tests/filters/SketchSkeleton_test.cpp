@@ -41,7 +41,8 @@ TEST_P(SketchSamples, SqmMeshOfTheSketchIsAClosedManifold) {
 
   vtkPolyData* skeleton = sketch->GetOutput(0);
   ASSERT_GT(skeleton->GetNumberOfPoints(), 1);
-  for (const char* name : {"Radius", "NodeType", "Part"}) EXPECT_TRUE(skeleton->GetPointData()->GetArray(name)) << name;
+  for (const char* name : {"Radius", "NodeType", "Part"})
+    EXPECT_TRUE(skeleton->GetPointData()->GetArray(name)) << name;
   for (const char* name : {"Part", "Branch"}) EXPECT_TRUE(skeleton->GetCellData()->GetArray(name)) << name;
   EXPECT_TRUE(skeleton->GetFieldData()->GetArray("Root"));
 
@@ -58,7 +59,8 @@ TEST_P(SketchSamples, SqmMeshOfTheSketchIsAClosedManifold) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Sketches, SketchSamples,
-                         ::testing::Values("rectangle.txt", "star.txt", "hand.txt", "bird.txt", "unsteady.txt"));
+                         ::testing::Values("rectangle.txt", "star.txt", "hand.txt", "bird.txt",
+                                           "unsteady.txt"));
 
 TEST(SketchSkeleton, ReaderKeepsPartsAndPlacements) {
   auto reader = vtkSmartPointer<vtkMedialSketchReader>::New();

@@ -30,9 +30,9 @@
 namespace {
 
 struct SampleSkeleton {
-  const char* path;       // under data/skeletons
+  const char* path;         // under data/skeletons
   double minimumQuadShare;  // the 90 % (leaf fans and cycle bands paired into quads)
-  int cycles = 0;  // independent cycles of the skeleton: Euler characteristic 2 - 2 cycles
+  int cycles = 0;           // independent cycles of the skeleton: Euler characteristic 2 - 2 cycles
 };
 
 std::ostream& operator<<(std::ostream& os, const SampleSkeleton& s) { return os << s.path; }
@@ -88,7 +88,8 @@ TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {
     for (size_t k = 1; k + 1 < f.size(); ++k) {
       mesh->GetPoint(f[k], b);
       mesh->GetPoint(f[k + 1], c);
-      volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+      volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                a[2] * (b[0] * c[1] - b[1] * c[0]);
     }
   }
   EXPECT_GT(volume, 0);
@@ -100,7 +101,8 @@ TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {
   vtkDataArray* radius = skeleton->GetPointData()->GetArray("Radius");
   vtkDataArray* axes = skeleton->GetPointData()->GetArray("EllipsoidAxes");
   std::vector<std::vector<double>> radii(size_t(skeleton->GetNumberOfPoints()));
-  for (vtkIdType k = 0; k < skeleton->GetNumberOfPoints(); ++k) radii[size_t(k)].push_back(radius->GetComponent(k, 0));
+  for (vtkIdType k = 0; k < skeleton->GetNumberOfPoints(); ++k)
+    radii[size_t(k)].push_back(radius->GetComponent(k, 0));
   for (vtkIdType c = 0; c < skeleton->GetNumberOfCells(); ++c) {
     vtkIdList* ids = skeleton->GetCell(c)->GetPointIds();
     for (vtkIdType k = 0; k + 1 < ids->GetNumberOfIds(); ++k) {
@@ -144,7 +146,8 @@ TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {
     sqm->SetSharpScaling(scaling == 1);
     sqm->Update();
     ASSERT_FALSE(errors->HasErrors()) << errors->Joined();
-    const medial::MeshTopology refined = medial::computeMeshTopology(sqm->GetOutput()->GetNumberOfPoints(), polygonsOf(sqm->GetOutput()));
+    const medial::MeshTopology refined =
+        medial::computeMeshTopology(sqm->GetOutput()->GetNumberOfPoints(), polygonsOf(sqm->GetOutput()));
     EXPECT_TRUE(refined.isClosedManifold());
     EXPECT_EQ(refined.eulerCharacteristic, 2 - 2 * sample.cycles);
     refinedPairs[scaling] = selfIntersectingPairs(sqm->GetOutput());
@@ -175,19 +178,19 @@ TEST(SqmFilter, FoldRepairUndoesTheFoldsOfTheConeProjection) {
   EXPECT_LT(sqm->GetFoldRepairedVertices(), sqm->GetOutput()->GetNumberOfPoints() / 20);
 }
 
-INSTANTIATE_TEST_SUITE_P(Data, SqmSamples,
-                         ::testing::Values(SampleSkeleton{"sqm/worm.vtp", 0.9}, SampleSkeleton{"sqm/octopus.vtp", 0.9},
-                                           SampleSkeleton{"sqm/quadruped.vtp", 0.9}, SampleSkeleton{"sqm/humanoid.vtp", 0.9},
-                                           SampleSkeleton{"sqm/fish.vtp", 0.9}, SampleSkeleton{"sqm/leafroot.vtp", 0.9},
-                                           SampleSkeleton{"figure.vtp", 0.9},
-                                           SampleSkeleton{"hand.swc", 0.9}, SampleSkeleton{"sqm/cycle.vtp", 0.9, 1},
-                                           SampleSkeleton{"sqm/pretzel.vtp", 0.9, 3}),
-                         [](const ::testing::TestParamInfo<SampleSkeleton>& info) {
-                           std::string name = info.param.path;
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Data, SqmSamples,
+    ::testing::Values(SampleSkeleton{"sqm/worm.vtp", 0.9}, SampleSkeleton{"sqm/octopus.vtp", 0.9},
+                      SampleSkeleton{"sqm/quadruped.vtp", 0.9}, SampleSkeleton{"sqm/humanoid.vtp", 0.9},
+                      SampleSkeleton{"sqm/fish.vtp", 0.9}, SampleSkeleton{"sqm/leafroot.vtp", 0.9},
+                      SampleSkeleton{"figure.vtp", 0.9}, SampleSkeleton{"hand.swc", 0.9},
+                      SampleSkeleton{"sqm/cycle.vtp", 0.9, 1}, SampleSkeleton{"sqm/pretzel.vtp", 0.9, 3}),
+    [](const ::testing::TestParamInfo<SampleSkeleton>& info) {
+      std::string name = info.param.path;
+      for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      return name;
+    });
 
 TEST(SqmFilter, UnknownSmoothingAndMeshInputAreErrors) {
   auto sqm = vtkSmartPointer<vtkMedialSQM>::New();

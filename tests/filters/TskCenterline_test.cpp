@@ -43,7 +43,8 @@ double distanceToLine(const double p[3], vtkPolyData* line) {
       line->GetPoint(ids->GetId(k + 1), b);
       double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ap[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
       const double length2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
-      const double t = std::clamp((ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / std::max(length2, 1e-300), 0.0, 1.0);
+      const double t =
+          std::clamp((ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / std::max(length2, 1e-300), 0.0, 1.0);
       const double d[3] = {a[0] + t * ab[0] - p[0], a[1] + t * ab[1] - p[1], a[2] + t * ab[2] - p[2]};
       best = std::min(best, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
     }
@@ -88,8 +89,8 @@ TEST_P(TubePhantoms, CenterlineFollowsTheTrueAxis) {
   }
   const double mean = sum / double(centerline->GetNumberOfPoints());
   std::printf("%s: %lld points, %.0f mm long, mean %.3f mm, max %.3f mm\n", GetParam().name,
-              static_cast<long long>(centerline->GetNumberOfPoints()), arc->GetTuple1(arc->GetNumberOfTuples() - 1),
-              mean, worst);
+              static_cast<long long>(centerline->GetNumberOfPoints()),
+              arc->GetTuple1(arc->GetNumberOfTuples() - 1), mean, worst);
   EXPECT_LT(mean, GetParam().maxMeanError);
   EXPECT_LT(worst, 1.6);
 }

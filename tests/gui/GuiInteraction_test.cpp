@@ -38,12 +38,17 @@ class GuiInteraction : public ::testing::Test {
   }
 
   vtkCamera* camera() { return window->scene()->GetRenderer()->GetActiveCamera(); }
-  Vector position() { return {camera()->GetPosition()[0], camera()->GetPosition()[1], camera()->GetPosition()[2]}; }
-  Vector focal() { return {camera()->GetFocalPoint()[0], camera()->GetFocalPoint()[1], camera()->GetFocalPoint()[2]}; }
+  Vector position() {
+    return {camera()->GetPosition()[0], camera()->GetPosition()[1], camera()->GetPosition()[2]};
+  }
+  Vector focal() {
+    return {camera()->GetFocalPoint()[0], camera()->GetFocalPoint()[1], camera()->GetFocalPoint()[2]};
+  }
   double distance() { return camera()->GetDistance(); }
 
   // A press, a few moves and a release, as a user's drag.
-  void drag(Qt::MouseButton button, QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+  void drag(Qt::MouseButton button, QPoint from, QPoint to,
+            Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
     QTest::mousePress(view, button, modifiers, from);
     for (int step = 1; step <= 5; ++step) {
       const QPoint at = from + (to - from) * step / 5;
@@ -83,12 +88,12 @@ TEST_F(GuiInteraction, MiddleDragPans) {
 TEST_F(GuiInteraction, WheelZooms) {
   const double before = distance();
   const QPoint centre = view->rect().center();
-  QWheelEvent forward(centre, view->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
-                      Qt::NoScrollPhase, false);
+  QWheelEvent forward(centre, view->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
   QApplication::sendEvent(view, &forward);
   EXPECT_LT(distance(), 0.95 * before);
-  QWheelEvent backward(centre, view->mapToGlobal(centre), QPoint(), QPoint(0, -240), Qt::NoButton, Qt::NoModifier,
-                       Qt::NoScrollPhase, false);
+  QWheelEvent backward(centre, view->mapToGlobal(centre), QPoint(), QPoint(0, -240), Qt::NoButton,
+                       Qt::NoModifier, Qt::NoScrollPhase, false);
   QApplication::sendEvent(view, &backward);
   EXPECT_GT(distance(), before);
 }

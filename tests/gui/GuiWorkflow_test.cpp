@@ -70,15 +70,16 @@ class GuiWorkflow : public ::testing::Test {
     dir = medial::test::scratchDir(std::string("gui-workflow/") +
                                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
     window = std::make_unique<MainWindow>();
-    window->setErrorHandler([this](const QString& title, const QString& message) {
-      errors.append(title + ": " + message);
-    });
+    window->setErrorHandler(
+        [this](const QString& title, const QString& message) { errors.append(title + ": " + message); });
     window->resize(1280, 860);
     window->show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
   }
 
-  void open(const std::string& path) { ASSERT_TRUE(window->openFile(QString::fromStdString(path))) << errors.join("\n").toStdString(); }
+  void open(const std::string& path) {
+    ASSERT_TRUE(window->openFile(QString::fromStdString(path))) << errors.join("\n").toStdString();
+  }
 
   // Presses the panel's Run button as a user would and waits for the filter to finish.
   bool runThroughUi(FilterPanel* panel, int timeoutMs = 120000) {
@@ -143,8 +144,8 @@ TEST_F(GuiWorkflow, HeadCtInSlicesAndIsoSurface) {
   SliceView* axial = slices->view(2);
   const QPoint centre = axial->rect().center();
   QTest::mousePress(axial, Qt::RightButton, Qt::NoModifier, centre);
-  QMouseEvent move(QEvent::MouseMove, centre + QPoint(60, 0), axial->mapToGlobal(centre + QPoint(60, 0)), Qt::NoButton,
-                   Qt::RightButton, Qt::NoModifier);
+  QMouseEvent move(QEvent::MouseMove, centre + QPoint(60, 0), axial->mapToGlobal(centre + QPoint(60, 0)),
+                   Qt::NoButton, Qt::RightButton, Qt::NoModifier);
   QApplication::sendEvent(axial, &move);
   QTest::mouseRelease(axial, Qt::RightButton, Qt::NoModifier, centre + QPoint(60, 0));
   EXPECT_GT(slices->window(), 1800);
@@ -154,8 +155,8 @@ TEST_F(GuiWorkflow, HeadCtInSlicesAndIsoSurface) {
   EXPECT_NE(slices->view(1)->sliceIndex(), coronalBefore);
   // The wheel steps through axial slices.
   const int axialBefore = axial->sliceIndex();
-  QWheelEvent wheel(centre, axial->mapToGlobal(centre), QPoint(), QPoint(0, 360), Qt::NoButton, Qt::NoModifier,
-                    Qt::NoScrollPhase, false);
+  QWheelEvent wheel(centre, axial->mapToGlobal(centre), QPoint(), QPoint(0, 360), Qt::NoButton,
+                    Qt::NoModifier, Qt::NoScrollPhase, false);
   QApplication::sendEvent(axial, &wheel);
   EXPECT_EQ(axial->sliceIndex(), axialBefore + 3);
 
@@ -170,8 +171,8 @@ TEST_F(GuiWorkflow, HeadCtInSlicesAndIsoSurface) {
 }
 
 // "Key: value" pairs of PrintSelf that describe parameters: those two fresh filters print alike, less
-// addresses, times and reference counts (pipeline details, which differ between objects). Returns the pairs of
-// `filter` that differ from the fresh filters'.
+// addresses, times and reference counts (pipeline details, which differ between objects). Returns the pairs
+// of `filter` that differ from the fresh filters'.
 std::set<std::string> differingParameters(vtkAlgorithm* filter, vtkAlgorithm* freshA, vtkAlgorithm* freshB) {
   auto pairs = [](vtkAlgorithm* f) {
     std::ostringstream text;
@@ -180,7 +181,8 @@ std::set<std::string> differingParameters(vtkAlgorithm* filter, vtkAlgorithm* fr
     std::istringstream in(text.str());
     for (std::string line; std::getline(in, line);) {
       const size_t colon = line.find(": "), first = line.find_first_not_of(' ');
-      if (colon != std::string::npos && first < colon) values.emplace(line.substr(first, colon - first), line.substr(colon + 2));
+      if (colon != std::string::npos && first < colon)
+        values.emplace(line.substr(first, colon - first), line.substr(colon + 2));
     }
     return values;
   };
@@ -188,8 +190,9 @@ std::set<std::string> differingParameters(vtkAlgorithm* filter, vtkAlgorithm* fr
   std::set<std::string> differing;
   for (const auto& [key, value] : a) {
     const auto other = b.find(key), own = mine.find(key);
-    const bool parameter = other != b.end() && other->second == value && key.find("Time") == std::string::npos &&
-                           key != "Reference Count" && value.find("0x") == std::string::npos;
+    const bool parameter = other != b.end() && other->second == value &&
+                           key.find("Time") == std::string::npos && key != "Reference Count" &&
+                           value.find("0x") == std::string::npos;
     if (parameter && own != mine.end() && own->second != value && own->second.find("0x") == std::string::npos)
       differing.insert(key + ": " + own->second);
   }
@@ -210,19 +213,32 @@ TEST_F(GuiWorkflow, FormDefaultsAreTheFiltersDefaults) {
     std::set<std::string> presets;  // the lines the GUI sets on purpose
   };
   const std::vector<Case> cases = {
-      {window->skeletonPanel(), window->objects()->at(0), vtkSmartPointer<vtkMedialContractionSkeleton>::New(),
-       vtkSmartPointer<vtkMedialContractionSkeleton>::New(), {"ComputeWeights: 1"}},
-      {window->sqmPanel(), window->objects()->at(1), vtkSmartPointer<vtkMedialSQM>::New(),
-       vtkSmartPointer<vtkMedialSQM>::New(), {}},
-      {window->sketchPanel(), window->objects()->at(2), vtkSmartPointer<vtkMedialSketchSkeleton>::New(),
-       vtkSmartPointer<vtkMedialSketchSkeleton>::New(), {}},
-      {window->centerlinePanel(), window->objects()->at(3), vtkSmartPointer<vtkMedialTskCenterline>::New(),
-       vtkSmartPointer<vtkMedialTskCenterline>::New(), {"ComputeSections: 1"}},
+      {window->skeletonPanel(),
+       window->objects()->at(0),
+       vtkSmartPointer<vtkMedialContractionSkeleton>::New(),
+       vtkSmartPointer<vtkMedialContractionSkeleton>::New(),
+       {"ComputeWeights: 1"}},
+      {window->sqmPanel(),
+       window->objects()->at(1),
+       vtkSmartPointer<vtkMedialSQM>::New(),
+       vtkSmartPointer<vtkMedialSQM>::New(),
+       {}},
+      {window->sketchPanel(),
+       window->objects()->at(2),
+       vtkSmartPointer<vtkMedialSketchSkeleton>::New(),
+       vtkSmartPointer<vtkMedialSketchSkeleton>::New(),
+       {}},
+      {window->centerlinePanel(),
+       window->objects()->at(3),
+       vtkSmartPointer<vtkMedialTskCenterline>::New(),
+       vtkSmartPointer<vtkMedialTskCenterline>::New(),
+       {"ComputeSections: 1"}},
   };
   for (const Case& c : cases) {
     const vtkSmartPointer<vtkAlgorithm> configured = c.panel->configuredFilter(c.input);
     ASSERT_TRUE(configured) << c.panel->title().toStdString();
-    EXPECT_EQ(differingParameters(configured, c.freshA, c.freshB), c.presets) << c.panel->title().toStdString();
+    EXPECT_EQ(differingParameters(configured, c.freshA, c.freshB), c.presets)
+        << c.panel->title().toStdString();
   }
 }
 
@@ -348,8 +364,10 @@ TEST_F(GuiWorkflow, SketchFileAndDrawnStrokes) {
     QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(rx, 0));
     for (int step = 1; step < 48; ++step) {
       const double angle = 2 * M_PI * step / 48;
-      const QPoint at = centre + QPoint(static_cast<int>(rx * std::cos(angle)), static_cast<int>(ry * std::sin(angle)));
-      QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+      const QPoint at =
+          centre + QPoint(static_cast<int>(rx * std::cos(angle)), static_cast<int>(ry * std::sin(angle)));
+      QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
+                       Qt::NoModifier);
       QApplication::sendEvent(view, &move);
     }
     QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(rx, -5));
@@ -447,7 +465,10 @@ TEST_F(GuiWorkflow, DeletingAnObjectUpdatesListAndPanels) {
 TEST_F(GuiWorkflow, ColonPhantomDicomThresholdSeedCenterlineFlyThrough) {
   // The CT-like colon phantom, written as a DICOM series by its generator, opened as a folder.
   const std::string series = dir + "/colon-dicom";
-  ASSERT_EQ(std::system((medial::test::binaryDir() + "/bin/medial-make-colon-phantom " + series + " > /dev/null").c_str()), 0);
+  ASSERT_EQ(
+      std::system(
+          (medial::test::binaryDir() + "/bin/medial-make-colon-phantom " + series + " > /dev/null").c_str()),
+      0);
   open(series);
   SceneObject* ct = window->objects()->at(0);
   ASSERT_EQ(ct->kind, SceneObject::Kind::Volume);
@@ -482,10 +503,12 @@ TEST_F(GuiWorkflow, ColonPhantomDicomThresholdSeedCenterlineFlyThrough) {
   renderer->WorldToDisplay();
   renderer->GetDisplayPoint(display);
   const qreal ratio = axial->devicePixelRatioF();
-  QTest::mouseClick(axial, Qt::LeftButton, Qt::NoModifier,
-                    QPoint(static_cast<int>(display[0] / ratio), static_cast<int>(axial->height() - display[1] / ratio)));
+  QTest::mouseClick(
+      axial, Qt::LeftButton, Qt::NoModifier,
+      QPoint(static_cast<int>(display[0] / ratio), static_cast<int>(axial->height() - display[1] / ratio)));
   ASSERT_TRUE(panel->seed().has_value());
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR((*panel->seed())[i], rectum[i], 2.0) << "the click lands on the rectum";
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR((*panel->seed())[i], rectum[i], 2.0) << "the click lands on the rectum";
 
   ASSERT_TRUE(runThroughUi(panel)) << errors.join("\n").toStdString();
   SceneObject* centerline = object(ct->name + " centerline");
@@ -538,10 +561,12 @@ TEST_F(GuiWorkflow, ClicksInThe3dViewPickBonesAndObjectsOfInterest) {
   renderer->GetDisplayPoint(display);
   VtkView* view = window->view();
   const qreal ratio = view->devicePixelRatioF();
-  const QPoint at(static_cast<int>(display[0] / ratio), static_cast<int>(view->height() - display[1] / ratio));
+  const QPoint at(static_cast<int>(display[0] / ratio),
+                  static_cast<int>(view->height() - display[1] / ratio));
   QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
   EXPECT_EQ(window->objects()->current(), skeleton) << "the click picks the skeleton inside the mesh";
-  EXPECT_TRUE(window->logText().contains("Mesh coloured by the weight of bone 0")) << window->logText().toStdString();
+  EXPECT_TRUE(window->logText().contains("Mesh coloured by the weight of bone 0"))
+      << window->logText().toStdString();
   // Shift+click toggles the object of interest.
   ASSERT_TRUE(skeleton->interest);
   QTest::mouseClick(view, Qt::LeftButton, Qt::ShiftModifier, at);
@@ -600,7 +625,8 @@ TEST_F(GuiWorkflow, SketchThresholdsPerPart) {
   ASSERT_TRUE(part && branch);
   std::map<int, int> bonesOfBranch;
   for (vtkIdType c = 0; c < skeleton->GetNumberOfCells(); ++c)
-    if (part->GetComponent(c, 0) == 0 && branch->GetComponent(c, 0) >= 0) ++bonesOfBranch[int(branch->GetComponent(c, 0))];
+    if (part->GetComponent(c, 0) == 0 && branch->GetComponent(c, 0) >= 0)
+      ++bonesOfBranch[int(branch->GetComponent(c, 0))];
   ASSERT_FALSE(bonesOfBranch.empty());
   const auto longest = std::max_element(bonesOfBranch.begin(), bonesOfBranch.end(),
                                         [](const auto& a, const auto& b) { return a.second < b.second; });
@@ -635,8 +661,9 @@ TEST_F(GuiWorkflow, SketchThresholdsPerPart) {
   renderer->GetDisplayPoint(display);
   VtkView* view = window->view();
   const qreal ratio = view->devicePixelRatioF();
-  QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier,
-                    QPoint(static_cast<int>(display[0] / ratio), static_cast<int>(view->height() - display[1] / ratio)));
+  QTest::mouseClick(
+      view, Qt::LeftButton, Qt::NoModifier,
+      QPoint(static_cast<int>(display[0] / ratio), static_cast<int>(view->height() - display[1] / ratio)));
   EXPECT_TRUE(window->logText().contains("Sketch: ε_s of part 1, branch")) << window->logText().toStdString();
 }
 

@@ -33,8 +33,10 @@ void waitForDisplay() {
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  if (!medial::test::hasDisplay()) ::setenv("QT_QPA_PLATFORM", "offscreen", 1);
-  else waitForDisplay();
+  if (!medial::test::hasDisplay())
+    ::setenv("QT_QPA_PLATFORM", "offscreen", 1);
+  else
+    waitForDisplay();
   medial::gui::VtkView::setDefaultSurfaceFormat();
   QApplication app(argc, argv);
   return RUN_ALL_TESTS();

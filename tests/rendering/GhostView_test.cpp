@@ -50,9 +50,9 @@ vtkSmartPointer<vtkPolyData> sphere(double radius, double x = 0, double y = 0, d
 
 // Pixel counts by hue: the scene's palette draws the first object ivory, the second red, the third blue.
 struct Hues {
-  double red = 0;   // share of pixels that are clearly red
-  double blue = 0;  // bluish: blue, or blue seen through a red ghost (violet)
-  double ivory = 0; // warm and light: the occluder
+  double red = 0;           // share of pixels that are clearly red
+  double blue = 0;          // bluish: blue, or blue seen through a red ghost (violet)
+  double ivory = 0;         // warm and light: the occluder
   double meanRedGreen = 0;  // mean green channel over the red pixels (how much occluder tint is on them)
 };
 

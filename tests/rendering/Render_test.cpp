@@ -25,7 +25,8 @@ vtkSmartPointer<vtkDataObject> read(const std::string& path) {
 }
 
 // Renders the scene to a PNG in the scratch directory and loads it back.
-vtkSmartPointer<vtkImageData> renderScene(vtkMedialScene* scene, const std::string& name, int width, int height) {
+vtkSmartPointer<vtkImageData> renderScene(vtkMedialScene* scene, const std::string& name, int width,
+                                          int height) {
   const std::string path = scratchDir("render-" + name) + "/" + name;
   scene->ResetCamera(static_cast<double>(width) / height);
   EXPECT_TRUE(scene->RenderToImage(path.c_str(), width, height));

@@ -36,7 +36,8 @@ medial::TriangleMesh cappedCylinder() {
     faces.push_back({top, (kRings - 1) * kAround + a, (kRings - 1) * kAround + (a + 1) % kAround});
   }
   m.faces.resize(Eigen::Index(faces.size()), 3);
-  for (size_t f = 0; f < faces.size(); ++f) m.faces.row(Eigen::Index(f)) << faces[f][0], faces[f][1], faces[f][2];
+  for (size_t f = 0; f < faces.size(); ++f)
+    m.faces.row(Eigen::Index(f)) << faces[f][0], faces[f][1], faces[f][2];
   return m;
 }
 

@@ -14,15 +14,15 @@ inline TriangleMesh torusMesh(double R, double r, int rings = 48, int sides = 16
   for (int i = 0; i < rings; ++i)
     for (int j = 0; j < sides; ++j) {
       const double u = 2 * M_PI * i / rings, v = 2 * M_PI * j / sides;
-      mesh.vertices.row(i * sides + j) << (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
-          r * std::sin(v);
+      mesh.vertices.row(i * sides + j) << (R + r * std::cos(v)) * std::cos(u),
+          (R + r * std::cos(v)) * std::sin(u), r * std::sin(v);
     }
   mesh.faces.resize(2 * rings * sides, 3);
   int f = 0;
   for (int i = 0; i < rings; ++i)
     for (int j = 0; j < sides; ++j) {
-      const int a = i * sides + j, b = ((i + 1) % rings) * sides + j, c = ((i + 1) % rings) * sides + (j + 1) % sides,
-                d = i * sides + (j + 1) % sides;
+      const int a = i * sides + j, b = ((i + 1) % rings) * sides + j,
+                c = ((i + 1) % rings) * sides + (j + 1) % sides, d = i * sides + (j + 1) % sides;
       mesh.faces.row(f++) << a, b, c;
       mesh.faces.row(f++) << a, c, d;
     }
@@ -58,7 +58,8 @@ inline TriangleMesh tubeMesh(double length, double r, int rings = 40, int sides 
   return mesh;
 }
 
-inline TriangleMesh appendMesh(const TriangleMesh& a, const TriangleMesh& b, const Eigen::RowVector3d& shift) {
+inline TriangleMesh appendMesh(const TriangleMesh& a, const TriangleMesh& b,
+                               const Eigen::RowVector3d& shift) {
   TriangleMesh m;
   m.vertices.resize(a.vertices.rows() + b.vertices.rows(), 3);
   m.vertices << a.vertices, (b.vertices.rowwise() + shift);

@@ -18,7 +18,8 @@ namespace {
 
 using Polygon = std::vector<Eigen::Vector3d>;
 
-Polygon circle(const Eigen::Vector3d& centre, const Eigen::Vector3d& u, const Eigen::Vector3d& v, int points = 64) {
+Polygon circle(const Eigen::Vector3d& centre, const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+               int points = 64) {
   Polygon p;
   for (int k = 0; k < points; ++k) {
     const double t = 2 * M_PI * k / points;
@@ -33,7 +34,9 @@ const Polygon kAxis = {{0, 0, -10}, {0, 0, 10}, {100, 0, 10}, {100, 0, -10}};
 int cycleCount(const medial::CurveSkeleton& s) {
   std::vector<int> parent(size_t(s.nodes.rows()));
   for (size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
-  std::function<int(int)> find = [&](int x) { return parent[size_t(x)] == x ? x : parent[size_t(x)] = find(parent[size_t(x)]); };
+  std::function<int(int)> find = [&](int x) {
+    return parent[size_t(x)] == x ? x : parent[size_t(x)] = find(parent[size_t(x)]);
+  };
   int components = int(parent.size());
   for (const auto& [a, b] : s.edges)
     if (find(a) != find(b)) {
@@ -48,7 +51,8 @@ medial::CurveSkeleton halfCircle(const Eigen::Vector3d& shift = Eigen::Vector3d:
   medial::CurveSkeleton s;
   s.nodes.resize(5, 3);
   for (int k = 0; k < 5; ++k) {
-    s.nodes.row(k) = (Eigen::Vector3d(2 * std::cos(M_PI * k / 4), 2 * std::sin(M_PI * k / 4), 0) + shift).transpose();
+    s.nodes.row(k) =
+        (Eigen::Vector3d(2 * std::cos(M_PI * k / 4), 2 * std::sin(M_PI * k / 4), 0) + shift).transpose();
     if (k > 0) s.edges.emplace_back(k - 1, k);
   }
   return s;
@@ -75,8 +79,7 @@ TEST(HomologyLoops, TwoLoopsPerHandleOfEachClosedComponent) {
   ASSERT_EQ(loops.size(), 2u);
   std::set<std::pair<int, int>> edges;
   for (Eigen::Index f = 0; f < torus.faces.rows(); ++f)
-    for (int c = 0; c < 3; ++c)
-      edges.insert(std::minmax(torus.faces(f, c), torus.faces(f, (c + 1) % 3)));
+    for (int c = 0; c < 3; ++c) edges.insert(std::minmax(torus.faces(f, c), torus.faces(f, (c + 1) % 3)));
   for (const auto& loop : loops) {
     EXPECT_GE(loop.size(), 3u);
     for (size_t i = 0; i < loop.size(); ++i)  // a closed path of mesh edges
@@ -133,12 +136,15 @@ TEST(CycleRepair, LeavesAKeptCycleAndMendsOnlyTheTorusThatLostIt) {
   EXPECT_EQ(r.cyclesBefore, 1);
   EXPECT_EQ(r.cyclesAdded, 1);
   EXPECT_EQ(cycleCount(s), 2);
-  for (Eigen::Index k = first + 12; k < s.nodes.rows(); ++k) EXPECT_GT(s.nodes(k, 0), 5);  // in the second torus
+  for (Eigen::Index k = first + 12; k < s.nodes.rows(); ++k)
+    EXPECT_GT(s.nodes(k, 0), 5);  // in the second torus
 
   medial::CurveSkeleton whole = halfCircle();  // a skeleton with all its cycles is left alone
   whole.edges.emplace_back(4, 0);
   const auto before = whole.nodes;
-  EXPECT_EQ(medial::restoreMissingCycles(whole, torusMesh(2, 0.5), medial::InsideTest(torusMesh(2, 0.5))).cyclesAdded, 0);
+  EXPECT_EQ(medial::restoreMissingCycles(whole, torusMesh(2, 0.5), medial::InsideTest(torusMesh(2, 0.5)))
+                .cyclesAdded,
+            0);
   EXPECT_EQ(whole.nodes, before);
 }
 

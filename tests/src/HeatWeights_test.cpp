@@ -36,10 +36,18 @@ TEST(HeatWeights, TubeWithTwoBonesBlendsAtTheJoint) {
     // Far from the joint a vertex follows its own bone (the blend decays over about a tube radius, 1,
     // for c = 1); at the joint both bones share it, and bone 0's weight falls monotonically along the
     // tube (checked ring by ring below).
-    if (x < -4) { EXPECT_GT(r.weights(j, 0), 0.97) << x; }
-    if (x > 4) { EXPECT_GT(r.weights(j, 1), 0.97) << x; }
-    if (std::abs(x) > 2) { EXPECT_GT(r.weights(j, x < 0 ? 0 : 1), 0.85) << x; }
-    if (std::abs(x) < 0.2) { EXPECT_NEAR(r.weights(j, 0), 0.5, 0.15) << x; }
+    if (x < -4) {
+      EXPECT_GT(r.weights(j, 0), 0.97) << x;
+    }
+    if (x > 4) {
+      EXPECT_GT(r.weights(j, 1), 0.97) << x;
+    }
+    if (std::abs(x) > 2) {
+      EXPECT_GT(r.weights(j, x < 0 ? 0 : 1), 0.85) << x;
+    }
+    if (std::abs(x) < 0.2) {
+      EXPECT_NEAR(r.weights(j, 0), 0.5, 0.15) << x;
+    }
   }
   const int sides = 16;
   for (int ring = 1; ring < 40; ++ring)
@@ -57,13 +65,15 @@ TEST(HeatWeights, TorusWeightsFromItsOwnSkeleton) {
   ASSERT_EQ(r.weights.cols(), r.skeleton.edgeCount());
   for (Eigen::Index j = 0; j < torus.vertices.rows(); ++j) EXPECT_NEAR(r.weights.row(j).sum(), 1.0, 1e-12);
   // Every bone drives some part of the surface.
-  for (int bone = 0; bone < r.skeleton.edgeCount(); ++bone) EXPECT_GT(r.weights.col(bone).maxCoeff(), 0.5) << bone;
+  for (int bone = 0; bone < r.skeleton.edgeCount(); ++bone)
+    EXPECT_GT(r.weights.col(bone).maxCoeff(), 0.5) << bone;
 }
 
 TEST(HeatWeights, ComponentNoBoneSeesStillGetsWeights) {
   // A second tube far from the skeleton: no bone is visible from it (every segment crosses the first
   // tube or leaves the mesh), the fallback weights it from its nearest bone.
-  const medial::TriangleMesh mesh = appendMesh(tubeMesh(10, 1), tubeMesh(10, 1), Eigen::RowVector3d(0, 10, 0));
+  const medial::TriangleMesh mesh =
+      appendMesh(tubeMesh(10, 1), tubeMesh(10, 1), Eigen::RowVector3d(0, 10, 0));
   const medial::InsideTest inside(mesh);
   const auto r = medial::heatWeights(mesh, twoBoneAxis(), inside);
   ASSERT_TRUE(r.ok()) << r.error;

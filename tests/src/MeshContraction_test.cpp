@@ -83,6 +83,7 @@ TEST(MeshContraction, SameResultAtAnyScale) {
 }
 
 TEST(MeshContraction, AbortStopsWithAnError) {
-  const medial::ContractionResult r = medial::contractMesh(torusMesh(2, 0.5), {}, [](double) { return false; });
+  const medial::ContractionResult r =
+      medial::contractMesh(torusMesh(2, 0.5), {}, [](double) { return false; });
   EXPECT_EQ(r.error, "aborted");
 }

@@ -12,7 +12,8 @@ namespace {
 
 medial::MeshTopology topologyOf(const medial::TriangleMesh& mesh) {
   std::vector<std::vector<int64_t>> faces;
-  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
+    faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
   return medial::computeMeshTopology(mesh.vertices.rows(), faces);
 }
 
@@ -45,7 +46,8 @@ TEST(MeshDecimation, TorusGoesToTheBudgetKeepingItsGenus) {
 }
 
 TEST(MeshDecimation, EachComponentKeepsItsTopology) {
-  const auto mesh = appendMesh(torusMesh(2, 0.5, 96, 32), tubeMesh(6, 0.8, 80, 24), Eigen::RowVector3d(10, 0, 0));
+  const auto mesh =
+      appendMesh(torusMesh(2, 0.5, 96, 32), tubeMesh(6, 0.8, 80, 24), Eigen::RowVector3d(10, 0, 0));
   const medial::DecimatedMesh coarse = medial::decimateMesh(mesh, 800);
   ASSERT_TRUE(coarse.decimated) << coarse.note;
   const medial::MeshTopology t = topologyOf(coarse.mesh);

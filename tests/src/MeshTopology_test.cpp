@@ -15,8 +15,8 @@ Faces torusQuads(int rings, int sides) {
   Faces faces;
   for (int i = 0; i < rings; ++i)
     for (int j = 0; j < sides; ++j)
-      faces.push_back({i * sides + j, ((i + 1) % rings) * sides + j, ((i + 1) % rings) * sides + (j + 1) % sides,
-                       i * sides + (j + 1) % sides});
+      faces.push_back({i * sides + j, ((i + 1) % rings) * sides + j,
+                       ((i + 1) % rings) * sides + (j + 1) % sides, i * sides + (j + 1) % sides});
   return faces;
 }
 

@@ -48,7 +48,8 @@ TEST(PolygonOrientation, FlippedFacesAndAnInsideOutCubeTurnOutward) {
 
 TEST(PolygonOrientation, NonManifoldMeshIsRefusedAndLeftAlone) {
   // Three quads on one edge (0-1): no consistent orientation without duplicating vertices.
-  std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, -1, 0}, {1, -1, 0}};
+  std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},  {1, 1, 0},
+                                    {0, 0, 1}, {1, 0, 1}, {0, -1, 0}, {1, -1, 0}};
   std::vector<std::vector<int>> faces = {{0, 1, 3, 2}, {0, 1, 5, 4}, {0, 1, 7, 6}};
   const auto before = faces;
   EXPECT_EQ(medial::orientPolygonsOutward(v, faces), -1);

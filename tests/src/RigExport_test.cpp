@@ -53,8 +53,8 @@ TEST(RigExport, BonesFollowTheHierarchyFromTheRoot) {
 class RigRoundTrip : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
 
 TEST_P(RigRoundTrip, BonesAndWeightSumsSurvive) {
-  // Assimp cannot read back its own binary FBX (docs/ARCHITECTURE.md §9), so FBX is checked through its ASCII flavour
-  // (the same exporter code writes both), the binary file by its header below.
+  // Assimp cannot read back its own binary FBX (docs/ARCHITECTURE.md §9), so FBX is checked through its ASCII
+  // flavour (the same exporter code writes both), the binary file by its header below.
   const std::string format = GetParam().first;
   const std::string path = scratch(std::string("tube.") + GetParam().second);
   const medial::Rig rig = tubeRig();
@@ -70,8 +70,9 @@ TEST_P(RigRoundTrip, BonesAndWeightSumsSurvive) {
   std::remove(path.c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, RigRoundTrip, ::testing::Values(std::make_pair("glb2", "glb"), std::make_pair("gltf2", "gltf"),
-                                                            std::make_pair("fbxa", "fbx")));
+INSTANTIATE_TEST_SUITE_P(Formats, RigRoundTrip,
+                         ::testing::Values(std::make_pair("glb2", "glb"), std::make_pair("gltf2", "gltf"),
+                                           std::make_pair("fbxa", "fbx")));
 
 TEST(RigExport, BinaryFbxIsWritten) {
   const std::string path = scratch("tube.fbx");

@@ -27,7 +27,9 @@ struct GraphCounts {
 GraphCounts countGraph(const medial::Skeleton& s) {
   std::vector<int> parent(s.nodes.size());
   std::iota(parent.begin(), parent.end(), 0);
-  std::function<int(int)> find = [&](int x) { return parent[size_t(x)] == x ? x : parent[size_t(x)] = find(parent[size_t(x)]); };
+  std::function<int(int)> find = [&](int x) {
+    return parent[size_t(x)] == x ? x : parent[size_t(x)] = find(parent[size_t(x)]);
+  };
   for (const auto& e : s.edges) parent[size_t(find(e[0]))] = find(e[1]);
   GraphCounts c;
   for (int i = 0; i < s.nodeCount(); ++i) c.components += find(i) == i;
@@ -200,7 +202,8 @@ TEST(SkeletonByContraction, BadInputIsRefusedWithAMessage) {
 
   medial::TriangleMesh nan = torusMesh(2, 0.5);
   nan.vertices(7, 1) = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(medial::skeletonByContraction(nan).error, "vertex 7 has a non-finite coordinate (NaN or infinity)");
+  EXPECT_EQ(medial::skeletonByContraction(nan).error,
+            "vertex 7 has a non-finite coordinate (NaN or infinity)");
 
   medial::TriangleMesh outOfRange = torusMesh(2, 0.5);
   outOfRange.faces(3, 2) = 100000;
@@ -216,7 +219,8 @@ medial::Skeleton toSkeleton(const medial::CurveSkeleton& s) {
 }
 
 // Two nodes joined by one edge; no mesh vertex belongs to either yet.
-medial::CurveSkeleton twoNodeCurve(const Eigen::Vector3d& a, const Eigen::Vector3d& b, Eigen::Index vertexCount) {
+medial::CurveSkeleton twoNodeCurve(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                   Eigen::Index vertexCount) {
   medial::CurveSkeleton curve;
   curve.nodes.resize(2, 3);
   curve.nodes.row(0) = a.transpose();
@@ -253,12 +257,14 @@ TEST(EmbeddingRefinement, AnEdgeWithoutAbsorbedVerticesIsSplitInsideToo) {
   // passes 1 from the centre, through the hole. The split node comes from the search across the chord.
   const medial::TriangleMesh torus = torusMesh(2, 0.5);
   const medial::InsideTest inside(torus);
-  medial::CurveSkeleton curve = twoNodeCurve({1, std::sqrt(3.0), 0}, {1, -std::sqrt(3.0), 0}, torus.vertices.rows());
+  medial::CurveSkeleton curve =
+      twoNodeCurve({1, std::sqrt(3.0), 0}, {1, -std::sqrt(3.0), 0}, torus.vertices.rows());
   const int added = medial::splitEdgesLeavingTheMesh(curve, torus.vertices, inside);
   EXPECT_GE(added, 1);
   for (const auto& [a, b] : curve.edges)
     EXPECT_TRUE(inside.segmentIsClear(curve.nodes.row(a).transpose(), curve.nodes.row(b).transpose()));
-  for (Eigen::Index k = 2; k < curve.nodes.rows(); ++k) EXPECT_TRUE(inside.contains(curve.nodes.row(k).transpose()));
+  for (Eigen::Index k = 2; k < curve.nodes.rows(); ++k)
+    EXPECT_TRUE(inside.contains(curve.nodes.row(k).transpose()));
 }
 
 TEST(EmbeddingRefinement, ANodeOutsideIsPushedToTheMiddleOfThePart) {
@@ -312,7 +318,7 @@ TEST(NodeSelection, ShortSideBranchesGoFirst) {
   const medial::Skeleton out = toSkeleton(s);
   EXPECT_EQ(out.nodeCount(), 6);
   EXPECT_EQ(countGraph(out).components, 1);
-  EXPECT_NEAR(out.nodes[size_t(s.vertexToNode[0])].y(), 0.0, 1e-12);  // the twig's vertex went to the limb
+  EXPECT_NEAR(out.nodes[size_t(s.vertexToNode[0])].y(), 0.0, 1e-12);   // the twig's vertex went to the limb
   EXPECT_NEAR(out.nodes[size_t(s.vertexToNode[1])].y(), -3.0, 1e-12);  // the branch tip stayed
 }
 
@@ -340,5 +346,6 @@ TEST(NodeSelection, RefusesCollapsesThatLeaveTheMesh) {
   EXPECT_GE(constrained.nodes.rows(), 6);
   EXPECT_EQ(countGraph(toSkeleton(constrained)).cycles, 1);
   for (const auto& [a, b] : constrained.edges)
-    EXPECT_TRUE(inside.segmentIsClear(constrained.nodes.row(a).transpose(), constrained.nodes.row(b).transpose()));
+    EXPECT_TRUE(
+        inside.segmentIsClear(constrained.nodes.row(a).transpose(), constrained.nodes.row(b).transpose()));
 }

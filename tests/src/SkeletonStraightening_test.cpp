@@ -58,7 +58,8 @@ TEST(SkeletonStraightening, BentArmBecomesStraightAndKeepsItsLengths) {
   const Eigen::Vector3d d2 = (pose.position[2] - pose.position[1]).normalized();
   EXPECT_NEAR(d1.dot(d2), 1.0, 1e-12);
   // The branch node's arms keep their directions, and the rotations map input offsets to bind offsets.
-  EXPECT_NEAR((pose.position[3] - pose.position[0]).normalized().dot((s.nodes[3] - s.nodes[0]).normalized()), 1.0, 1e-12);
+  EXPECT_NEAR((pose.position[3] - pose.position[0]).normalized().dot((s.nodes[3] - s.nodes[0]).normalized()),
+              1.0, 1e-12);
   for (int k : {1, 2, 3, 4}) {
     const int p = tree.parent[size_t(k)];
     const Eigen::Vector3d mapped = pose.rotation[size_t(k)] * (s.nodes[size_t(k)] - s.nodes[size_t(p)]);

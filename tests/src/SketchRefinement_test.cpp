@@ -11,12 +11,12 @@ namespace {
 // short one down (to y = -3). Nodes 1 and 3 are junctions 2 apart along the bones.
 medial::SketchGraph twoJunctions() {
   medial::SketchGraph g;
-  g.addNode({0, 0, 0}, 2, 0);     // 0 terminal
-  g.addNode({10, 0, 0}, 2, 0);    // 1 junction
-  g.addNode({30, 0, 0}, 2, 0);    // 2 terminal
-  g.addNode({12, 0, 0}, 2, 0);    // 3 junction
-  g.addNode({10, 40, 0}, 2, 0);   // 4 terminal of the long spur
-  g.addNode({12, -3, 0}, 2, 0);   // 5 terminal of the short spur
+  g.addNode({0, 0, 0}, 2, 0);    // 0 terminal
+  g.addNode({10, 0, 0}, 2, 0);   // 1 junction
+  g.addNode({30, 0, 0}, 2, 0);   // 2 terminal
+  g.addNode({12, 0, 0}, 2, 0);   // 3 junction
+  g.addNode({10, 40, 0}, 2, 0);  // 4 terminal of the long spur
+  g.addNode({12, -3, 0}, 2, 0);  // 5 terminal of the short spur
   g.addEdge(0, 1, 0, 0);
   g.addEdge(1, 3, 0, 0);
   g.addEdge(3, 2, 0, 0);
@@ -82,7 +82,8 @@ TEST(PartConnection, AnOverlappingPartIsAttachedByABoneSplit) {
   EXPECT_EQ(attachments[1].childJoint, 2);
   EXPECT_NEAR(attachments[1].distance, 2.0, 1e-12);
   // The split made a joint at the foot (10, 0), joined to the child's joint: one tree of 5 nodes.
-  EXPECT_NEAR((g.skeleton.nodes[size_t(attachments[1].parentJoint)] - Eigen::Vector3d(10, 0, 0)).norm(), 0, 1e-12);
+  EXPECT_NEAR((g.skeleton.nodes[size_t(attachments[1].parentJoint)] - Eigen::Vector3d(10, 0, 0)).norm(), 0,
+              1e-12);
   EXPECT_EQ(g.skeleton.nodeCount(), 5);
   EXPECT_EQ(g.skeleton.edgeCount(), 4);
 }

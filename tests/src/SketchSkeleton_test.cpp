@@ -173,7 +173,12 @@ TEST(SketchSkeleton, LargerThresholdsNeverAddJoints) {
         const auto r = medial::sketchSkeleton(parts, p);
         ASSERT_TRUE(r.ok()) << r.error;
         EXPECT_TRUE(isTree(r.graph.skeleton)) << name;
-        EXPECT_LE(r.graph.skeleton.nodeCount(), previous) << name << " factor " << factor << " threshold " << (p.thresholds.merging != 30 ? "merging" : p.thresholds.pruning != 30 ? "pruning" : p.thresholds.collapsing != 10 ? "collapsing" : "simplification");
+        EXPECT_LE(r.graph.skeleton.nodeCount(), previous)
+            << name << " factor " << factor << " threshold "
+            << (p.thresholds.merging != 30      ? "merging"
+                : p.thresholds.pruning != 30    ? "pruning"
+                : p.thresholds.collapsing != 10 ? "collapsing"
+                                                : "simplification");
         previous = r.graph.skeleton.nodeCount();
       }
     }
@@ -213,7 +218,8 @@ TEST(SketchSkeleton, InflatedPartsAreClosedManifolds) {
   const auto r = medial::sketchSkeleton(parts);
   ASSERT_TRUE(r.ok()) << r.error;
   std::vector<std::vector<int64_t>> faces;
-  for (int f = 0; f < r.mesh.faces.rows(); ++f) faces.push_back({r.mesh.faces(f, 0), r.mesh.faces(f, 1), r.mesh.faces(f, 2)});
+  for (int f = 0; f < r.mesh.faces.rows(); ++f)
+    faces.push_back({r.mesh.faces(f, 0), r.mesh.faces(f, 1), r.mesh.faces(f, 2)});
   const auto t = medial::computeMeshTopology(r.mesh.vertices.rows(), faces);
   EXPECT_EQ(t.borderEdges, 0);
   EXPECT_EQ(t.nonManifoldEdges, 0);
@@ -268,10 +274,12 @@ TEST(StraightSkeletonGraph, DoubleArithmeticMatchesExactPredicates) {
       std::string error;
       ASSERT_TRUE(medial::straightSkeletonGraph(stroke.polygon, 0.5, fast, error)) << name << ": " << error;
       ASSERT_TRUE(medial::straightSkeletonGraph(stroke.polygon, 0.5, exact, error,
-                                                medial::SkeletonArithmetic::exactPredicates)) << name;
+                                                medial::SkeletonArithmetic::exactPredicates))
+          << name;
       ASSERT_EQ(fast.nodeCount(), exact.nodeCount()) << name;
       EXPECT_EQ(fast.edges, exact.edges) << name;
-      for (int v = 0; v < fast.nodeCount(); ++v) EXPECT_LT((fast.nodes[v] - exact.nodes[v]).norm(), 1e-6 * unit) << name;
+      for (int v = 0; v < fast.nodeCount(); ++v)
+        EXPECT_LT((fast.nodes[v] - exact.nodes[v]).norm(), 1e-6 * unit) << name;
     }
   }
 }
@@ -282,11 +290,18 @@ TEST(StraightSkeletonGraph, NearlyDegenerateOutlineGivesATreeInside) {
   Polygon2 comb{{0, 0}, {100, 0}};
   for (int tooth = 4; tooth >= 0; --tooth) {
     const double x = 20 * tooth;
-    comb.insert(comb.end(), {{x + 15, 30}, {x + 15, 60}, {x + 15 + 1e-13, 90}, {x + 15, 120}, {x + 5, 120},
-                             {x + 5, 90}, {x + 5 - 1e-13, 60}, {x + 5, 30}});
+    comb.insert(comb.end(), {{x + 15, 30},
+                             {x + 15, 60},
+                             {x + 15 + 1e-13, 90},
+                             {x + 15, 120},
+                             {x + 5, 120},
+                             {x + 5, 90},
+                             {x + 5 - 1e-13, 60},
+                             {x + 5, 30}});
   }
   comb.emplace_back(0, 30);
-  for (auto arithmetic : {medial::SkeletonArithmetic::automatic, medial::SkeletonArithmetic::exactPredicates}) {
+  for (auto arithmetic :
+       {medial::SkeletonArithmetic::automatic, medial::SkeletonArithmetic::exactPredicates}) {
     medial::SkeletonGraph2 graph;
     std::string error;
     ASSERT_TRUE(medial::straightSkeletonGraph(comb, 0.5, graph, error, arithmetic)) << error;

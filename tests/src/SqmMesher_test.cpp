@@ -90,8 +90,9 @@ void expectClosedQuadDominant(const medial::Skeleton& s, const medial::SqmResult
     ASSERT_EQ(f.size(), 3u);
     bool hasLeafApex = false;
     for (int v : f)
-      hasLeafApex |= degree[size_t(r.mesh.vertexNode[size_t(v)])] <= 1 &&
-                     (r.mesh.vertices[size_t(v)] - s.nodes[size_t(r.mesh.vertexNode[size_t(v)])]).norm() < 1e-9;
+      hasLeafApex |=
+          degree[size_t(r.mesh.vertexNode[size_t(v)])] <= 1 &&
+          (r.mesh.vertices[size_t(v)] - s.nodes[size_t(r.mesh.vertexNode[size_t(v)])]).norm() < 1e-9;
     EXPECT_TRUE(hasLeafApex) << "a triangle away from the leaves";
   }
 }
@@ -121,7 +122,8 @@ TEST(BranchNodePolyhedron, CoplanarNeighboursGiveAClosedPolyhedron) {
     }
     medial::BranchNodePolyhedron bnp;
     std::string error;
-    ASSERT_TRUE(medial::generateBnp(0, Eigen::Vector3d::Zero(), 0.5, neighbours, positions, bnp, error)) << error;
+    ASSERT_TRUE(medial::generateBnp(0, Eigen::Vector3d::Zero(), 0.5, neighbours, positions, bnp, error))
+        << error;
     EXPECT_EQ(bnp.steiner.size(), 2u) << arms << " arms";
     EXPECT_EQ(int(bnp.mesh.n_faces()), 6 * 2 * arms) << arms << " arms: a face was refused";
     for (auto pole : bnp.steiner) EXPECT_NEAR(std::abs(bnp.mesh.point(pole)[2]), 0.5, 1e-12);
@@ -131,8 +133,8 @@ TEST(BranchNodePolyhedron, CoplanarNeighboursGiveAClosedPolyhedron) {
     medial::Skeleton s;
     s.nodes = {{0, 0, 0}};
     s.radii = {0.4};
-    for (const Eigen::Vector3d& d : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(-1, 0.2, 0),
-                                    Eigen::Vector3d(0.1, -1, 0)})
+    for (const Eigen::Vector3d& d : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
+                                     Eigen::Vector3d(-1, 0.2, 0), Eigen::Vector3d(0.1, -1, 0)})
       for (int k = 1; k <= 2; ++k) {
         s.nodes.push_back(k * d);
         s.radii.push_back(0.25);
@@ -153,10 +155,12 @@ TEST(BranchNodePolyhedron, SteinerPointsCoverOnlyWideCaps) {
     for (size_t k = 0; k < directions.size(); ++k) neighbours.push_back(int(k) + 1);
     medial::BranchNodePolyhedron bnp;
     std::string error;
-    EXPECT_TRUE(medial::generateBnp(0, Eigen::Vector3d::Zero(), 1.0, neighbours, directions, bnp, error)) << error;
+    EXPECT_TRUE(medial::generateBnp(0, Eigen::Vector3d::Zero(), 1.0, neighbours, directions, bnp, error))
+        << error;
     for (auto e : bnp.mesh.edges()) EXPECT_FALSE(bnp.mesh.is_boundary(e));
     std::vector<Eigen::Vector3d> points;
-    for (auto v : bnp.steiner) points.emplace_back(bnp.mesh.point(v)[0], bnp.mesh.point(v)[1], bnp.mesh.point(v)[2]);
+    for (auto v : bnp.steiner)
+      points.emplace_back(bnp.mesh.point(v)[0], bnp.mesh.point(v)[1], bnp.mesh.point(v)[2]);
     return points;
   };
   EXPECT_TRUE(steinerPoints({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}).empty());
@@ -175,7 +179,8 @@ TEST(SqmMesher, EverySmoothingAndPairingGivesAClosedManifold) {
       medial::SqmParameters p;
       p.smoothing = smoothing;
       p.pairing = pairing;
-      SCOPED_TRACE(std::string(medial::lieSmoothingName(smoothing)) + " / " + medial::ringPairingName(pairing));
+      SCOPED_TRACE(std::string(medial::lieSmoothingName(smoothing)) + " / " +
+                   medial::ringPairingName(pairing));
       expectClosedQuadDominant(s, medial::sqmMesh(s, p));
     }
 }
@@ -269,15 +274,17 @@ TEST(SqmMesher, CapsulesRoundTheLeaves) {
 
 TEST(SqmMesher, EllipsoidNodesScaleTheirVertices) {
   auto s = wormSkeleton();
-  for (size_t k = 0; k < s.nodes.size(); ++k) s.ellipsoidAxes.push_back(Eigen::Vector3d(0.3, 0.3, 0.9).asDiagonal());
+  for (size_t k = 0; k < s.nodes.size(); ++k)
+    s.ellipsoidAxes.push_back(Eigen::Vector3d(0.3, 0.3, 0.9).asDiagonal());
   const auto r = medial::sqmMesh(s);
   ASSERT_TRUE(r.ok()) << r.error;
   double zExtent = 0, yExtentAtMiddle = 0;
   for (size_t v = 0; v < r.mesh.vertices.size(); ++v) {
     zExtent = std::max(zExtent, std::abs(r.mesh.vertices[v].z()));
-    if (r.mesh.vertexNode[v] == 11) yExtentAtMiddle = std::max(yExtentAtMiddle, std::abs(r.mesh.vertices[v].y() - s.nodes[11].y()));
+    if (r.mesh.vertexNode[v] == 11)
+      yExtentAtMiddle = std::max(yExtentAtMiddle, std::abs(r.mesh.vertices[v].y() - s.nodes[11].y()));
   }
-  EXPECT_GT(zExtent, 0.8);             // three times the radius across z
+  EXPECT_GT(zExtent, 0.8);  // three times the radius across z
   EXPECT_LT(yExtentAtMiddle, 0.3 + 1e-9);
 }
 
@@ -342,7 +349,8 @@ TEST(SqmRefinement, SharpScalingShrinksTheConesOnlyNearSharpVertices) {
   EXPECT_DOUBLE_EQ(medial::sharpScaleFactor(0, 0.8), 0.8);
   EXPECT_DOUBLE_EQ(medial::sharpScaleFactor(1, 0.8), 1.0);
   EXPECT_DOUBLE_EQ(medial::sharpScaleFactor(3, 0.8), 1.0);  // clamped beyond one radius
-  for (double t = 0; t < 1; t += 0.05) EXPECT_LE(medial::sharpScaleFactor(t, 0.8), medial::sharpScaleFactor(t + 0.05, 0.8));
+  for (double t = 0; t < 1; t += 0.05)
+    EXPECT_LE(medial::sharpScaleFactor(t, 0.8), medial::sharpScaleFactor(t + 0.05, 0.8));
   // A narrow Y: two arms leave the branch node 20 degrees apart, so the mesh folds between them.
   medial::Skeleton s;
   s.nodes = {{0, 0, 0}, {0, -1, 0}, {0, -2, 0}};
@@ -371,7 +379,8 @@ TEST(SqmRefinement, SharpScalingShrinksTheConesOnlyNearSharpVertices) {
       EXPECT_GT(sharp, 0);
     }
     int& inside = insideWith[on];
-    for (const auto& v : mesh.vertices) {  // on a cone, or (scaled, or in a crease) inside one, never outside all
+    for (const auto& v :
+         mesh.vertices) {  // on a cone, or (scaled, or in a crease) inside one, never outside all
       double nearest = INFINITY, deepest = INFINITY;  // |distance| to the nearest cone; signed, deepest
       for (const auto& e : s.edges) {
         const Eigen::Vector3d a = s.nodes[size_t(e[0])], ab = s.nodes[size_t(e[1])] - a;
@@ -421,7 +430,8 @@ TEST(CycleClosing, LopsidedRingsStillCloseTheBand) {
     positions.push_back({std::cos(angle), std::sin(angle), 1});
     b.push_back(int(positions.size()) - 1);
   }
-  const auto band = medial::closeCycleGap(positions, a, Eigen::Vector3d(0, 0, 0), b, Eigen::Vector3d(0, 0, 1));
+  const auto band =
+      medial::closeCycleGap(positions, a, Eigen::Vector3d(0, 0, 0), b, Eigen::Vector3d(0, 0, 1));
   ASSERT_EQ(band.size(), a.size() + b.size());
   // Every ring edge is used once, in the direction that continues the tubes: A forwards, B forwards.
   std::vector<std::vector<int64_t>> faces;
@@ -456,7 +466,8 @@ TEST(SqmMesher, NodesInsideANeighboursSphereAreMergedIntoIt) {
   s.edges.push_back({0, 1});
   const auto r = medial::sqmMesh(s);
   ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.mergedNodes, 2);  // (0.5, 0, 0) and (1, 0, 0), closer to the root than its radius; not (-0.5, 1, 0)
+  EXPECT_EQ(r.mergedNodes,
+            2);  // (0.5, 0, 0) and (1, 0, 0), closer to the root than its radius; not (-0.5, 1, 0)
   const medial::MeshTopology t = topologyOf(r.mesh);
   EXPECT_EQ(t.borderEdges, 0);
   EXPECT_EQ(t.nonManifoldEdges, 0);
@@ -489,7 +500,8 @@ TEST(SqmMesher, NodesInsideANeighboursSphereAreMergedIntoIt) {
   // Two branch nodes whose spheres overlap by more than half the smaller radius merge; by less, not.
   auto twoBranches = [](double distance) {
     medial::Skeleton s;
-    s.nodes = {{0, 0, 0}, {distance, 0, 0}, {-1, 0.5, 0}, {-1, -0.5, 0}, {distance + 1, 0.5, 0}, {distance + 1, -0.5, 0}};
+    s.nodes = {{0, 0, 0},     {distance, 0, 0},       {-1, 0.5, 0},
+               {-1, -0.5, 0}, {distance + 1, 0.5, 0}, {distance + 1, -0.5, 0}};
     s.radii = {0.4, 0.3, 0.2, 0.2, 0.2, 0.2};
     s.edges = {{0, 1}, {0, 2}, {0, 3}, {1, 4}, {1, 5}};
     return medial::sqmMesh(s);
@@ -520,7 +532,8 @@ TEST(SqmMesher, BadInputIsRefusedOrRepaired) {
   EXPECT_NE(medial::sqmMesh(nan).error.find("node 2"), std::string::npos);
   auto coincident = ySkeleton();
   coincident.nodes[2] = coincident.nodes[1];
-  EXPECT_EQ(medial::sqmMesh(coincident).error, "nodes 1 and 2 are joined by an edge but lie at the same place");
+  EXPECT_EQ(medial::sqmMesh(coincident).error,
+            "nodes 1 and 2 are joined by an edge but lie at the same place");
   auto sameDirection = ySkeleton();
   sameDirection.nodes.push_back({2, 0, 0});  // a second edge from node 0 along +x
   sameDirection.radii.push_back(0.3);

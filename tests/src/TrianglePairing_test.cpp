@@ -18,7 +18,8 @@ struct Fan {
 Fan cone(int n, double height, int first = 0) {
   Fan fan;
   fan.vertices.push_back({0, 0, height});
-  for (int i = 0; i < n; ++i) fan.vertices.push_back({std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0});
+  for (int i = 0; i < n; ++i)
+    fan.vertices.push_back({std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0});
   fan.vertices.push_back({0, 0, -1});
   for (int k = 0; k < n; ++k) {
     const int i = (first + k) % n;
@@ -81,7 +82,8 @@ TEST(TrianglePairing, ABandBetweenTwoRingsBecomesQuadsThatEachSpanBoth) {
   // closed by a fan that is not part of the strip (its triangles share edges with the band's).
   std::vector<Eigen::Vector3d> vertices;
   for (int z = 0; z < 2; ++z)
-    for (int i = 0; i < 6; ++i) vertices.push_back({std::cos(M_PI * i / 3), std::sin(M_PI * i / 3), double(z)});
+    for (int i = 0; i < 6; ++i)
+      vertices.push_back({std::cos(M_PI * i / 3), std::sin(M_PI * i / 3), double(z)});
   vertices.push_back({0, 0, -1});
   vertices.push_back({0, 0, 2});
   std::vector<std::vector<int>> faces;

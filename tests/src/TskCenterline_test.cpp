@@ -56,7 +56,10 @@ TEST(TskCenterline, UStandingOnItsBendStartsAtAnEnd) {
 
 TEST(TskCenterline, HelixWithAnisotropicSpacing) {
   const auto t = tubePhantom(
-      [](double s) { return Eigen::Vector3d(28 + 14 * std::cos(4 * M_PI * s), 28 + 14 * std::sin(4 * M_PI * s), 6 + 54 * s); },
+      [](double s) {
+        return Eigen::Vector3d(28 + 14 * std::cos(4 * M_PI * s), 28 + 14 * std::sin(4 * M_PI * s),
+                               6 + 54 * s);
+      },
       4, {80, 80, 66}, Eigen::Vector3d(0.7, 0.7, 1.0));
   const auto c = centerlineOf(t.volume);
   const auto e = axisError(c.points, t);
@@ -98,9 +101,9 @@ TEST(BinaryVolume, ComponentsBorderAndHoles) {
   for (int i = 2; i <= 6; ++i)
     for (int j = 2; j <= 6; ++j)
       for (int k = 2; k <= 6; ++k) set(i, j, k);  // a 5^3 cube...
-  v.inside[size_t(v.index(4, 4, 4))] = 0;          // ...with a cavity
-  set(8, 8, 8);                                     // a lone voxel (second component)
-  for (int k = 0; k < 3; ++k) set(0, 9, k);          // a rod touching the border
+  v.inside[size_t(v.index(4, 4, 4))] = 0;         // ...with a cavity
+  set(8, 8, 8);                                   // a lone voxel (second component)
+  for (int k = 0; k < 3; ++k) set(0, 9, k);       // a rod touching the border
   EXPECT_EQ(medial::fillHoles(v), 1);
   EXPECT_EQ(v.inside[size_t(v.index(4, 4, 4))], 1);
   EXPECT_EQ(medial::dropBorderTouchingParts(v), 3);
@@ -113,15 +116,15 @@ TEST(BinaryVolume, DiagonalContactsFollowTheConnectivity) {
   v.size = {8, 8, 8};
   v.inside.assign(512, 0);
   for (int d = 0; d <= 3; ++d) v.inside[size_t(v.index(d, d, d))] = 1;  // corner to corner from the border
-  v.inside[size_t(v.index(5, 5, 5))] = 1;                                 // two steps from the chain's end
-  EXPECT_EQ(medial::dropBorderTouchingParts(v), 4);                       // 26-connected: the whole chain
+  v.inside[size_t(v.index(5, 5, 5))] = 1;                               // two steps from the chain's end
+  EXPECT_EQ(medial::dropBorderTouchingParts(v), 4);                     // 26-connected: the whole chain
   EXPECT_EQ(std::count(v.inside.begin(), v.inside.end(), 1), 1);
   // A background voxel meeting the outside only at an edge is a cavity (6-connected background).
   std::fill(v.inside.begin(), v.inside.end(), 1);
   for (int i = 0; i < 8; ++i)
     for (int j = 0; j < 8; ++j) v.inside[size_t(v.index(i, j, 0))] = 0;  // the bottom face is outside
-  v.inside[size_t(v.index(3, 3, 2))] = 0;                                 // closed in
-  v.inside[size_t(v.index(5, 5, 1))] = 0;                                 // open to the bottom face
+  v.inside[size_t(v.index(3, 3, 2))] = 0;                                // closed in
+  v.inside[size_t(v.index(5, 5, 1))] = 0;                                // open to the bottom face
   v.inside[size_t(v.index(1, 2, 1))] = 0, v.inside[size_t(v.index(2, 3, 2))] = 0;  // meet at a corner only
   EXPECT_EQ(medial::fillHoles(v), 2);
   EXPECT_EQ(v.inside[size_t(v.index(5, 5, 1))], 0);

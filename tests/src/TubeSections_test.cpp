@@ -14,18 +14,21 @@ using medial::BinaryVolume;
 BinaryVolume cylinder(double radius, const Eigen::Vector3d& spacing, int length) {
   BinaryVolume volume;
   volume.spacing = spacing;
-  volume.size = {int(std::ceil(4 * radius / spacing.x())) + 1, int(std::ceil(4 * radius / spacing.y())) + 1, length};
+  volume.size = {int(std::ceil(4 * radius / spacing.x())) + 1, int(std::ceil(4 * radius / spacing.y())) + 1,
+                 length};
   volume.inside.assign(size_t(volume.voxelCount()), 0);
   const double cx = 0.5 * (volume.size[0] - 1) * spacing.x(), cy = 0.5 * (volume.size[1] - 1) * spacing.y();
   for (int k = 0; k < volume.size[2]; ++k)
     for (int j = 0; j < volume.size[1]; ++j)
       for (int i = 0; i < volume.size[0]; ++i)
-        if (std::hypot(i * spacing.x() - cx, j * spacing.y() - cy) <= radius) volume.inside[size_t(volume.index(i, j, k))] = 1;
+        if (std::hypot(i * spacing.x() - cx, j * spacing.y() - cy) <= radius)
+          volume.inside[size_t(volume.index(i, j, k))] = 1;
   return volume;
 }
 
 std::vector<Eigen::Vector3d> axisOf(const BinaryVolume& volume) {
-  const double cx = 0.5 * (volume.size[0] - 1) * volume.spacing.x(), cy = 0.5 * (volume.size[1] - 1) * volume.spacing.y();
+  const double cx = 0.5 * (volume.size[0] - 1) * volume.spacing.x(),
+               cy = 0.5 * (volume.size[1] - 1) * volume.spacing.y();
   const double z0 = 5 * volume.spacing.z(), z1 = (volume.size[2] - 6) * volume.spacing.z();
   return {Eigen::Vector3d(cx, cy, z0), Eigen::Vector3d(cx, cy, z1)};
 }
@@ -36,7 +39,8 @@ void expectCylinder(const medial::TubeSections& sections, double radius, double 
     EXPECT_NEAR(sections.minDiameter[n], 2 * radius, tolerance * 2 * radius) << "section " << n;
     EXPECT_NEAR(sections.maxDiameter[n], 2 * radius, tolerance * 2 * radius) << "section " << n;
     EXPECT_NEAR(sections.perimeter[n], 2 * M_PI * radius, tolerance * 2 * M_PI * radius) << "section " << n;
-    EXPECT_NEAR(sections.area[n], M_PI * radius * radius, 2 * tolerance * M_PI * radius * radius) << "section " << n;
+    EXPECT_NEAR(sections.area[n], M_PI * radius * radius, 2 * tolerance * M_PI * radius * radius)
+        << "section " << n;
   }
 }
 
@@ -75,7 +79,9 @@ TEST(TubeSections, RaysThatLeaveTheVolumeGiveNaN) {
 TEST(TubeSections, DegenerateInputsGiveNothing) {
   const BinaryVolume volume = cylinder(5.0, Eigen::Vector3d(1, 1, 1), 20);
   EXPECT_TRUE(medial::tubeSections(volume, {}).arcLength.empty());
-  EXPECT_TRUE(medial::tubeSections(volume, {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 1, 1)}).arcLength.empty());
+  EXPECT_TRUE(
+      medial::tubeSections(volume, {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 1, 1)}).arcLength.empty());
   // Abort through the progress callback.
-  EXPECT_TRUE(medial::tubeSections(volume, axisOf(volume), {}, [](double) { return false; }).arcLength.empty());
+  EXPECT_TRUE(
+      medial::tubeSections(volume, axisOf(volume), {}, [](double) { return false; }).arcLength.empty());
 }

@@ -46,7 +46,8 @@ double foregroundFraction(vtkImageData* image) {
   for (int y = 0; y < dims[1]; ++y)
     for (int x = 0; x < dims[0]; ++x) {
       double difference = 0;
-      for (int c = 0; c < channels; ++c) difference = std::max(difference, std::abs(pixel(x, y, c) - pixel(0, y, c)));
+      for (int c = 0; c < channels; ++c)
+        difference = std::max(difference, std::abs(pixel(x, y, c) - pixel(0, y, c)));
       if (difference > 30) ++foreground;
     }
   return static_cast<double>(foreground) / (static_cast<double>(dims[0]) * dims[1]);
@@ -70,7 +71,8 @@ ImageComparison compareImages(vtkImageData* image, vtkImageData* baseline, int p
     result.message = msg.str();
     return result;
   }
-  const int channels = std::min({3, image->GetNumberOfScalarComponents(), baseline->GetNumberOfScalarComponents()});
+  const int channels =
+      std::min({3, image->GetNumberOfScalarComponents(), baseline->GetNumberOfScalarComponents()});
   if (difference) {
     difference->SetDimensions(a[0], a[1], 1);
     difference->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
@@ -94,9 +96,8 @@ ImageComparison compareImages(vtkImageData* image, vtkImageData* baseline, int p
   result.fractionDifferent = different / pixels;
   result.passed = result.fractionDifferent <= maxFractionDifferent;
   std::ostringstream msg;
-  msg << 100.0 * result.fractionDifferent << " % of pixels differ by more than "
-      << pixelTolerance << " (allowed " << 100.0 * maxFractionDifferent << " %), mean difference "
-      << result.meanDifference;
+  msg << 100.0 * result.fractionDifferent << " % of pixels differ by more than " << pixelTolerance
+      << " (allowed " << 100.0 * maxFractionDifferent << " %), mean difference " << result.meanDifference;
   result.message = msg.str();
   return result;
 }

@@ -10,15 +10,15 @@ namespace medial::test {
 
 struct ImageComparison {
   bool passed = false;
-  double meanDifference = 0;      // mean absolute difference per channel, 0..255
-  double fractionDifferent = 0;   // share of pixels where a channel differs by more than pixelTolerance
+  double meanDifference = 0;     // mean absolute difference per channel, 0..255
+  double fractionDifferent = 0;  // share of pixels where a channel differs by more than pixelTolerance
   std::string message;
 };
 
 // Passes when at most `maxFractionDifferent` of the pixels differ by more than `pixelTolerance` (0..255) in
 // some channel. With MEDIAL_UPDATE_BASELINES=1 in the environment, (re)writes the baseline instead.
-ImageComparison compareWithBaseline(vtkImageData* image, const std::string& baselineName, int pixelTolerance = 40,
-                                    double maxFractionDifferent = 0.01);
+ImageComparison compareWithBaseline(vtkImageData* image, const std::string& baselineName,
+                                    int pixelTolerance = 40, double maxFractionDifferent = 0.01);
 
 // Compares two images of the same size (no files written). `difference`, when given, receives the
 // per-channel absolute difference.

@@ -12,7 +12,9 @@ namespace medial::test {
 inline std::string sourceDir() { return MEDIAL_SOURCE_DIR; }
 inline std::string binaryDir() { return MEDIAL_BINARY_DIR; }
 inline std::string dataPath(const std::string& relative) { return sourceDir() + "/data/" + relative; }
-inline std::string externalPath(const std::string& relative) { return sourceDir() + "/data/external/" + relative; }
+inline std::string externalPath(const std::string& relative) {
+  return sourceDir() + "/data/external/" + relative;
+}
 
 // A fresh, empty directory for one test's files under the build tree.
 inline std::string scratchDir(const std::string& name) {
@@ -30,9 +32,9 @@ inline bool hasDisplay() {
 }  // namespace medial::test
 
 // Skips a test whose external sample is absent (scripts/fetch-samples extracts them).
-#define MEDIAL_REQUIRE_FILE(path)                                                                         \
-  if (!std::filesystem::exists(path))                                                                     \
+#define MEDIAL_REQUIRE_FILE(path)     \
+  if (!std::filesystem::exists(path)) \
   GTEST_SKIP() << "sample " << (path) << " is absent: run scripts/fetch-samples"
 
-#define MEDIAL_REQUIRE_DISPLAY()                                                                          \
+#define MEDIAL_REQUIRE_DISPLAY() \
   if (!medial::test::hasDisplay()) GTEST_SKIP() << "no X display: run the tests under xvfb-run -a"
