@@ -12,3 +12,15 @@ vtk_module_wrap_python(
 set(MEDIAL_PYTHON_PATH ${CMAKE_BINARY_DIR}/${medial_python_destination} CACHE INTERNAL "")
 configure_file(${CMAKE_CURRENT_LIST_DIR}/medial_init.py.in
                ${MEDIAL_PYTHON_PATH}/medial/__init__.py @ONLY)
+
+# The environment of tests that run Debian's interpreter on the package. Under the sanitizers
+# (scripts/sanitize) the interpreter is not instrumented: the runtimes are preloaded, and leaks are not
+# looked for (the interpreter's own would drown ours).
+set(MEDIAL_PYTHON_TEST_ENVIRONMENT "PYTHONPATH=${MEDIAL_PYTHON_PATH};MEDIAL_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+if(CMAKE_BUILD_TYPE STREQUAL "Asan")
+  execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libasan.so OUTPUT_VARIABLE asan_runtime
+                  OUTPUT_STRIP_TRAILING_WHITESPACE)
+  execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libubsan.so OUTPUT_VARIABLE ubsan_runtime
+                  OUTPUT_STRIP_TRAILING_WHITESPACE)
+  list(APPEND MEDIAL_PYTHON_TEST_ENVIRONMENT "LD_PRELOAD=${asan_runtime}:${ubsan_runtime}" "ASAN_OPTIONS=detect_leaks=0")
+endif()

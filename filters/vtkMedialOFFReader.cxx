@@ -17,7 +17,9 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -125,14 +127,49 @@ class PolygonSoupImporter : public IO::BaseImporter {
 
 // An ASCII OFF file's text without its comments ('#' to the end of a line) and blank lines: OpenMesh reads
 // none of CGAL's OFF files that open with a comment block (cube_poly, sphere966, mesh_with_colors...).
-std::string withoutComments(medial::TextFile& file, bool& hadComments) {
+// `lines` gets the file's line number of each line kept.
+std::string withoutComments(medial::TextFile& file, bool& hadComments, std::vector<int>& lines) {
   std::string text;
   hadComments = false;
   for (std::string line; file.nextLine(line);) {
     hadComments = hadComments || file.lineHadComment();
-    if (!medial::isBlank(line)) text += line + "\n";
+    if (medial::isBlank(line)) continue;
+    text += line + "\n";
+    lines.push_back(file.lineNumber());
   }
   return text;
+}
+
+// What OpenMesh cannot be trusted with in an ASCII OFF text, checked before it reads: fewer numbers than
+// the announced counts need (OpenMesh then loops over the missing ones: a truncated download announcing
+// 10^6 vertices took minutes), negative counts, and numbers that do not fit the single precision OpenMesh
+// reads them in (it then loses its place and blames the faces). Empty when the text is fit to read.
+std::string checkAsciiOff(const std::string& text, const std::vector<int>& lines, long vertices, long faces,
+                          const std::string& fileName) {
+  if (vertices < 0 || faces < 0)
+    return fileName + ": the header announces " + std::to_string(vertices) + " vertices and " +
+           std::to_string(faces) + " faces";
+  std::istringstream in(text);
+  long numbers = -3;  // the key word and the two counts are no data
+  size_t index = 0;
+  for (std::string line; std::getline(in, line); ++index) {
+    std::istringstream words(line);
+    for (std::string word; words >> word; ++numbers) {
+      char* end = nullptr;
+      const double value = std::strtod(word.c_str(), &end);
+      const bool number = end != word.c_str() && *end == '\0';
+      if (number && numbers >= 0 && !(std::abs(value) <= std::numeric_limits<float>::max()))
+        return fileName + ":" + std::to_string(lines[index]) + ": the number " + word +
+               " is not finite or too large for OFF's single precision";
+    }
+  }
+  // At least three coordinates per vertex and a count and three indices per face.
+  const double needed = 3.0 * double(vertices) + 4.0 * double(faces);
+  if (double(numbers) < needed)
+    return fileName + ": the file ends early (" + std::to_string(vertices) + " vertices and " +
+           std::to_string(faces) + " faces announced need at least " + std::to_string(long(needed)) +
+           " numbers; it holds " + std::to_string(std::max(0L, numbers)) + ")";
+  return std::string();
 }
 
 // The vertex and face counts the OFF text announces after its key word (OFF, COFF, NOFF, STOFF...); false
@@ -170,9 +207,16 @@ int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**,
   IO::Options options = IO::Options::VertexColor | IO::Options::VertexNormal;
   omerr().disable();  // OpenMesh would print its own complaints; ours name the file
   bool hadComments = false;
-  const std::string text = withoutComments(file, hadComments);
+  std::vector<int> lines;
+  const std::string text = withoutComments(file, hadComments, lines);
   long vertices = 0, faces = 0;
   const bool ascii = announcedCounts(text, vertices, faces);
+  if (ascii) error = checkAsciiOff(text, lines, vertices, faces, this->FileName);
+  if (!error.empty()) {
+    omerr().enable();
+    vtkErrorMacro(<< error);
+    return 0;
+  }
   // A file with comments is read from a copy without them (OpenMesh reads colours and normals only from a
   // file, not from a stream).
   std::string path = this->FileName;

@@ -3,6 +3,7 @@
 #include "TestPaths.h"
 
 #include "MedialErrorCollector.h"
+#include "common/Stopwatch.h"
 #include "MedialSketchData.h"
 #include "vtkMedialMeshTopology.h"
 #include "vtkMedialReader.h"
@@ -298,11 +299,45 @@ TEST(Readers, SketchTextThroughTheOneReader) {
   EXPECT_EQ(strokes->GetNumberOfPolys(), 0);
 }
 
+// A 60-byte OFF file announcing 10^7 vertices fails at once, without allocating for them.
+TEST(Readers, TruncatedOffFailsAtOnce) {
+  const std::string path = scratchDir("truncated-off") + "/truncated.off";
+  writeText(path, "OFF\n10000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const medial::Stopwatch stopwatch;
+  const ReadResult r = readFile(path);
+  EXPECT_LT(stopwatch.seconds(), 1.0);
+  EXPECT_NE(r.error.find("ends early"), std::string::npos) << r.error;
+}
+
+// Every input of the fuzzers' corpora (tests/fuzz/corpus: the seeds and each input that once crashed a
+// reader, scripts/fuzz) reads into a result or a clear error through the one reader.
+TEST(Readers, FuzzCorpusGivesAResultOrAnError) {
+  const std::string dir = scratchDir("fuzz-corpus");
+  int files = 0;
+  for (const auto& [kind, extension] : {std::make_pair("off", ".off"), std::make_pair("swc", ".swc"),
+                                        std::make_pair("sketch", ".txt")}) {
+    const std::filesystem::path corpus = medial::test::sourceDir() + "/tests/fuzz/corpus/" + kind;
+    for (const auto& entry : std::filesystem::directory_iterator(corpus)) {
+      const std::string copy = dir + "/" + entry.path().stem().string() + extension;
+      std::filesystem::copy_file(entry.path(), copy, std::filesystem::copy_options::overwrite_existing);
+      const ReadResult r = readFile(copy);
+      auto* polyData = vtkPolyData::SafeDownCast(r.data);
+      if (r.error.empty()) EXPECT_TRUE(polyData && polyData->GetNumberOfPoints() > 0) << entry.path();
+      ++files;
+    }
+  }
+  EXPECT_GE(files, 7);
+}
+
 TEST(Readers, ClearErrorsOnBadFiles) {
   const std::string dir = scratchDir("bad-files");
   writeText(dir + "/garbage.vtp", "this is not XML at all\n");
   writeText(dir + "/garbage.off", "OFF\n3 1 0\n0 0 0\n1 0\n");
   writeText(dir + "/bad-index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  // A truncated download: 10^7 vertices announced in a 60-byte file (OpenMesh spun for minutes on it).
+  writeText(dir + "/truncated.off", "OFF\n10000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  writeText(dir + "/huge.off", "OFF\n3 1 0\n# a comment line\n0 0 1e300\n1 0 0\n0 1 0\n3 0 1 2\n");
+  writeText(dir + "/negative.off", "OFF\n-3 1 0\n0 0 0\n");
   writeText(dir + "/empty.obj", "# no geometry\n");
   writeText(dir + "/garbage.nii", "not an image");
   writeText(dir + "/garbage.inv3", "not a tar");
@@ -314,7 +349,10 @@ TEST(Readers, ClearErrorsOnBadFiles) {
   for (const Case& c :
        {Case{dir + "/missing.off", "no such file"}, Case{dir + "/notes.docx", "unsupported file type"},
         Case{dir + "/notes.txt", "notes.txt:1: expected 'x y'"}, Case{dir + "/garbage.vtp", ""},
-        Case{dir + "/garbage.off", "the file ends early (3 vertices and 1 faces announced, 2 and"},
+        Case{dir + "/garbage.off", "the file ends early (3 vertices and 1 faces announced"},
+                        Case{dir + "/truncated.off", "the file ends early (10000000 vertices and 1 faces announced"},
+                        Case{dir + "/huge.off", "huge.off:4: the number 1e300 is not finite or too large"},
+                        Case{dir + "/negative.off", "announces -3 vertices"},
         Case{dir + "/bad-index.off", "vertex that does not exist"}, Case{dir + "/empty.obj", "holds no mesh"},
         Case{dir + "/garbage.nii", ""}, Case{dir + "/garbage.inv3", "not an InVesalius project"}}) {
     const ReadResult r = readFile(c.path);

@@ -1,0 +1,17 @@
+// Fuzz target: vtkMedialSketchReader on any bytes. It must report an error or give a polydata, never crash, hang or
+// allocate without bound.
+#include "FuzzFile.h"
+#include "vtkMedialSketchReader.h"
+
+#include <vtkObject.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  vtkObject::GlobalWarningDisplayOff();
+  const std::string path = medial::fuzz::writeInput(data, size, ".txt");
+  auto reader = vtkSmartPointer<vtkMedialSketchReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return 0;
+}
