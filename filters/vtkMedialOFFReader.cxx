@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <limits>
 #include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -140,35 +141,66 @@ std::string withoutComments(medial::TextFile& file, bool& hadComments, std::vect
   return text;
 }
 
-// What OpenMesh cannot be trusted with in an ASCII OFF text, checked before it reads: fewer numbers than
-// the announced counts need (OpenMesh then loops over the missing ones: a truncated download announcing
-// 10^6 vertices took minutes), negative counts, and numbers that do not fit the single precision OpenMesh
-// reads them in (it then loses its place and blames the faces). Empty when the text is fit to read.
-std::string checkAsciiOff(const std::string& text, const std::vector<int>& lines, long vertices, long faces,
+// What OpenMesh cannot be trusted with in an ASCII OFF text, checked line by line before it reads (one
+// vertex and one face per line, as every OFF writer does): counts that are not whole numbers or are
+// negative, fewer lines than the counts announce (OpenMesh then loops over the missing ones: a truncated
+// download announcing 10^7 vertices took minutes), coordinates that do not fit the single precision
+// OpenMesh reads them in (it then loses its place and blames the faces), and faces whose size or indices
+// are wrong (a face announcing 10^9 corners made it allocate gigabytes). Empty when the text is fit to
+// read; otherwise the problem, with the file's line.
+std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineNumbers,
                           const std::string& fileName) {
-  if (vertices < 0 || faces < 0)
-    return fileName + ": the header announces " + std::to_string(vertices) + " vertices and " +
-           std::to_string(faces) + " faces";
+  std::vector<std::vector<std::string>> lines;
   std::istringstream in(text);
-  long numbers = -3;  // the key word and the two counts are no data
-  size_t index = 0;
-  for (std::string line; std::getline(in, line); ++index) {
+  for (std::string line; std::getline(in, line);) {
     std::istringstream words(line);
-    for (std::string word; words >> word; ++numbers) {
+    lines.emplace_back(std::istream_iterator<std::string>(words), std::istream_iterator<std::string>());
+  }
+  const auto at = [&](size_t line) { return fileName + ":" + std::to_string(lineNumbers[line]) + ": "; };
+  const auto whole = [](const std::string& word, long long& value) {
+    char* end = nullptr;
+    value = std::strtoll(word.c_str(), &end, 10);
+    return end != word.c_str() && *end == '\0';
+  };
+  // The key word, then the counts "V F [E]" on its line or the next.
+  if (lines.empty() || lines[0].empty()) return fileName + ": the file is empty";
+  size_t line = 0, word = 1;
+  if (lines[0].size() == 1) line = 1, word = 0;
+  long long vertices = 0, faces = 0;
+  if (line >= lines.size() || lines[line].size() < word + 2 || !whole(lines[line][word], vertices) ||
+      !whole(lines[line][word + 1], faces))
+    return at(std::min(line, lines.size() - 1)) + "the header's vertex and face counts are not whole numbers";
+  if (vertices < 0 || faces < 0)
+    return at(line) + "the header announces " + std::to_string(vertices) + " vertices and " +
+           std::to_string(faces) + " faces";
+  const size_t first = line + 1;
+  if (double(lines.size() - first) < double(vertices) + double(faces))
+    return fileName + ": the file ends early (" + std::to_string(vertices) + " vertices and " +
+           std::to_string(faces) + " faces announced, " + std::to_string(lines.size() - first) +
+           " lines follow the header)";
+  for (long long v = 0; v < vertices; ++v) {
+    const size_t l = first + size_t(v);
+    for (size_t k = 0; k < 3; ++k) {
       char* end = nullptr;
-      const double value = std::strtod(word.c_str(), &end);
-      const bool number = end != word.c_str() && *end == '\0';
-      if (number && numbers >= 0 && !(std::abs(value) <= std::numeric_limits<float>::max()))
-        return fileName + ":" + std::to_string(lines[index]) + ": the number " + word +
-               " is not finite or too large for OFF's single precision";
+      const bool present = k < lines[l].size();
+      const double value = present ? std::strtod(lines[l][k].c_str(), &end) : 0;
+      if (!present || end == lines[l][k].c_str() || *end != '\0')
+        return at(l) + "vertex " + std::to_string(v) + " needs three coordinates";
+      if (!(std::abs(value) <= std::numeric_limits<float>::max()))
+        return at(l) + "the number " + lines[l][k] + " is not finite or too large for OFF's single precision";
     }
   }
-  // At least three coordinates per vertex and a count and three indices per face.
-  const double needed = 3.0 * double(vertices) + 4.0 * double(faces);
-  if (double(numbers) < needed)
-    return fileName + ": the file ends early (" + std::to_string(vertices) + " vertices and " +
-           std::to_string(faces) + " faces announced need at least " + std::to_string(long(needed)) +
-           " numbers; it holds " + std::to_string(std::max(0L, numbers)) + ")";
+  for (long long f = 0; f < faces; ++f) {
+    const size_t l = first + size_t(vertices + f);
+    long long corners = 0;
+    if (!whole(lines[l][0], corners) || corners < 1 || size_t(corners) >= lines[l].size())
+      return at(l) + "face " + std::to_string(f) + " does not list the " + lines[l][0] + " corners it announces";
+    for (size_t k = 1; k <= size_t(corners); ++k) {
+      long long index = 0;
+      if (!whole(lines[l][k], index) || index < 0 || index >= vertices)
+        return at(l) + "face " + std::to_string(f) + " refers to vertex " + lines[l][k] + ", which does not exist";
+    }
+  }
   return std::string();
 }
 
@@ -186,7 +218,7 @@ bool announcedCounts(const std::string& text, long& vertices, long& faces) {
     vertices = std::stol(tokens[1]);
     faces = std::stol(tokens[2]);
   } catch (const std::exception&) {
-    return false;
+    return true;  // counts that are no numbers: checkAsciiOff says so
   }
   return true;
 }
@@ -211,7 +243,7 @@ int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**,
   const std::string text = withoutComments(file, hadComments, lines);
   long vertices = 0, faces = 0;
   const bool ascii = announcedCounts(text, vertices, faces);
-  if (ascii) error = checkAsciiOff(text, lines, vertices, faces, this->FileName);
+  if (ascii) error = checkAsciiOff(text, lines, this->FileName);
   if (!error.empty()) {
     omerr().enable();
     vtkErrorMacro(<< error);

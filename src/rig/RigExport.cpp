@@ -113,6 +113,12 @@ std::string checkRig(const Rig& rig) {
   for (const auto& e : rig.skeleton.edges)
     if (e[0] < 0 || e[1] < 0 || e[0] >= rig.skeleton.nodeCount() || e[1] >= rig.skeleton.nodeCount())
       return "a skeleton edge refers to a node that does not exist";
+  // Found by fuzzing (tests/fuzz/rig.cpp): NaN or negative weights gave a rig without bones.
+  for (Eigen::Index v = 0; v < rig.weights.rows(); ++v)
+    for (Eigen::Index b = 0; b < rig.weights.cols(); ++b)
+      if (!(rig.weights(v, b) >= 0) || !std::isfinite(rig.weights(v, b)))
+        return "the weight of vertex " + std::to_string(v) + " for bone " + std::to_string(b) + " is " +
+               std::to_string(rig.weights(v, b)) + " (weights are finite and >= 0)";
   return {};
 }
 
@@ -165,8 +171,10 @@ aiMesh* buildMesh(const Rig& rig, const std::vector<Bone>& bones, const RigExpor
     meshBones.push_back(b);
   }
   mesh->mNumBones = unsigned(meshBones.size());
-  mesh->mBones = new aiBone*[meshBones.size()];
-  std::copy(meshBones.begin(), meshBones.end(), mesh->mBones);
+  if (!meshBones.empty()) {  // aiMesh frees mBones only when it counts bones (a leak LeakSanitizer found)
+    mesh->mBones = new aiBone*[meshBones.size()];
+    std::copy(meshBones.begin(), meshBones.end(), mesh->mBones);
+  }
   return mesh;
 }
 

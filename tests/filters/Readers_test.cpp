@@ -353,7 +353,7 @@ TEST(Readers, ClearErrorsOnBadFiles) {
                         Case{dir + "/truncated.off", "the file ends early (10000000 vertices and 1 faces announced"},
                         Case{dir + "/huge.off", "huge.off:4: the number 1e300 is not finite or too large"},
                         Case{dir + "/negative.off", "announces -3 vertices"},
-        Case{dir + "/bad-index.off", "vertex that does not exist"}, Case{dir + "/empty.obj", "holds no mesh"},
+        Case{dir + "/bad-index.off", "bad-index.off:6: face 0 refers to vertex 7, which does not exist"}, Case{dir + "/empty.obj", "holds no mesh"},
         Case{dir + "/garbage.nii", ""}, Case{dir + "/garbage.inv3", "not an InVesalius project"}}) {
     const ReadResult r = readFile(c.path);
     EXPECT_FALSE(r.error.empty()) << c.path;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -95,4 +96,15 @@ TEST(RigExport, BadRigsAreRefused) {
   EXPECT_EQ(medial::exportRig(boneless, scratch("bad.glb"), "glb2"), "the skeleton has no bones (edges)");
   EXPECT_NE(medial::exportRig(tubeRig(), "/nonexistent-dir/rig.glb", "glb2"), "");
   EXPECT_NE(medial::exportRig(tubeRig(), scratch("rig.xyz"), "no-such-format"), "");
+  // Found by fuzzing: NaN and negative weights are refused; weights all zero give a rig without bones
+  // (its empty bone list once leaked).
+  medial::Rig nan = tubeRig();
+  nan.weights(5, 1) = std::nan("");
+  EXPECT_NE(medial::exportRig(nan, scratch("bad.glb"), "glb2").find("vertex 5 for bone 1"), std::string::npos);
+  medial::Rig negative = tubeRig();
+  negative.weights(0, 0) = -0.5;
+  EXPECT_NE(medial::exportRig(negative, scratch("bad.glb"), "glb2"), "");
+  medial::Rig unweighted = tubeRig();
+  unweighted.weights.setZero();
+  EXPECT_EQ(medial::exportRig(unweighted, scratch("unweighted.glb"), "glb2"), "");
 }
