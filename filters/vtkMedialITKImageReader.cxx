@@ -1,5 +1,7 @@
 #include "vtkMedialITKImageReader.h"
 
+#include "MedialFileNames.h"
+
 #include <vtkImageData.h>
 #include <vtkImageImport.h>
 #include <vtkObjectFactory.h>
@@ -13,6 +15,11 @@
 #include <itkVTKImageExport.h>
 
 #include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <fstream>
+#include <cstdio>
 
 vtkStandardNewMacro(vtkMedialITKImageReader);
 
@@ -84,6 +91,73 @@ void readScalarImage(const std::string& path, const std::vector<std::string>& di
   }
 }
 
+// Bytes of a file (-1 when it cannot be read).
+double fileBytes(const std::string& path) {
+  struct stat status;
+  return ::stat(path.c_str(), &status) == 0 ? double(status.st_size) : -1.0;
+}
+
+// The uncompressed file that must hold the voxels of `path`, when the format says so plainly: a .nii
+// file, or a MetaImage whose header names its raw data (LOCAL: the file itself) without compression.
+// Empty when the voxels may be compressed or stored elsewhere.
+std::string rawDataFile(const std::string& path) {
+  const std::string extension = medial::fileExtension(path);
+  if (extension == ".nii") return path;
+  if (extension != ".mha" && extension != ".mhd") return {};
+  std::ifstream header(path);
+  std::string line, dataFile;
+  bool compressed = false;
+  while (std::getline(header, line) && line.size() < 4096) {
+    const size_t equals = line.find('=');
+    if (equals == std::string::npos) continue;
+    std::string key = line.substr(0, equals), value = line.substr(equals + 1);
+    key.erase(key.find_last_not_of(" \t") + 1);
+    value.erase(0, value.find_first_not_of(" \t"));
+    value.erase(value.find_last_not_of(" \t\r") + 1);
+    if (key == "CompressedData") compressed = value == "True" || value == "true";
+    if (key == "ElementDataFile") {
+      dataFile = value;
+      break;  // the voxels follow
+    }
+  }
+  if (compressed || dataFile.empty() || dataFile.find(' ') != std::string::npos) return {};  // lists of files
+  if (dataFile == "LOCAL") return path;
+  const size_t slash = path.find_last_of('/');
+  return (slash == std::string::npos ? std::string() : path.substr(0, slash + 1)) + dataFile;
+}
+
+// "4.0 GB", "12.5 MB", "100 bytes".
+std::string sizeText(double bytes) {
+  char text[64];
+  if (bytes >= 1e9)
+    std::snprintf(text, sizeof text, "%.1f GB", bytes / 1e9);
+  else if (bytes >= 1e6)
+    std::snprintf(text, sizeof text, "%.1f MB", bytes / 1e6);
+  else
+    std::snprintf(text, sizeof text, "%.0f bytes", bytes);
+  return text;
+}
+
+// Refuses a header that claims more voxels than its file holds (a truncated download, a hostile header)
+// or than this machine's memory, before ITK allocates them.
+bool voxelsFit(itk::ImageIOBase* io, const std::string& path, size_t files, std::string& error) {
+  const double bytes = double(io->GetImageSizeInBytes()) * double(files);
+  const double memory = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGESIZE));
+  if (memory > 0 && bytes > memory) {
+    error = "the header claims " + sizeText(bytes) + " of voxels, more than this machine's " + sizeText(memory) +
+            " of memory";
+    return false;
+  }
+  const std::string raw = files == 1 ? rawDataFile(path) : std::string();
+  const double held = raw.empty() ? -1.0 : fileBytes(raw);
+  if (!raw.empty() && held < bytes) {
+    error = "the header claims " + sizeText(bytes) + " of voxels, the file " + (raw == path ? "" : raw + " ") +
+            "holds " + sizeText(std::max(0.0, held));
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool vtkMedialITKImageReader::ReadImage(const std::string& path, vtkImageData* image, std::string& error) {
@@ -104,6 +178,7 @@ bool vtkMedialITKImageReader::ReadImage(const std::string& path, vtkImageData* i
     }
     io->SetFileName(probe);
     io->ReadImageInformation();
+    if (!voxelsFit(io, path, std::max<size_t>(1, dicomFiles.size()), error)) return false;
     if (io->GetNumberOfComponents() != 1) {
       error = "the image has " + std::to_string(io->GetNumberOfComponents()) +
               " components per voxel; Medial reads scalar volumes";

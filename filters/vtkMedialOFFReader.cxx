@@ -149,7 +149,7 @@ std::string withoutComments(medial::TextFile& file, bool& hadComments, std::vect
 // are wrong (a face announcing 10^9 corners made it allocate gigabytes). Empty when the text is fit to
 // read; otherwise the problem, with the file's line.
 std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineNumbers,
-                          const std::string& fileName) {
+                          const std::string& fileName, long long& vertices, long long& faces) {
   std::vector<std::vector<std::string>> lines;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
@@ -166,7 +166,6 @@ std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineN
   if (lines.empty() || lines[0].empty()) return fileName + ": the file is empty";
   size_t line = 0, word = 1;
   if (lines[0].size() == 1) line = 1, word = 0;
-  long long vertices = 0, faces = 0;
   if (line >= lines.size() || lines[line].size() < word + 2 || !whole(lines[line][word], vertices) ||
       !whole(lines[line][word + 1], faces))
     return at(std::min(line, lines.size() - 1)) + "the header's vertex and face counts are not whole numbers";
@@ -204,23 +203,14 @@ std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineN
   return std::string();
 }
 
-// The vertex and face counts the OFF text announces after its key word (OFF, COFF, NOFF, STOFF...); false
-// for binary OFF and anything not understood.
-bool announcedCounts(const std::string& text, long& vertices, long& faces) {
+// Whether the text is an ASCII OFF file (key word OFF, COFF, NOFF, STOFF...; not binary, not nOFF, whose
+// dimension comes first), whatever follows the key word.
+bool isAsciiOff(const std::string& text) {
   std::istringstream words(text);
-  std::vector<std::string> tokens;
-  for (std::string word; tokens.size() < 3 && words >> word;) tokens.push_back(word);
-  if (tokens.size() < 3 || tokens[0].size() < 3 || tokens[0].compare(tokens[0].size() - 3, 3, "OFF") != 0)
-    return false;
-  if (tokens[0].find('n') != std::string::npos || tokens[1] == "BINARY")
-    return false;  // nOFF: a dimension first
-  try {
-    vertices = std::stol(tokens[1]);
-    faces = std::stol(tokens[2]);
-  } catch (const std::exception&) {
-    return true;  // counts that are no numbers: checkAsciiOff says so
-  }
-  return true;
+  std::string keyword, next;
+  words >> keyword >> next;
+  return keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0 &&
+         keyword.find('n') == std::string::npos && next != "BINARY";
 }
 
 }  // namespace
@@ -241,9 +231,9 @@ int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**,
   bool hadComments = false;
   std::vector<int> lines;
   const std::string text = withoutComments(file, hadComments, lines);
-  long vertices = 0, faces = 0;
-  const bool ascii = announcedCounts(text, vertices, faces);
-  if (ascii) error = checkAsciiOff(text, lines, this->FileName);
+  long long vertices = 0, faces = 0;
+  const bool ascii = isAsciiOff(text);
+  if (ascii) error = checkAsciiOff(text, lines, this->FileName, vertices, faces);
   if (!error.empty()) {
     omerr().enable();
     vtkErrorMacro(<< error);
@@ -267,7 +257,7 @@ int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**,
   }
   // OpenMesh reads a file that ends early without complaint, and what it makes of the missing numbers
   // is whatever was in memory: hold it to the counts the header announced.
-  if (ascii && (long(soup.points.size()) < vertices || long(soup.facesSeen) < faces)) {
+  if (ascii && ((long long)soup.points.size() < vertices || (long long)soup.facesSeen < faces)) {
     vtkErrorMacro(<< this->FileName << ": the file ends early (" << vertices << " vertices and " << faces
                   << " faces announced, " << soup.points.size() << " and " << soup.facesSeen << " read)");
     return 0;

@@ -329,6 +329,22 @@ TEST(Readers, FuzzCorpusGivesAResultOrAnError) {
   EXPECT_GE(files, 7);
 }
 
+// A volume header that claims more voxels than its file holds, or than any memory, is refused at once,
+// before anything is allocated.
+TEST(Readers, VolumeHeadersClaimingTooManyVoxelsAreRefused) {
+  const std::string dir = scratchDir("huge-volumes");
+  const std::string header = "ObjectType = Image\nNDims = 3\nElementType = MET_UCHAR\n";
+  writeText(dir + "/4gb.mha", header + "DimSize = 2000 2000 1000\nElementDataFile = LOCAL\n" + std::string(100, '\1'));
+  writeText(dir + "/petabyte.mha", header + "DimSize = 100000 100000 100000\nElementDataFile = LOCAL\n");
+  const medial::Stopwatch stopwatch;
+  const ReadResult fourGb = readFile(dir + "/4gb.mha");
+  EXPECT_NE(fourGb.error.find("the header claims 4.0 GB of voxels, the file holds"), std::string::npos)
+      << fourGb.error;
+  const ReadResult petabyte = readFile(dir + "/petabyte.mha");
+  EXPECT_NE(petabyte.error.find("GB of memory"), std::string::npos) << petabyte.error;
+  EXPECT_LT(stopwatch.seconds(), 2.0);
+}
+
 TEST(Readers, ClearErrorsOnBadFiles) {
   const std::string dir = scratchDir("bad-files");
   writeText(dir + "/garbage.vtp", "this is not XML at all\n");
