@@ -104,6 +104,27 @@ int vtkMedialSWCReader::RequestData(vtkInformation*, vtkInformationVector**,
     skeleton.edges.push_back({parent->second, index});
   }
 
+  // SWC describes trees: following parents from any node must reach a root (parent -1). A chain that comes
+  // back to itself is a cycle, which the format cannot mean.
+  std::vector<int> parentOf(records.size(), -1), state(records.size(), 0);  // 0 new, 1 on the path, 2 done
+  for (size_t i = 0; i < records.size(); ++i)
+    if (records[i].parent != -1) parentOf[i] = indexOfId.at(records[i].parent);
+  for (size_t start = 0; start < records.size(); ++start) {
+    std::vector<int> path;
+    int k = int(start);
+    while (k >= 0 && state[size_t(k)] == 0) {
+      state[size_t(k)] = 1;
+      path.push_back(k);
+      k = parentOf[size_t(k)];
+    }
+    if (k >= 0 && state[size_t(k)] == 1) {
+      vtkErrorMacro(<< this->FileName << ":" << records[size_t(k)].line << ": the parents of node "
+                    << records[size_t(k)].id << " lead back to it (a cycle; SWC describes trees)");
+      return 0;
+    }
+    for (int v : path) state[size_t(v)] = 2;
+  }
+
   const auto problems = medial::validateSkeleton(skeleton);
   if (!problems.empty()) {
     // Name the file line of the first node concerned, when there is one.

@@ -194,6 +194,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadSwc{"zero-radius", "1 1 0 0 0 0 -1\n", "radius 0"},
                       BadSwc{"self-loop", "1 1 0 0 0 1 -1\n2 3 1 0 0 1 2\n", "its own parent"},
                       BadSwc{"missing-parent", "1 1 0 0 0 1 -1\n2 3 1 0 0 1 7\n", "parent 7 of node 2"},
+                      BadSwc{"cycle", "1 1 0 0 0 1 3\n2 3 1 0 0 1 1\n3 3 2 0 0 1 2\n", ":1: the parents of node 1 lead back"},
                       BadSwc{"duplicate-id", "1 1 0 0 0 1 -1\n1 3 1 0 0 1 -1\n", "node id 1 appears twice"},
                       BadSwc{"malformed", "1 1 0 0 0 1 -1\n2 3 1 0 zero 1 1\n", ":2: expected"},
                       BadSwc{"short-line", "1 1 0 0 0 1\n", ":1: expected"},

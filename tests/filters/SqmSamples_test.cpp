@@ -7,6 +7,7 @@
 #include "mesh/MeshTopology.h"
 #include "mesh/SelfIntersections.h"
 #include "vtkMedialReader.h"
+#include "common/Stopwatch.h"
 #include "vtkMedialSQM.h"
 
 #include <Eigen/Dense>
@@ -14,9 +15,11 @@
 #include <vtkCell.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
@@ -210,3 +213,56 @@ TEST(SqmFilter, UnknownSmoothingAndMeshInputAreErrors) {
 }
 
 }  // namespace
+
+// A skeleton of 10^5 nodes (a random tree in 3-D: long branches, about 9 % branch nodes, radius a fifth
+// of the edge length) is meshed in seconds, into a closed manifold (measured: 2.2 s for SQM on this
+// machine with other work running).
+TEST(SqmFilter, HundredThousandNodesFinishAsAClosedManifold) {
+  const int n = 100000;
+  auto skeleton = vtkSmartPointer<vtkPolyData>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  auto radius = vtkSmartPointer<vtkDoubleArray>::New();
+  radius->SetName("Radius");
+  uint64_t state = 12345;  // a fixed linear congruential sequence: the same tree on every run
+  auto uniform = [&state] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return double(state >> 11) / double(1ULL << 53);
+  };
+  std::vector<Eigen::Vector3d> position = {Eigen::Vector3d::Zero()}, direction = {Eigen::Vector3d::UnitX()};
+  std::vector<int> degree = {0};
+  points->InsertNextPoint(0, 0, 0);
+  radius->InsertNextValue(0.2);
+  for (int i = 1; i < n; ++i) {
+    int parent = i - 1;  // mostly a branch grows on
+    if (uniform() < 0.1) parent = int(uniform() * i);
+    if (degree[size_t(parent)] >= 3) parent = i - 1;
+    const Eigen::Vector3d d =
+        (direction[size_t(parent)] + 0.5 * Eigen::Vector3d(uniform() - 0.5, uniform() - 0.5, uniform() - 0.5))
+            .normalized();
+    position.push_back(position[size_t(parent)] + d);
+    direction.push_back(d);
+    degree.push_back(1);
+    ++degree[size_t(parent)];
+    points->InsertNextPoint(position.back().data());
+    radius->InsertNextValue(0.2);
+    const vtkIdType edge[2] = {parent, i};
+    lines->InsertNextCell(2, edge);
+  }
+  skeleton->SetPoints(points);
+  skeleton->SetLines(lines);
+  skeleton->GetPointData()->AddArray(radius);
+  auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+  auto errors = medial::ErrorCollector::Watch(sqm);
+  sqm->SetInputData(skeleton);
+  const medial::Stopwatch stopwatch;
+  sqm->Update();
+  const double seconds = stopwatch.seconds();
+  ASSERT_FALSE(errors->HasErrors()) << errors->Joined();
+  std::printf("10^5 nodes: %.2f s, %lld faces\n", seconds, (long long)sqm->GetOutput()->GetNumberOfPolys());
+  EXPECT_LT(seconds, 60.0);
+  const medial::MeshTopology t =
+      medial::computeMeshTopology(sqm->GetOutput()->GetNumberOfPoints(), polygonsOf(sqm->GetOutput()));
+  EXPECT_EQ(t.borderEdges, 0);
+  EXPECT_EQ(t.nonManifoldEdges, 0);
+}
