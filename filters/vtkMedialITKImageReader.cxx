@@ -158,6 +158,38 @@ bool voxelsFit(itk::ImageIOBase* io, const std::string& path, size_t files, std:
   return true;
 }
 
+// A slice of an uncompressed DICOM series that is shorter than its voxels (a truncated copy) is an error:
+// GDCM reads it without complaint, as garbage. Compressed transfer syntaxes may be shorter: not checked.
+// The transfer syntax UID of a DICOM file: element (0002,0010) of its file meta information, which the
+// standard always writes in explicit VR little endian after the 128-byte preamble and "DICM" (ITK's
+// dictionary leaves group 0002 out). Empty when not found.
+std::string dicomTransferSyntax(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(&head[0], std::streamsize(head.size()));
+  head.resize(size_t(in.gcount()));
+  const size_t at = head.find(std::string("\x02\x00\x10\x00UI", 6));
+  if (at == std::string::npos || at + 8 > head.size()) return {};
+  const size_t length = size_t(uint8_t(head[at + 6])) | size_t(uint8_t(head[at + 7])) << 8;
+  std::string uid = head.substr(at + 8, length);
+  uid.erase(uid.find_last_not_of(std::string(" \0", 2)) + 1);
+  return uid;
+}
+
+bool slicesComplete(itk::ImageIOBase* io, const std::vector<std::string>& files, std::string& error) {
+  const std::string syntax = dicomTransferSyntax(files.front());
+  if (syntax != "1.2.840.10008.1.2" && syntax != "1.2.840.10008.1.2.1" && syntax != "1.2.840.10008.1.2.2")
+    return true;
+  const double slice = double(io->GetImageSizeInBytes());
+  for (const std::string& file : files)
+    if (fileBytes(file) < slice) {
+      error = file + ": the slice is truncated (" + sizeText(std::max(0.0, fileBytes(file))) +
+              ", its voxels alone need " + sizeText(slice) + ")";
+      return false;
+    }
+  return true;
+}
+
 }  // namespace
 
 bool vtkMedialITKImageReader::ReadImage(const std::string& path, vtkImageData* image, std::string& error) {
@@ -179,6 +211,7 @@ bool vtkMedialITKImageReader::ReadImage(const std::string& path, vtkImageData* i
     io->SetFileName(probe);
     io->ReadImageInformation();
     if (!voxelsFit(io, path, std::max<size_t>(1, dicomFiles.size()), error)) return false;
+    if (!dicomFiles.empty() && !slicesComplete(io, dicomFiles, error)) return false;
     if (io->GetNumberOfComponents() != 1) {
       error = "the image has " + std::to_string(io->GetNumberOfComponents()) +
               " components per voxel; Medial reads scalar volumes";

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -594,4 +595,25 @@ TEST(Cli, AWriteThatFailsMidwayLeavesNoFileBehind) {
       EXPECT_EQ(entry.path().filename().string().rfind(".tmp-", 0), std::string::npos)
           << "left behind: " << entry.path();
   }
+}
+
+// A DICOM folder holding a second series and a truncated slice of the first: the larger series is read,
+// and the truncated slice (which GDCM reads as garbage without complaint) is an error naming it.
+TEST(Cli, DicomFolderWithAnotherSeriesAndATruncatedSlice) {
+  const std::string dir = scratchDir("cli-dicom-mixed");
+  const std::string phantom = binaryDir() + "/bin/medial-make-colon-phantom ";
+  ASSERT_EQ(std::system((phantom + dir + "/first > /dev/null").c_str()), 0);
+  ASSERT_EQ(std::system((phantom + dir + "/second > /dev/null").c_str()), 0);  // new UIDs: another series
+  for (const char* slice : {"slice001.dcm", "slice002.dcm", "slice003.dcm"})
+    std::filesystem::copy_file(dir + "/second/" + slice, dir + "/first/other-" + slice);
+  const std::string command = "centerline " + dir + "/first -o " + dir + "/c.vtp --threshold -1024:-600 --quiet";
+  const auto mixed = runCommand(medialCommand(command));
+  EXPECT_EQ(mixed.exitCode, 0) << mixed.err;
+  std::filesystem::resize_file(dir + "/first/slice100.dcm", 3000);
+  std::filesystem::remove(dir + "/c.vtp");
+  const auto truncated = runCommand(medialCommand(command));
+  EXPECT_EQ(truncated.exitCode, 1);
+  EXPECT_EQ(lineCount(truncated.err), 1) << truncated.err;
+  EXPECT_NE(truncated.err.find("slice100.dcm: the slice is truncated"), std::string::npos) << truncated.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/c.vtp"));
 }
