@@ -2,6 +2,7 @@
 #include "ImageComparison.h"
 #include "RunCommand.h"
 #include "TestPaths.h"
+#include "common/Stopwatch.h"
 #include "common/UnionFind.h"
 
 #include <vtkCell.h>
@@ -616,4 +617,56 @@ TEST(Cli, DicomFolderWithAnotherSeriesAndATruncatedSlice) {
   EXPECT_EQ(lineCount(truncated.err), 1) << truncated.err;
   EXPECT_NE(truncated.err.find("slice100.dcm: the slice is truncated"), std::string::npos) << truncated.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/c.vtp"));
+}
+
+// Hostile inputs of every kind end in one line that gives the right reason, exit 1 and no output file,
+// within seconds; a face that repeats a vertex is only a degenerate face and the mesh is still used.
+TEST(Cli, HostileInputsGiveOneLineWithTheRightReason) {
+  const std::string dir = scratchDir("cli-hostile");
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir + "/" + name) << text;
+    return dir + "/" + name;
+  };
+  const std::string tetrahedron = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  std::string sameStroke;
+  for (int i = 0; i < 40; ++i) sameStroke += "3 4\n";
+  struct Case {
+    std::string args, reason;
+  };
+  const std::vector<Case> cases = {
+      {"skeleton " + write("nan.off", "OFF\n4 4 0\n0 0 nan\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"),
+       "nan.off:3: the number nan is not finite"},
+      {"skeleton " + write("huge.off", "OFF\n4 4 0\n0 0 1e300\n" + tetrahedron.substr(6)), "the number 1e300"},
+      {"skeleton " + write("truncated.off", "OFF\n10000000 1 0\n0 0 0\n3 0 1 2\n"), "the file ends early"},
+      {"skeleton " + write("bad-face.off", "OFF\n4 1 0\n" + tetrahedron.substr(0, 24) + "1000000000 0 1 2\n"),
+       "face 0 does not list the 1000000000 corners"},
+      {"sqm " + write("cycle.swc", "1 1 0 0 0 1 3\n2 3 1 0 0 1 1\n3 3 2 0 0 1 2\n"), "a cycle; SWC describes trees"},
+      {"sqm " + write("zero-radius.swc", "1 1 0 0 0 0 -1\n2 3 1 0 0 1 1\n"), "radius 0"},
+      {"sketch " + write("same.txt", sameStroke), "the strokes have no extent"},
+      {"centerline " + write("claims-4gb.mha",
+                             "ObjectType = Image\nNDims = 3\nElementType = MET_UCHAR\nDimSize = 2000 2000 1000\n"
+                             "ElementDataFile = LOCAL\nxxxx"),
+       "the header claims 4.0 GB of voxels"},
+  };
+  for (const Case& c : cases) {
+    const medial::Stopwatch stopwatch;
+    const auto r = runCommand(medialCommand(c.args + " -o " + dir + "/out.vtp --quiet"));
+    EXPECT_EQ(r.exitCode, 1) << c.args << ": " << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.reason), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.vtp")) << c.args;
+    EXPECT_LT(stopwatch.seconds(), 10.0) << c.args;
+  }
+  // Outputs where none can be written.
+  for (const std::string& output : {std::string("/proc/medial-out.vtp"), dir + "/no-such-folder/out.vtp"}) {
+    const auto r = runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + output + " --quiet"));
+    EXPECT_EQ(r.exitCode, 1) << output;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(output + ": cannot create the file"), std::string::npos) << r.err;
+  }
+  // A face that repeats a vertex is degenerate, not an error: the skeleton comes out.
+  const auto repeated = runCommand(medialCommand(
+      "skeleton " + write("repeated.off", "OFF\n4 4 0\n" + tetrahedron.substr(0, 24) + "3 0 0 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n") +
+      " -o " + dir + "/repeated.vtp --quiet"));
+  EXPECT_EQ(repeated.exitCode, 0) << repeated.err;
 }
