@@ -435,8 +435,11 @@ TEST_F(GuiWorkflow, CancelALongRunAndRecover) {
 }
 
 TEST_F(GuiWorkflow, CorruptFilesGiveAnErrorAndTheSessionGoesOn) {
-  for (const char* name : {"corrupt.vtp", "corrupt.nii.gz", "corrupt.txt"}) {
-    std::ofstream(dir + "/" + name) << "this is not a " << name << " file\n";
+  std::ofstream(dir + "/truncated.off") << "OFF\n10000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  std::ofstream(dir + "/claims-4gb.mha") << "ObjectType = Image\nNDims = 3\nElementType = MET_UCHAR\n"
+                                          << "DimSize = 2000 2000 1000\nElementDataFile = LOCAL\nxxxx";
+  for (const char* name : {"corrupt.vtp", "corrupt.nii.gz", "corrupt.txt", "truncated.off", "claims-4gb.mha"}) {
+    if (!std::filesystem::exists(dir + "/" + name)) std::ofstream(dir + "/" + name) << "this is not a " << name << " file\n";
     errors.clear();
     EXPECT_FALSE(window->openFile(QString::fromStdString(dir + "/" + name)));
     ASSERT_EQ(errors.size(), 1) << name;
