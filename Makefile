@@ -3,7 +3,7 @@
 #   ./scripts/install-deps && make test     build, fetch the real samples, run the whole test suite
 PRESET ?= default
 
-.PHONY: all deps configure build samples demo test clean
+.PHONY: all deps configure build samples demo test package clean
 
 all: build
 
@@ -25,6 +25,10 @@ demo: build
 # Rendering and GUI tests need an X server: scripts/run-tests gives them a private one (xvfb-run).
 test: build samples
 	./scripts/run-tests $(PRESET)
+
+# The Debian package: build/medial_<version>_amd64.deb (CPack).
+package: build
+	cd build && cpack --config CPackConfig.cmake
 
 clean:
 	rm -rf build build-debug out
