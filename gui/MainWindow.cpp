@@ -143,7 +143,21 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     return;
   }
   for (FilterPanel* panel : panels_) panel->cancel();
+  if (layoutRestored_) saveLayout();
   QMainWindow::closeEvent(event);
+}
+
+void MainWindow::restoreLayout() {
+  layoutRestored_ = true;
+  QSettings s = settings();
+  restoreGeometry(s.value("window/geometry").toByteArray());
+  restoreState(s.value("window/state").toByteArray());
+}
+
+void MainWindow::saveLayout() {
+  QSettings s = settings();
+  s.setValue("window/geometry", saveGeometry());
+  s.setValue("window/state", saveState());
 }
 
 void MainWindow::showEvent(QShowEvent* event) {

@@ -40,6 +40,10 @@ class MainWindow : public QMainWindow {
   Q_OBJECT
 
  public:
+  // The window's size, position and docks as the user left them (interactive sessions: restored at start,
+  // saved when the window closes; screenshots and tests keep the default layout).
+  void restoreLayout();
+  void saveLayout();
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
 
@@ -81,6 +85,7 @@ class MainWindow : public QMainWindow {
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
   void closeEvent(QCloseEvent* event) override;
+  bool layoutRestored_ = false;
   void showEvent(QShowEvent* event) override;
 
  private:

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
     const QStringList wh = parser.value(size).split('x');
     if (wh.size() == 2 && wh[0].toInt() > 0 && wh[1].toInt() > 0) window.resize(wh[0].toInt(), wh[1].toInt());
   }
+  if (!batch) window.restoreLayout();
   for (const QString& file : parser.positionalArguments()) window.openFile(file);
   window.show();
   if (!batch) return app.exec();

@@ -24,12 +24,14 @@
 #include <QComboBox>
 #include <QElapsedTimer>
 #include <QDragEnterEvent>
+#include <QDockWidget>
 #include <QDropEvent>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QUrl>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QSettings>
 #include <QSlider>
 #include <QTabWidget>
 #include <QTest>
@@ -701,4 +703,22 @@ TEST_F(GuiWorkflow, DroppedFilesOpen) {
   QApplication::sendEvent(window.get(), &drop);
   EXPECT_EQ(window->objectCount(), 2);
   EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
+}
+
+// An interactive session leaves its layout (size, docks) for the next one.
+TEST_F(GuiWorkflow, WindowLayoutIsRestoredInTheNextSession) {
+  window->restoreLayout();
+  auto* log = window->findChild<QDockWidget*>("logDock");
+  ASSERT_TRUE(log);
+  ASSERT_TRUE(log->isVisible());
+  log->hide();
+  window->resize(1100, 720);
+  window->saveLayout();
+  MainWindow next;
+  next.restoreLayout();
+  next.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&next));
+  EXPECT_FALSE(next.findChild<QDockWidget*>("logDock")->isVisible());
+  EXPECT_EQ(next.size(), QSize(1100, 720));
+  QSettings("Medial", "medial-gui").remove("window");  // leave the user's settings as they were
 }
