@@ -8,6 +8,8 @@
 #include <vtkXMLDataElement.h>
 #include <vtkXMLUtilities.h>
 
+#include <cmath>
+
 #include <archive.h>
 #include <archive_entry.h>
 
@@ -120,8 +122,15 @@ bool vtkMedialInVesaliusReader::ReadImage(const std::string& path, vtkImageData*
     error = std::string("unsupported matrix dtype ") + dtypeElement->GetCharacterData();
     return false;
   }
+  // Each extent a whole number of voxels a VTK image can index (fuzz_inv3 found 4e20, whose conversion to
+  // int is undefined).
+  for (double extent : shape)
+    if (!(extent >= 1 && extent <= 1e9) || extent != std::floor(extent)) {
+      error = "main.plist gives a matrix shape that is not three whole numbers from 1 to 10^9";
+      return false;
+    }
   const int nx = static_cast<int>(shape[2]), ny = static_cast<int>(shape[1]), nz = static_cast<int>(shape[0]);
-  if (nx <= 0 || ny <= 0 || nz <= 0 || !(spacing[0] > 0 && spacing[1] > 0 && spacing[2] > 0)) {
+  if (!(spacing[0] > 0 && spacing[1] > 0 && spacing[2] > 0)) {
     error = "main.plist gives an empty shape or a non-positive spacing";
     return false;
   }

@@ -327,6 +327,20 @@ TEST(Readers, FuzzCorpusGivesAResultOrAnError) {
     }
   }
   EXPECT_GE(files, 7);
+  // The .inv3 corpus holds main.plist files: each is packed as InVesalius does, with a 4x4x4 int16 matrix.
+  for (const auto& entry : std::filesystem::directory_iterator(medial::test::sourceDir() + "/tests/fuzz/corpus/inv3")) {
+    const std::string project = dir + "/project";
+    std::filesystem::remove_all(project);
+    std::filesystem::create_directories(project);
+    std::filesystem::copy_file(entry.path(), project + "/main.plist");
+    writeText(project + "/matrix.dat", std::string(128, '\1'));
+    const std::string inv3 = dir + "/" + entry.path().stem().string() + ".inv3";
+    ASSERT_EQ(std::system(("tar -czf " + inv3 + " -C " + project + " main.plist matrix.dat").c_str()), 0);
+    const ReadResult r = readFile(inv3);
+    auto* image = vtkImageData::SafeDownCast(r.data);
+    if (r.error.empty()) EXPECT_TRUE(image && image->GetNumberOfPoints() > 0) << entry.path();
+    ++files;
+  }
 }
 
 // A volume header that claims more voxels than its file holds, or than any memory, is refused at once,
