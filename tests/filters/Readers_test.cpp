@@ -25,6 +25,7 @@
 #include <memory>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 
