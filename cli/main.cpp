@@ -259,6 +259,7 @@ void printHelp(FILE* out) {
                "       medial --help | --version\n\ncommands:\n",
                MEDIAL_VERSION);
   for (const Command& c : commands()) std::fprintf(out, "  %-11s %s\n", c.name, c.summary);
+  std::fprintf(out, "  %-11s %s\n", "batch", "any of these commands over many files, locally or on a Dask cluster");
   std::fprintf(out, "\nExit status: 0 success, 1 failure (one line on stderr), 2 usage error.\n");
 }
 
@@ -280,6 +281,7 @@ int main(int argc, char** argv) {
     std::printf("medial %s (VTK %s)\n", MEDIAL_VERSION, vtkVersion::GetVTKVersion());
     return kSuccess;
   }
+  if (args[0] == "batch") return runBatch(argv[0], std::vector<std::string>(args.begin() + 1, args.end()));
   const Command* command = nullptr;
   for (const Command& c : commands())
     if (args[0] == c.name) command = &c;

@@ -8,7 +8,7 @@ install(TARGETS medial medial-make-colon-phantom RUNTIME DESTINATION ${CMAKE_INS
 if(TARGET medial-gui)
   install(TARGETS medial-gui RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
 endif()
-install(FILES ${MEDIAL_PYTHON_PATH}/medial/__init__.py DESTINATION ${medial_python_destination}/medial
+install(FILES ${MEDIAL_PYTHON_PATH}/medial/__init__.py ${MEDIAL_PYTHON_PATH}/medial/batch.py DESTINATION ${medial_python_destination}/medial
         COMPONENT runtime)
 
 configure_file(${CMAKE_CURRENT_LIST_DIR}/MedialConfig.cmake.in ${CMAKE_BINARY_DIR}/lib/cmake/medial/MedialConfig.cmake
@@ -85,5 +85,6 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${CMAKE_BINARY_DIR}/lib)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3, python3-vtk9, python3-numpy, xvfb, xauth, libgl1-mesa-dri")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS
+    "python3, python3-vtk9, python3-numpy, python3-distributed, xvfb, xauth, libgl1-mesa-dri")
 include(CPack)

@@ -12,6 +12,8 @@ vtk_module_wrap_python(
 set(MEDIAL_PYTHON_PATH ${CMAKE_BINARY_DIR}/${medial_python_destination} CACHE INTERNAL "")
 configure_file(${CMAKE_CURRENT_LIST_DIR}/medial_init.py.in
                ${MEDIAL_PYTHON_PATH}/medial/__init__.py @ONLY)
+# The pure-Python modules of the package (the batch runner).
+configure_file(${PROJECT_SOURCE_DIR}/python/medial/batch.py ${MEDIAL_PYTHON_PATH}/medial/batch.py COPYONLY)
 
 # The environment of tests that run Debian's interpreter on the package. Under the sanitizers
 # (scripts/sanitize) the interpreter is not instrumented: the runtimes are preloaded, and leaks are not
