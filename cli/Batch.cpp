@@ -24,7 +24,7 @@ int runBatch(const char*, const std::vector<std::string>& args) {
   const std::string package = bin + "/../lib/python3/dist-packages";  // installed and build trees alike
   const char* old = std::getenv("PYTHONPATH");
   ::setenv("PYTHONPATH", (package + (old && *old ? ":" + std::string(old) : "")).c_str(), 1);
-  ::setenv("MEDIAL_EXECUTABLE", executable.c_str(), 1);
+  ::setenv("MEDIAL_EXECUTABLE", executable.c_str(), 0);  // unless the caller names another (tests do)
   // argv[0] is the full path: Python derives sys.executable (which Dask's worker processes run) from it.
   std::vector<std::string> words = {"/usr/bin/python3", "-m", "medial.batch"};
   words.insert(words.end(), args.begin(), args.end());

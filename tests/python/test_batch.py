@@ -1,0 +1,202 @@
+"""medial batch: a local cluster, a real loopback cluster, isolation of crashes and time-outs, retries,
+resume, and a manifest that stays valid when the driver is killed. Every scheduler and worker binds
+127.0.0.1 and is stopped by pid."""
+import csv
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+MEDIAL = os.environ["MEDIAL_EXECUTABLE"]
+SOURCE = os.environ.get("MEDIAL_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+SKELETONS = os.path.join(SOURCE, "data", "skeletons", "sqm")
+
+# A stand-in `medial` for isolation tests: it aborts on inputs named *abort*, sleeps on *sleep*, counts its
+# runs of each input in COUNT_DIR, and otherwise writes its output.
+STAND_IN = """#!/bin/sh
+input=$2 output=$4
+echo x >> "$COUNT_DIR/$(basename "$input").runs"
+case "$input" in
+  *abort*) kill -ABRT $$ ;;
+  *sleep*) sleep 30 ;;
+  *slow*) sleep 0.4 ;;
+esac
+echo made > "$output"
+echo '{"total": 0.01}'
+"""
+
+
+def rows(out_dir):
+    with open(os.path.join(out_dir, "manifest.csv"), newline="") as f:
+        return {os.path.basename(r["input"]): r for r in csv.DictReader(f)}
+
+
+def run_count(counts, name):
+    """How many times the stand-in ran for input `name`."""
+    with open(os.path.join(counts, name + ".runs")) as f:
+        return len(f.read().split())
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class Batch(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp(prefix="medial-batch-test-")
+        self.inputs = os.path.join(self.dir, "in")
+        os.makedirs(self.inputs)
+
+    def tearDown(self):
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def batch(self, *args, medial=MEDIAL, env=None):
+        environment = dict(os.environ, **(env or {}))
+        return subprocess.run([medial, "batch"] + list(args), capture_output=True, text=True, env=environment,
+                              timeout=600)
+
+    def twenty_skeletons(self):
+        names = sorted(n for n in os.listdir(SKELETONS) if n.endswith(".vtp"))
+        for k in range(20):
+            shutil.copy(os.path.join(SKELETONS, names[k % len(names)]), os.path.join(self.inputs, "s%02d.vtp" % k))
+        with open(os.path.join(self.inputs, "corrupt.vtp"), "w") as f:
+            f.write("not a skeleton\n")
+
+    def stand_in(self):
+        path = os.path.join(self.dir, "medial-stand-in")
+        with open(path, "w") as f:
+            f.write(STAND_IN)
+        os.chmod(path, 0o755)
+        counts = os.path.join(self.dir, "counts")
+        os.makedirs(counts, exist_ok=True)
+        return path, counts
+
+    def test_local_cluster_gives_a_row_per_input(self):
+        self.twenty_skeletons()
+        out = os.path.join(self.dir, "out")
+        r = self.batch("sqm", self.inputs, os.path.join(self.inputs, "missing.vtp"), "--out-dir", out, "--workers", "2")
+        self.assertEqual(r.returncode, 1, r.stderr)
+        table = rows(out)
+        self.assertEqual(len(table), 22)
+        ok = [row for row in table.values() if row["status"] == "ok"]
+        self.assertEqual(len(ok), 20)
+        for row in ok:
+            self.assertGreater(os.path.getsize(row["output"]), 1000)
+            self.assertIn('"sqm"', row["timings"])
+        for name in ("corrupt.vtp", "missing.vtp"):
+            self.assertEqual(table[name]["status"], "error")
+            self.assertEqual(table[name]["exit_code"], "1")
+            self.assertIn(name, table[name]["message"])
+            self.assertNotIn("\n", table[name]["message"])
+        self.assertIn("20 ok", r.stdout)
+
+    def test_a_loopback_cluster_shares_the_inputs_between_its_workers(self):
+        self.twenty_skeletons()
+        os.remove(os.path.join(self.inputs, "corrupt.vtp"))
+        port = free_port()
+        env = dict(os.environ, PYTHONPATH=os.path.join(os.path.dirname(MEDIAL), "..", "lib", "python3", "dist-packages"))
+        started = [subprocess.Popen(["/usr/bin/dask-scheduler", "--host", "127.0.0.1", "--port", str(port),
+                                     "--no-dashboard"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)]
+        try:
+            time.sleep(2)
+            for _ in range(2):
+                started.append(subprocess.Popen(
+                    ["/usr/bin/dask-worker", "tcp://127.0.0.1:%d" % port, "--host", "127.0.0.1", "--nthreads", "1",
+                     "--no-dashboard"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env))
+            time.sleep(4)
+            out = os.path.join(self.dir, "out")
+            r = self.batch("sqm", self.inputs, "--out-dir", out, "--scheduler", "tcp://127.0.0.1:%d" % port)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            table = rows(out)
+            self.assertEqual(len(table), 20)
+            self.assertEqual({row["status"] for row in table.values()}, {"ok"})
+            self.assertEqual(len({row["worker"] for row in table.values()}), 2, "both workers took inputs")
+        finally:
+            for process in reversed(started):
+                process.send_signal(signal.SIGTERM)
+            for process in reversed(started):
+                try:
+                    process.wait(timeout=10)
+                except subprocess.TimeoutExpired:
+                    process.kill()
+
+    def test_crashes_and_time_outs_lose_only_their_input_and_are_retried(self):
+        stand_in, counts = self.stand_in()
+        for name in ("a.vtp", "b.vtp", "abort.vtp", "sleep.vtp"):
+            open(os.path.join(self.inputs, name), "w").close()
+        out = os.path.join(self.dir, "out")
+        env = {"MEDIAL_EXECUTABLE": stand_in, "COUNT_DIR": counts}
+        r = self.batch("sqm", self.inputs, "--out-dir", out, "--workers", "2", "--timeout", "2", "--retries", "1",
+                       env=env)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        table = rows(out)
+        self.assertEqual(table["a.vtp"]["status"], "ok")
+        self.assertEqual(table["b.vtp"]["status"], "ok")
+        self.assertEqual(table["abort.vtp"]["status"], "crash")
+        self.assertIn("SIGABRT", table["abort.vtp"]["message"])
+        self.assertEqual(table["sleep.vtp"]["status"], "timeout")
+        runs = lambda name: run_count(counts, name)
+        self.assertEqual(runs("abort.vtp"), 2, "--retries 1: a crash runs twice")
+        self.assertEqual(runs("sleep.vtp"), 2)
+        self.assertEqual(runs("a.vtp"), 1, "an ok input runs once")
+
+    def test_resume_skips_what_is_done_and_reruns_what_failed(self):
+        stand_in, counts = self.stand_in()
+        for name in ["slow%d.vtp" % k for k in range(6)] + ["abort.vtp"]:
+            open(os.path.join(self.inputs, name), "w").close()
+        out = os.path.join(self.dir, "out")
+        env = {"MEDIAL_EXECUTABLE": stand_in, "COUNT_DIR": counts}
+        start = time.monotonic()
+        first = self.batch("sqm", self.inputs, "--out-dir", out, "--workers", "1", env=env)
+        first_seconds = time.monotonic() - start
+        self.assertEqual(first.returncode, 1)
+        start = time.monotonic()
+        second = self.batch("sqm", self.inputs, "--out-dir", out, "--workers", "1", "--resume", env=env)
+        self.assertEqual(second.returncode, 1)
+        runs = lambda name: run_count(counts, name)
+        self.assertEqual(runs("slow0.vtp"), 1, "an ok input is not run again")
+        self.assertEqual(runs("abort.vtp"), 2, "a failed one is")
+        self.assertEqual(len(rows(out)), 7)
+        print("first run %.1f s, resumed %.1f s" % (first_seconds, time.monotonic() - start))
+
+    def test_killing_the_driver_leaves_a_valid_manifest(self):
+        stand_in, counts = self.stand_in()
+        for k in range(30):
+            open(os.path.join(self.inputs, "slow%02d.vtp" % k), "w").close()
+        out = os.path.join(self.dir, "out")
+        env = dict(os.environ, MEDIAL_EXECUTABLE=stand_in, COUNT_DIR=counts)
+        driver = subprocess.Popen([MEDIAL, "batch", "sqm", self.inputs, "--out-dir", out, "--workers", "1"],
+                                  env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                  start_new_session=True)
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline and (not os.path.exists(os.path.join(out, "manifest.csv")) or
+                                               len(rows(out)) < 3):
+            time.sleep(0.2)
+        os.killpg(driver.pid, signal.SIGKILL)  # the driver and its cluster, half-way
+        driver.wait()
+        table = rows(out)
+        self.assertGreaterEqual(len(table), 3)
+        self.assertLess(len(table), 30)
+        for row in table.values():
+            self.assertEqual(row["status"], "ok")
+            self.assertTrue(os.path.exists(row["output"]))
+
+    def test_usage_errors_exit_two(self):
+        for args in ([], ["frobnicate", "x", "--out-dir", self.dir], ["sqm", "x"],
+                     ["sqm", "x", "--out-dir", self.dir, "--workers", "0"]):
+            r = self.batch(*args)
+            if not args:
+                continue  # the help
+            self.assertEqual(r.returncode, 2, args)
+            self.assertIn("see 'medial batch --help'", r.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
