@@ -165,6 +165,9 @@ std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineN
   };
   // The key word, then the counts "V F [E]" on its line or the next.
   if (lines.empty() || lines[0].empty()) return fileName + ": the file is empty";
+  if (lines[0][0].find("OFF") == std::string::npos) return at(0) + "the file does not start with OFF";
+  if (lines[0][0].find('n') != std::string::npos)
+    return at(0) + "nOFF (points of any dimension) is not supported; write the mesh as OFF, PLY or STL";
   size_t line = 0, word = 1;
   if (lines[0].size() == 1) line = 1, word = 0;
   if (line >= lines.size() || lines[line].size() < word + 2 || !whole(lines[line][word], vertices) ||
@@ -218,14 +221,10 @@ std::string checkNotBinaryOff(const std::string& path) {
   return path + ": binary OFF is not supported; write the mesh as ASCII OFF, PLY or STL";
 }
 
-// Whether the text is an ASCII OFF file (key word OFF, COFF, NOFF, STOFF...; not binary, not nOFF, whose
-// dimension comes first), whatever follows the key word.
+// Whether the text is to be read as ASCII OFF: anything but binary OFF. OpenMesh accepts loose key words
+// ("OFF86..." passed as OFF: fuzz_off), so every text file goes through checkAsciiOff first.
 bool isAsciiOff(const std::string& text) {
-  std::istringstream words(text);
-  std::string keyword, next;
-  words >> keyword >> next;
-  return keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0 &&
-         keyword.find('n') == std::string::npos && next != "BINARY";
+  return text.substr(0, 256).find("BINARY") == std::string::npos;
 }
 
 }  // namespace
