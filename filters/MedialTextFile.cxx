@@ -24,8 +24,7 @@ bool TextFile::nextLine(std::string& text) {
   if (!std::getline(in_, text)) return false;
   ++line_;
   const size_t hash = text.find('#');
-  comment_ = hash != std::string::npos;
-  if (comment_) text.erase(hash);
+  if (hash != std::string::npos) text.erase(hash);
   return true;
 }
 

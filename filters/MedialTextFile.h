@@ -15,8 +15,6 @@ class TextFile {
   bool open(const std::string& path, std::string& error);
   /// The next line, its comment ('#' to the end) removed; false at the end of the file.
   bool nextLine(std::string& text);
-  /// Whether that line had a comment.
-  bool lineHadComment() const { return comment_; }
   /// The number of the line nextLine gave last (from 1).
   int lineNumber() const { return line_; }
   /// "PATH:LINE: ", the start of a message about that line.
@@ -26,7 +24,6 @@ class TextFile {
   std::ifstream in_;
   std::string path_;
   int line_ = 0;
-  bool comment_ = false;
 };
 
 /// The whitespace-separated fields of `text` as numbers; false when a field is not wholly a number.

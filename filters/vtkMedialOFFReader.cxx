@@ -130,11 +130,9 @@ class PolygonSoupImporter : public IO::BaseImporter {
 // An ASCII OFF file's text without its comments ('#' to the end of a line) and blank lines: OpenMesh reads
 // none of CGAL's OFF files that open with a comment block (cube_poly, sphere966, mesh_with_colors...).
 // `lines` gets the file's line number of each line kept.
-std::string withoutComments(medial::TextFile& file, bool& hadComments, std::vector<int>& lines) {
+std::string withoutComments(medial::TextFile& file, std::vector<int>& lines) {
   std::string text;
-  hadComments = false;
   for (std::string line; file.nextLine(line);) {
-    hadComments = hadComments || file.lineHadComment();
     if (medial::isBlank(line)) continue;
     text += line + "\n";
     lines.push_back(file.lineNumber());
@@ -150,7 +148,8 @@ std::string withoutComments(medial::TextFile& file, bool& hadComments, std::vect
 // are wrong (a face announcing 10^9 corners made it allocate gigabytes). Empty when the text is fit to
 // read; otherwise the problem, with the file's line.
 std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineNumbers,
-                          const std::string& fileName, long long& vertices, long long& faces) {
+                          const std::string& fileName, long long& vertices, long long& faces,
+                          std::string& canonical) {
   std::vector<std::vector<std::string>> lines;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
@@ -204,6 +203,15 @@ std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineN
         return at(l) + "face " + std::to_string(f) + " refers to vertex " + lines[l][k] + ", which does not exist";
     }
   }
+  // What OpenMesh reads: the key word alone, the counts alone, then exactly the lines they announce (it
+  // misreads anything else: fuzz_off found a counts line ending in "0FF" that made it loop).
+  std::ostringstream out;
+  out << lines[0][0] << "\n" << vertices << " " << faces << " 0\n";
+  for (size_t l = first; l < first + size_t(vertices + faces); ++l) {
+    for (size_t w = 0; w < lines[l].size(); ++w) out << (w ? " " : "") << lines[l][w];
+    out << "\n";
+  }
+  canonical = out.str();
   return std::string();
 }
 
@@ -242,25 +250,26 @@ int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**,
   PolygonSoupImporter soup;
   IO::Options options = IO::Options::VertexColor | IO::Options::VertexNormal;
   omerr().disable();  // OpenMesh would print its own complaints; ours name the file
-  bool hadComments = false;
   std::vector<int> lines;
-  const std::string text = withoutComments(file, hadComments, lines);
+  const std::string text = withoutComments(file, lines);
   long long vertices = 0, faces = 0;
   const bool ascii = isAsciiOff(text);
-  error = ascii ? checkAsciiOff(text, lines, this->FileName, vertices, faces) : checkNotBinaryOff(this->FileName);
+  std::string canonical;
+  error = ascii ? checkAsciiOff(text, lines, this->FileName, vertices, faces, canonical)
+                : checkNotBinaryOff(this->FileName);
   if (!error.empty()) {
     omerr().enable();
     vtkErrorMacro(<< error);
     return 0;
   }
-  // A file with comments is read from a copy without them (OpenMesh reads colours and normals only from a
-  // file, not from a stream).
+  // An ASCII file is read from its canonical copy (OpenMesh reads colours and normals only from a file,
+  // not from a stream).
   std::string path = this->FileName;
-  if (ascii && hadComments) {
+  if (ascii) {
     path = (std::filesystem::temp_directory_path() /
             ("medial-off-" + std::to_string(::getpid()) + "-" + std::to_string(uintptr_t(this)) + ".off"))
                .string();
-    std::ofstream(path) << text;
+    std::ofstream(path) << canonical;
   }
   const bool ok = IO::IOManager().read(path, soup, options);
   if (path != this->FileName) std::filesystem::remove(path);
