@@ -151,12 +151,17 @@ std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineN
                           const std::string& fileName, long long& vertices, long long& faces,
                           std::string& canonical) {
   std::vector<std::vector<std::string>> lines;
+  std::vector<int> numbers;  // the file's line of each (lines of other whitespace, \f or \v, drop out here)
   std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
+  size_t index = 0;
+  for (std::string line; std::getline(in, line); ++index) {
     std::istringstream words(line);
-    lines.emplace_back(std::istream_iterator<std::string>(words), std::istream_iterator<std::string>());
+    std::vector<std::string> tokens{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+    if (tokens.empty()) continue;  // fuzz_off under UBSan: a line of \v indexed an empty list
+    lines.push_back(std::move(tokens));
+    numbers.push_back(lineNumbers[index]);
   }
-  const auto at = [&](size_t line) { return fileName + ":" + std::to_string(lineNumbers[line]) + ": "; };
+  const auto at = [&](size_t line) { return fileName + ":" + std::to_string(numbers[line]) + ": "; };
   const auto whole = [](const std::string& word, long long& value) {
     char* end = nullptr;
     value = std::strtoll(word.c_str(), &end, 10);
