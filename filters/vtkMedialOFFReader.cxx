@@ -208,12 +208,16 @@ std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineN
         return at(l) + "face " + std::to_string(f) + " refers to vertex " + lines[l][k] + ", which does not exist";
     }
   }
-  // What OpenMesh reads: the key word alone, the counts alone, then exactly the lines they announce (it
-  // misreads anything else: fuzz_off found a counts line ending in "0FF" that made it loop).
+  // What OpenMesh reads: the key word alone, the counts alone, then exactly the lines they announce, a
+  // face as its corners only (it misreads anything else: fuzz_off found a counts line ending in "0FF" and
+  // a face followed by 8888830, which it took for colour data, that made it loop; face colours are not
+  // kept anyway).
   std::ostringstream out;
   out << lines[0][0] << "\n" << vertices << " " << faces << " 0\n";
   for (size_t l = first; l < first + size_t(vertices + faces); ++l) {
-    for (size_t w = 0; w < lines[l].size(); ++w) out << (w ? " " : "") << lines[l][w];
+    const bool face = l >= first + size_t(vertices);
+    const size_t words = face ? size_t(std::stoll(lines[l][0])) + 1 : lines[l].size();
+    for (size_t w = 0; w < words; ++w) out << (w ? " " : "") << lines[l][w];
     out << "\n";
   }
   canonical = out.str();
