@@ -227,21 +227,14 @@ std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineN
 // Binary OFF ("OFF BINARY" and its variants) is refused: OpenMesh's binary reader trusts the counts it
 // reads, without checking for the end of the file, and reads them in an order of bytes that does not
 // match the big-endian files of the format's description (fuzz_off: a 25-byte file kept it busy past
-// libFuzzer's 10 s; a valid 4-vertex file written big-endian hung it). Empty for any other file.
-std::string checkNotBinaryOff(const std::string& path) {
+// libFuzzer's 10 s; a valid 4-vertex file written big-endian hung it). A file is binary when its first
+// line, as written or without its comment, says BINARY (fuzz_off: a comment hid it from one of the two).
+bool isBinaryOff(const std::string& path, const std::string& text) {
   std::ifstream in(path, std::ios::binary);
-  std::string head(256, '\0');
-  in.read(&head[0], std::streamsize(head.size()));
-  head.resize(size_t(in.gcount()));
-  const size_t off = head.find("OFF");
-  if (off == std::string::npos || off > 8 || head.find("BINARY") == std::string::npos) return std::string();
-  return path + ": binary OFF is not supported; write the mesh as ASCII OFF, PLY or STL";
-}
-
-// Whether the text is to be read as ASCII OFF: anything but binary OFF. OpenMesh accepts loose key words
-// ("OFF86..." passed as OFF: fuzz_off), so every text file goes through checkAsciiOff first.
-bool isAsciiOff(const std::string& text) {
-  return text.substr(0, 256).find("BINARY") == std::string::npos;
+  std::string firstLine;
+  std::getline(in, firstLine);
+  return firstLine.find("BINARY") != std::string::npos ||
+         text.substr(0, text.find('\n')).find("BINARY") != std::string::npos;
 }
 
 }  // namespace
@@ -262,10 +255,10 @@ int vtkMedialOFFReader::RequestData(vtkInformation*, vtkInformationVector**,
   std::vector<int> lines;
   const std::string text = withoutComments(file, lines);
   long long vertices = 0, faces = 0;
-  const bool ascii = isAsciiOff(text);
+  const bool ascii = !isBinaryOff(this->FileName, text);
   std::string canonical;
   error = ascii ? checkAsciiOff(text, lines, this->FileName, vertices, faces, canonical)
-                : checkNotBinaryOff(this->FileName);
+                : this->FileName + ": binary OFF is not supported; write the mesh as ASCII OFF, PLY or STL";
   if (!error.empty()) {
     omerr().enable();
     vtkErrorMacro(<< error);
