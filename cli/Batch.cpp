@@ -1,6 +1,7 @@
 // `medial batch ...`: the batch runner is Python (medial/batch.py on Dask); this hands the arguments to
 // Debian's interpreter with the package of this installation (or build) on its path and this executable
-// as the `medial` the tasks run.
+// as the `medial` the tasks run. The script runs as a file, not as `-m medial.batch`: importing the
+// package `medial` would load VTK and our filters (0.26 s) into a driver that only starts processes.
 #include "CommandLine.h"
 #include "Commands.h"
 
@@ -26,7 +27,7 @@ int runBatch(const char*, const std::vector<std::string>& args) {
   ::setenv("PYTHONPATH", (package + (old && *old ? ":" + std::string(old) : "")).c_str(), 1);
   ::setenv("MEDIAL_EXECUTABLE", executable.c_str(), 0);  // unless the caller names another (tests do)
   // argv[0] is the full path: Python derives sys.executable (which Dask's worker processes run) from it.
-  std::vector<std::string> words = {"/usr/bin/python3", "-m", "medial.batch"};
+  std::vector<std::string> words = {"/usr/bin/python3", package + "/medial/batch.py"};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());

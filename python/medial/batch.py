@@ -79,6 +79,16 @@ def expand_inputs(items):
     return [i for i in inputs if not (i in seen or seen.add(i))]
 
 
+def _size_of(path):
+    """Bytes of a file, or of the files of a folder (a DICOM series); 0 for what does not exist."""
+    try:
+        if os.path.isdir(path):
+            return sum(os.path.getsize(os.path.join(path, n)) for n in os.listdir(path))
+        return os.path.getsize(path)
+    except OSError:
+        return 0
+
+
 def names_of(path):
     name = os.path.basename(os.path.normpath(path))
     stem = name
@@ -105,6 +115,17 @@ def _worker_name():
         return "%s:%d" % (socket.gethostname(), os.getpid())
 
 
+# A worker is one core: the child's numeric libraries (OpenBLAS under CHOLMOD, OpenMP, VTK's SMP tools)
+# stay on one thread too, unless the caller set them; two children each spawning a thread per core would
+# fight over the cores and lose the speed-up of a second worker.
+SINGLE_THREADED = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
+                   "VTK_SMP_MAX_THREADS": "1"}
+
+
+def _child_environment():
+    return dict(SINGLE_THREADED, **os.environ)
+
+
 def run_one(medial, command, path, output, options, timeout=None, retries=0):
     """Runs `medial COMMAND PATH -o OUTPUT OPTIONS --quiet --timings` in a child process (retrying crashes
     and time-outs); returns the manifest row."""
@@ -115,7 +136,7 @@ def run_one(medial, command, path, output, options, timeout=None, retries=0):
         start = time.monotonic()
         try:
             done = subprocess.run(arguments, capture_output=True, text=True, timeout=timeout,
-                                  start_new_session=True)
+                                  start_new_session=True, env=_child_environment())
             code, out, err = done.returncode, done.stdout, done.stderr
             status = "ok" if code == 0 else "crash" if code < 0 else "error"
         except subprocess.TimeoutExpired as expired:
@@ -234,6 +255,7 @@ def run(command, inputs, out_dir, options=(), scheduler=None, workers=None, time
         if resume and old and old["status"] == "ok" and os.path.exists(output):
             continue
         todo.append((path, output))
+    todo.sort(key=lambda task: -_size_of(task[0]))
     progress = _Progress(len(todo), quiet)
     if todo:
         from distributed import Client, LocalCluster, as_completed
@@ -241,15 +263,19 @@ def run(command, inputs, out_dir, options=(), scheduler=None, workers=None, time
         if scheduler:
             client = Client(scheduler)
         else:
+            # The workers are threads of this process: each task's work is a child process anyway (which is
+            # what isolates crashes), so worker processes would only add their start-up (0.5 s each here).
             cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
-                                   processes=True, host="127.0.0.1", dashboard_address=None)
+                                   processes=False, dashboard_address=None)
             client = Client(cluster)
         try:
-            futures = [client.submit(run_one, medial, command, path, output, options, timeout, retries,
-                                     key="medial-%s-%d-%s" % (command, i, os.path.basename(path)), pure=False)
-                       for i, (path, output) in enumerate(todo)]
+            # The largest inputs go first (Dask runs tasks in the order they are submitted): a long one
+            # started last would leave the other workers idle at the end.
+            futures = {client.submit(run_one, medial, command, path, output, options, timeout, retries,
+                                     key="medial-%s-%d-%s" % (command, i, os.path.basename(path)), pure=False):
+                       (path, output) for i, (path, output) in enumerate(todo)}
             for future in as_completed(futures):
-                row = future.result()
+                row = _row_of(future, *futures[future])
                 manifest.add(row)
                 progress.step(row)
         finally:
@@ -258,6 +284,17 @@ def run(command, inputs, out_dir, options=(), scheduler=None, workers=None, time
             if cluster:
                 cluster.close()
     return [manifest.rows[p] for p in paths if p in manifest.rows]
+
+
+def _row_of(future, path, output):
+    """The task's manifest row; a task Dask itself gave up on (its workers kept dying while running it:
+    KilledWorker) or that raised is a crash of that input, not of the batch."""
+    try:
+        return future.result()
+    except Exception as e:
+        return {"input": path, "output": output, "status": "crash", "exit_code": "", "seconds": "",
+                "worker": "", "message": "the task failed on the cluster: %s: %s" % (type(e).__name__, e),
+                "timings": ""}
 
 
 def _parse(argv):

@@ -48,6 +48,57 @@ def free_port():
         return s.getsockname()[1]
 
 
+def worker_processes_of(nanny):
+    """The pids of the worker processes a dask-worker's nanny started (multiprocessing's spawn)."""
+    children = []
+    for task in os.listdir("/proc/%d/task" % nanny):  # any of its threads may have started it
+        with open("/proc/%d/task/%s/children" % (nanny, task)) as f:
+            children += [int(pid) for pid in f.read().split()]
+    workers = []
+    for pid in children:
+        try:
+            with open("/proc/%d/cmdline" % pid, "rb") as f:
+                if b"spawn_main" in f.read():  # not multiprocessing's resource tracker
+                    workers.append(pid)
+        except FileNotFoundError:
+            pass
+    return workers
+
+
+class LoopbackCluster:
+    """dask-scheduler and two single-threaded dask-workers (each under its nanny) on 127.0.0.1, with this
+    build's package on their path; stopped by pid on exit."""
+
+    def __init__(self, env=None):
+        self.env = dict(os.environ, PYTHONPATH=os.path.join(os.path.dirname(MEDIAL), "..", "lib", "python3",
+                                                            "dist-packages"), **(env or {}))
+        self.address = "tcp://127.0.0.1:%d" % free_port()
+        self.processes = []
+
+    def __enter__(self):
+        port = self.address.rsplit(":", 1)[1]
+        self.processes.append(subprocess.Popen(["/usr/bin/dask-scheduler", "--host", "127.0.0.1", "--port", port,
+                                                "--no-dashboard"], stdout=subprocess.DEVNULL,
+                                               stderr=subprocess.DEVNULL, env=self.env))
+        time.sleep(2)
+        for _ in range(2):
+            self.processes.append(subprocess.Popen(
+                ["/usr/bin/dask-worker", self.address, "--host", "127.0.0.1", "--nthreads", "1", "--no-dashboard"],
+                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=self.env))
+        time.sleep(4)
+        return self
+
+    def __exit__(self, *_):
+        for process in reversed(self.processes):
+            process.send_signal(signal.SIGTERM)
+        for process in reversed(self.processes):
+            try:
+                process.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
+
+
 class Batch(unittest.TestCase):
     def setUp(self):
         self.dir = tempfile.mkdtemp(prefix="medial-batch-test-")
@@ -100,32 +151,43 @@ class Batch(unittest.TestCase):
     def test_a_loopback_cluster_shares_the_inputs_between_its_workers(self):
         self.twenty_skeletons()
         os.remove(os.path.join(self.inputs, "corrupt.vtp"))
-        port = free_port()
-        env = dict(os.environ, PYTHONPATH=os.path.join(os.path.dirname(MEDIAL), "..", "lib", "python3", "dist-packages"))
-        started = [subprocess.Popen(["/usr/bin/dask-scheduler", "--host", "127.0.0.1", "--port", str(port),
-                                     "--no-dashboard"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)]
-        try:
-            time.sleep(2)
-            for _ in range(2):
-                started.append(subprocess.Popen(
-                    ["/usr/bin/dask-worker", "tcp://127.0.0.1:%d" % port, "--host", "127.0.0.1", "--nthreads", "1",
-                     "--no-dashboard"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env))
-            time.sleep(4)
+        with LoopbackCluster() as cluster:
             out = os.path.join(self.dir, "out")
-            r = self.batch("sqm", self.inputs, "--out-dir", out, "--scheduler", "tcp://127.0.0.1:%d" % port)
+            r = self.batch("sqm", self.inputs, "--out-dir", out, "--scheduler", cluster.address)
             self.assertEqual(r.returncode, 0, r.stderr)
             table = rows(out)
             self.assertEqual(len(table), 20)
             self.assertEqual({row["status"] for row in table.values()}, {"ok"})
             self.assertEqual(len({row["worker"] for row in table.values()}), 2, "both workers took inputs")
-        finally:
-            for process in reversed(started):
-                process.send_signal(signal.SIGTERM)
-            for process in reversed(started):
-                try:
-                    process.wait(timeout=10)
-                except subprocess.TimeoutExpired:
-                    process.kill()
+
+    def test_a_worker_that_dies_is_replaced_and_loses_no_input(self):
+        stand_in, counts = self.stand_in()
+        for k in range(12):
+            open(os.path.join(self.inputs, "slow%02d.vtp" % k), "w").close()
+        out = os.path.join(self.dir, "out")
+        with LoopbackCluster(env={"COUNT_DIR": counts}) as cluster:
+            driver = subprocess.Popen([MEDIAL, "batch", "sqm", self.inputs, "--out-dir", out, "--scheduler",
+                                       cluster.address], env=dict(os.environ, MEDIAL_EXECUTABLE=stand_in),
+                                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            deadline = time.monotonic() + 120
+            while time.monotonic() < deadline and len(os.listdir(counts)) < 3:
+                time.sleep(0.05)
+            nanny = cluster.processes[1]
+            killed = worker_processes_of(nanny.pid)
+            self.assertEqual(len(killed), 1, "dask-worker runs its worker in one child process")
+            os.kill(killed[0], signal.SIGKILL)  # the worker dies, mid-task
+            stdout, stderr = driver.communicate(timeout=300)
+            self.assertEqual(driver.returncode, 0, stderr)
+            table = rows(out)
+            self.assertEqual(len(table), 12)
+            self.assertEqual({row["status"] for row in table.values()}, {"ok"})
+            deadline = time.monotonic() + 30
+            replacement = worker_processes_of(nanny.pid)
+            while time.monotonic() < deadline and len(replacement) != 1:
+                time.sleep(0.2)
+                replacement = worker_processes_of(nanny.pid)
+            self.assertEqual(len(replacement), 1, "the nanny started a new worker")
+            self.assertNotEqual(replacement, killed)
 
     def test_crashes_and_time_outs_lose_only_their_input_and_are_retried(self):
         stand_in, counts = self.stand_in()
