@@ -8,7 +8,7 @@ mode=$1 build=$(cd "$2" && pwd) scratch=$3
 rm -rf "$scratch" && mkdir -p "$scratch"
 fail() { echo "check-install: $*" >&2; exit 1; }
 
-# Runs the installed tree at $1 (a prefix): version, a skeleton of a bundled sample, Python.
+# Runs the installed tree at $1 (a prefix): version, a skeleton and a centerline of bundled samples, Python.
 run_tree() {
   local prefix=$1
   for program in medial medial-make-colon-phantom; do
@@ -23,6 +23,9 @@ run_tree() {
     "$prefix/share/medial/samples/meshes/torus.off" -o "$scratch/torus-skeleton.vtp" --quiet ||
     fail "medial skeleton on the installed sample"
   [ -s "$scratch/torus-skeleton.vtp" ] || fail "no skeleton written"
+  env -i PATH=/usr/bin:/bin HOME="$scratch" "$prefix/bin/medial" centerline \
+    "$prefix/share/medial/samples/volumes/tubes/helix.nii.gz" -o "$scratch/helix-centerline.vtp" --quiet ||
+    fail "medial centerline on the installed sample volume (ITK's reader, a plugin of libMedialFilters)"
   env -i PATH=/usr/bin:/bin HOME="$scratch" PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c "
 import vtk, medial
 sphere = vtk.vtkSphereSource()
@@ -53,7 +56,7 @@ case $mode in
       echo "$info" | grep -q "Depends:.*$dependency" || fail "Depends lacks $dependency: $(echo "$info" | grep Depends)"
     done
     contents=$(dpkg-deb -c "$deb")
-    for f in ./usr/bin/medial ./usr/bin/medial-gui ./usr/lib/libMedialFilters.so \
+    for f in ./usr/bin/medial ./usr/bin/medial-gui ./usr/lib/libMedialFilters.so ./usr/lib/libMedialITKIO.so \
              ./usr/lib/python3/dist-packages/medial/__init__.py ./usr/share/applications/medial-gui.desktop \
              ./usr/share/icons/hicolor/scalable/apps/medial.svg ./usr/share/man/man1/medial.1 \
              ./usr/share/man/man1/medial-skeleton.1 ./usr/share/man/man1/medial-gui.1; do
