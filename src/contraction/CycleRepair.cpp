@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 
 namespace medial {
 
@@ -192,43 +193,78 @@ void tieToSkeleton(CurveSkeleton& skeleton, int first, int last, const InsideTes
     for (int b = 0; b < first; ++b)
       pairs.push_back({(skeleton.nodes.row(a) - skeleton.nodes.row(b)).norm(), a, b});
   if (pairs.empty()) return;
-  std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.distance < y.distance; });
-  for (const Pair& p : pairs)
+  // Nearest first, from a heap: the first few pairs usually see each other, and sorting all of them (new
+  // cycle x every older node) took more time than the tests.
+  auto farther = [](const Pair& x, const Pair& y) {
+    return std::tie(x.distance, x.a, x.b) > std::tie(y.distance, y.a, y.b);
+  };
+  std::make_heap(pairs.begin(), pairs.end(), farther);
+  const Pair nearest = pairs.front();
+  for (auto end = pairs.end(); end != pairs.begin(); --end) {
+    std::pop_heap(pairs.begin(), end, farther);
+    const Pair& p = *(end - 1);
     if (inside.segmentIsClear(skeleton.nodes.row(p.a).transpose(), skeleton.nodes.row(p.b).transpose())) {
       skeleton.edges.emplace_back(p.a, p.b);
       return;
     }
-  skeleton.edges.emplace_back(pairs.front().a, pairs.front().b);
+  }
+  skeleton.edges.emplace_back(nearest.a, nearest.b);
 }
 
 }  // namespace
 
 double linkingNumber(const Polygon& a, const Polygon& b) {
-  double total = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    const Eigen::Vector3d& p1 = a[i];
-    const Eigen::Vector3d& p2 = a[(i + 1) % a.size()];
-    for (size_t j = 0; j < b.size(); ++j) {
-      const Eigen::Vector3d& p3 = b[j];
-      const Eigen::Vector3d& p4 = b[(j + 1) % b.size()];
-      const Eigen::Vector3d r13 = p3 - p1, r14 = p4 - p1, r23 = p3 - p2, r24 = p4 - p2;
-      Eigen::Vector3d n[4] = {r13.cross(r14), r14.cross(r24), r24.cross(r23), r23.cross(r13)};
-      bool degenerate = false;
-      for (auto& v : n) {
-        const double norm = v.norm();
-        if (norm == 0)
-          degenerate = true;
-        else
-          v /= norm;
+  // Half the signed crossings of a with b seen along a direction no sample's geometry favours (Rolfsen,
+  // Knots and Links, 5.D): equal to Gauss's integral for disjoint curves, in 2-D segment tests instead of
+  // four arcsines per pair of segments (cheese.off, genus 133: 10.6 s of cycle repair -> 0.4 s).
+  const Eigen::Vector3d view = Eigen::Vector3d(0.2113249, 0.5773503, 0.7886751).normalized();
+  const Eigen::Vector3d across = view.unitOrthogonal(), up = view.cross(across);
+  struct Projected {
+    std::vector<Eigen::Vector2d> points;
+    std::vector<double> depth;
+    explicit Projected(const Polygon& p, const Eigen::Vector3d& x, const Eigen::Vector3d& y,
+                       const Eigen::Vector3d& z) {
+      for (const auto& q : p) {
+        points.emplace_back(q.dot(x), q.dot(y));
+        depth.push_back(q.dot(z));
       }
-      if (degenerate) continue;  // the segments are coplanar with a point of the other: no solid angle
-      double omega = 0;
-      for (int k = 0; k < 4; ++k) omega += std::asin(std::clamp(n[k].dot(n[(k + 1) % 4]), -1.0, 1.0));
-      const double sign = (p4 - p3).cross(p2 - p1).dot(r13);
-      total += sign > 0 ? omega : sign < 0 ? -omega : 0.0;
+    }
+  };
+  const Projected pa(a, across, up, view), pb(b, across, up, view);
+  auto cross2 = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+  // Each segment of b's 2-D box, to skip the pairs that cannot cross.
+  std::vector<Eigen::AlignedBox2d> boxes;
+  for (size_t j = 0; j < b.size(); ++j) {
+    Eigen::AlignedBox2d box(pb.points[j]);
+    boxes.push_back(box.extend(pb.points[(j + 1) % b.size()]));
+  }
+  int doubled = 0;  // the sum of the crossings' signs: twice the linking number
+  for (size_t i = 0; i < a.size(); ++i) {
+    const Eigen::Vector2d& p = pa.points[i];
+    const Eigen::Vector2d& q = pa.points[(i + 1) % a.size()];
+    Eigen::AlignedBox2d box(p);
+    box.extend(q);
+    const Eigen::Vector2d da = q - p;
+    for (size_t j = 0; j < b.size(); ++j) {
+      if (!box.intersects(boxes[j])) continue;
+      const Eigen::Vector2d& r = pb.points[j];
+      const Eigen::Vector2d& t = pb.points[(j + 1) % b.size()];
+      const Eigen::Vector2d db = t - r;
+      const double sideR = cross2(da, r - p), sideT = cross2(da, t - p);
+      const double sideP = cross2(db, p - r), sideQ = cross2(db, q - r);
+      if (!((sideR > 0) != (sideT > 0) && (sideP > 0) != (sideQ > 0)) || sideR == 0 || sideT == 0 || sideP == 0 ||
+          sideQ == 0)
+        continue;  // no crossing (or a touching one, which a generic view does not meet)
+      const double s = sideP / (sideP - sideQ), u = sideR / (sideR - sideT);  // along a, along b
+      const double depthA = pa.depth[i] + s * (pa.depth[(i + 1) % a.size()] - pa.depth[i]);
+      const double depthB = pb.depth[j] + u * (pb.depth[(j + 1) % b.size()] - pb.depth[j]);
+      // Right-handed crossings count +1 (the sign of Gauss's integral): looking along `view`, the strand in
+      // front (smaller depth) turns clockwise onto the one behind.
+      const double turn = depthA < depthB ? cross2(db, da) : cross2(da, db);
+      doubled += turn > 0 ? 1 : -1;
     }
   }
-  return total / (4 * M_PI);
+  return 0.5 * doubled;
 }
 
 CycleRepairResult restoreMissingCycles(CurveSkeleton& skeleton, const TriangleMesh& mesh,

@@ -32,8 +32,8 @@ struct CycleRepairResult {
 CycleRepairResult restoreMissingCycles(CurveSkeleton& skeleton, const TriangleMesh& mesh,
                                        const InsideTest& inside);
 
-// Gauss linking number of two closed polygons (the last point joins the first), from the exact solid
-// angle of each pair of segments (Klenin & Langowski 2000); an integer for disjoint curves, up to rounding.
+// Linking number of two disjoint closed polygons (the last point joins the first): half the signed
+// crossings of their projections, which equals Gauss's linking integral.
 double linkingNumber(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b);
 
 }  // namespace medial

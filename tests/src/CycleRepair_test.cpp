@@ -4,10 +4,12 @@
 #include "mesh/HomologyLoops.h"
 #include "mesh/InsideTest.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <random>
 #include <set>
 
 using medial::testing::appendMesh;
@@ -59,6 +61,48 @@ medial::CurveSkeleton halfCircle(const Eigen::Vector3d& shift = Eigen::Vector3d:
 }
 
 }  // namespace
+
+// Gauss's linking integral from the exact solid angle of each pair of segments (Klenin & Langowski 2000):
+// the reference that medial::linkingNumber's crossing count must agree with.
+double gaussLinkingIntegral(const Polygon& a, const Polygon& b) {
+  double total = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+    for (size_t j = 0; j < b.size(); ++j) {
+      const Eigen::Vector3d &p1 = a[i], &p2 = a[(i + 1) % a.size()], &p3 = b[j], &p4 = b[(j + 1) % b.size()];
+      const Eigen::Vector3d r13 = p3 - p1, r14 = p4 - p1, r23 = p3 - p2, r24 = p4 - p2;
+      Eigen::Vector3d n[4] = {r13.cross(r14), r14.cross(r24), r24.cross(r23), r23.cross(r13)};
+      bool degenerate = false;
+      for (auto& v : n) degenerate = degenerate || v.norm() == 0 || (v.normalize(), false);
+      if (degenerate) continue;
+      double omega = 0;
+      for (int k = 0; k < 4; ++k) omega += std::asin(std::clamp(n[k].dot(n[(k + 1) % 4]), -1.0, 1.0));
+      const double sign = (p4 - p3).cross(p2 - p1).dot(r13);
+      total += sign > 0 ? omega : sign < 0 ? -omega : 0.0;
+    }
+  return total / (4 * M_PI);
+}
+
+// A closed random walk: `steps` points around `centre`, closed by its last step.
+Polygon randomLoop(std::mt19937& random, const Eigen::Vector3d& centre, int steps) {
+  std::normal_distribution<double> step(0.0, 1.0);
+  Polygon p{centre};
+  for (int k = 1; k < steps; ++k) p.push_back(p.back() + Eigen::Vector3d(step(random), step(random), step(random)));
+  return p;
+}
+
+TEST(LinkingNumber, CrossingsAgreeWithGaussIntegralOnTangledRandomLoops) {
+  std::mt19937 random(7);
+  int linked = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Polygon a = randomLoop(random, {0, 0, 0}, 40), b = randomLoop(random, {1, 0, 0}, 40);
+    const double gauss = gaussLinkingIntegral(a, b);
+    if (std::abs(gauss - std::round(gauss)) > 0.01) continue;  // the walks touch: not a link
+    EXPECT_EQ(medial::linkingNumber(a, b), std::round(gauss)) << "trial " << trial;
+    EXPECT_EQ(medial::linkingNumber(b, a), std::round(gauss)) << "trial " << trial;
+    linked += std::round(gauss) != 0;
+  }
+  EXPECT_GT(linked, 30) << "the walks tangle often enough for the test to mean something";
+}
 
 TEST(LinkingNumber, HopfLinkIsOneUnlinkedIsZero) {
   const Polygon a = circle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
