@@ -1,5 +1,8 @@
 #include "rig/RigExport.h"
 
+#include "rig/FbxRig.h"
+#include "rig/RigBones.h"
+
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
@@ -7,11 +10,12 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 #include <cmath>
-#include <deque>
 #include <map>
 #include <memory>
-#include <numeric>
 
 namespace medial {
 
@@ -24,69 +28,6 @@ aiMatrix4x4 toAssimp(const Transform& m) {
                      float(m(1, 0)), float(m(1, 1)), float(m(1, 2)), float(m(1, 3)),  //
                      float(m(2, 0)), float(m(2, 1)), float(m(2, 2)), float(m(2, 3)),  //
                      float(m(3, 0)), float(m(3, 1)), float(m(3, 2)), float(m(3, 3)));
-}
-
-// The bone frame at `head` with Y along head -> tail.
-Transform boneFrame(const Eigen::Vector3d& head, const Eigen::Vector3d& tail) {
-  Eigen::Vector3d direction = tail - head;
-  if (direction.squaredNorm() == 0) direction = Eigen::Vector3d::UnitY();
-  const Eigen::Matrix3d rotation =
-      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitY(), direction.normalized()).toRotationMatrix();
-  Transform frame = Transform::Identity();
-  frame.topLeftCorner<3, 3>() = rotation;
-  frame.topRightCorner<3, 1>() = head;
-  return frame;
-}
-
-struct Bone {
-  int edge;
-  int head, tail;
-  int parent = -1;  // bone index, -1 under the armature
-  Transform global;
-};
-
-// Orients every edge away from the roots (breadth-first) and links each bone to the bone ending at its head.
-std::vector<Bone> buildBones(const Skeleton& skeleton) {
-  const int n = skeleton.nodeCount();
-  std::vector<std::vector<std::pair<int, int>>> adjacent(static_cast<size_t>(n));  // (neighbour, edge)
-  for (int e = 0; e < skeleton.edgeCount(); ++e) {
-    adjacent[size_t(skeleton.edges[size_t(e)][0])].push_back({skeleton.edges[size_t(e)][1], e});
-    adjacent[size_t(skeleton.edges[size_t(e)][1])].push_back({skeleton.edges[size_t(e)][0], e});
-  }
-  std::vector<int> depth(static_cast<size_t>(n), -1), incomingBone(static_cast<size_t>(n), -1);
-  std::vector<Bone> bones;
-  std::vector<bool> edgeDone(static_cast<size_t>(skeleton.edgeCount()), false);
-  std::vector<int> starts;
-  if (skeleton.root >= 0 && skeleton.root < n) starts.push_back(skeleton.root);
-  for (int v = 0; v < n; ++v) starts.push_back(v);
-  for (int start : starts) {
-    if (depth[size_t(start)] >= 0) continue;
-    depth[size_t(start)] = 0;
-    std::deque<int> queue{start};
-    while (!queue.empty()) {
-      const int u = queue.front();
-      queue.pop_front();
-      for (const auto& [v, e] : adjacent[size_t(u)]) {
-        if (edgeDone[size_t(e)]) continue;
-        edgeDone[size_t(e)] = true;
-        Bone bone{e, u, v, incomingBone[size_t(u)],
-                  boneFrame(skeleton.nodes[size_t(u)], skeleton.nodes[size_t(v)])};
-        bones.push_back(bone);
-        if (depth[size_t(v)] <
-            0) {  // a tree edge; otherwise it closes a cycle and v keeps its own parent bone
-          depth[size_t(v)] = depth[size_t(u)] + 1;
-          incomingBone[size_t(v)] = int(bones.size()) - 1;
-          queue.push_back(v);
-        }
-      }
-    }
-  }
-  return bones;
-}
-
-std::string boneName(const Bone& bone) {
-  return "Bone_" + std::to_string(bone.edge) + "_" + std::to_string(bone.head) + "_" +
-         std::to_string(bone.tail);
 }
 
 aiNode* newNode(const std::string& name, const Transform& local, aiNode* parent) {
@@ -122,8 +63,9 @@ std::string checkRig(const Rig& rig) {
   return {};
 }
 
-// The mesh with one aiBone per skeleton edge that influences it.
-aiMesh* buildMesh(const Rig& rig, const std::vector<Bone>& bones, const RigExportOptions& options) {
+// The mesh with one aiBone per joint that influences it, and the root joint (no weights: it must be a
+// joint of the skin for glTF importers to make it a bone).
+aiMesh* buildMesh(const Rig& rig, const std::vector<RigBone>& bones, const RigExportOptions& options) {
   const Eigen::Index n = rig.mesh.vertices.rows();
   auto* mesh = new aiMesh;
   mesh->mName = options.meshName;
@@ -141,41 +83,36 @@ aiMesh* buildMesh(const Rig& rig, const std::vector<Bone>& bones, const RigExpor
     mesh->mFaces[f].mIndices = new unsigned[3];
     for (int c = 0; c < 3; ++c) mesh->mFaces[f].mIndices[c] = unsigned(rig.mesh.faces(f, c));
   }
-
-  // The largest maxInfluences weights of each vertex, renormalized.
-  std::vector<std::vector<aiVertexWeight>> perBone(static_cast<size_t>(rig.skeleton.edgeCount()));
-  std::vector<int> order(static_cast<size_t>(rig.weights.cols()));
-  for (Eigen::Index v = 0; v < n; ++v) {
-    std::iota(order.begin(), order.end(), 0);
-    const size_t keep = std::min(order.size(), size_t(std::max(1, options.maxInfluences)));
-    std::partial_sort(order.begin(), order.begin() + long(keep), order.end(),
-                      [&](int a, int b) { return rig.weights(v, a) > rig.weights(v, b); });
-    double sum = 0;
-    for (size_t k = 0; k < keep; ++k) sum += std::max(0.0, rig.weights(v, order[k]));
-    if (!(sum > 0)) continue;
-    for (size_t k = 0; k < keep; ++k) {
-      const double w = rig.weights(v, order[k]) / sum;
-      if (w > 0) perBone[size_t(order[k])].push_back(aiVertexWeight(unsigned(v), float(w)));
-    }
-  }
+  const auto influences = keptInfluences(rig, options.maxInfluences);
   std::vector<aiBone*> meshBones;
-  for (const Bone& bone : bones) {
-    auto& weights = perBone[size_t(bone.edge)];
-    if (weights.empty()) continue;
+  for (const RigBone& bone : bones) {
+    if (bone.edge >= 0 && influences[size_t(bone.edge)].empty()) continue;
     auto* b = new aiBone;
-    b->mName = boneName(bone);
+    b->mName = bone.name;
     b->mOffsetMatrix = toAssimp(bone.global.inverse());  // mesh space -> bone space (rest pose)
-    b->mNumWeights = unsigned(weights.size());
-    b->mWeights = new aiVertexWeight[weights.size()];
-    std::copy(weights.begin(), weights.end(), b->mWeights);
+    if (bone.edge >= 0) {
+      const auto& weights = influences[size_t(bone.edge)];
+      b->mNumWeights = unsigned(weights.size());
+      b->mWeights = new aiVertexWeight[weights.size()];
+      for (size_t k = 0; k < weights.size(); ++k)
+        b->mWeights[k] = aiVertexWeight(unsigned(weights[k].first), float(weights[k].second));
+    }
     meshBones.push_back(b);
   }
   mesh->mNumBones = unsigned(meshBones.size());
-  if (!meshBones.empty()) {  // aiMesh frees mBones only when it counts bones (a leak LeakSanitizer found)
-    mesh->mBones = new aiBone*[meshBones.size()];
-    std::copy(meshBones.begin(), meshBones.end(), mesh->mBones);
-  }
+  mesh->mBones = new aiBone*[meshBones.size()];
+  std::copy(meshBones.begin(), meshBones.end(), mesh->mBones);
   return mesh;
+}
+
+// Binary FBX, written by Medial (rig/FbxRig.h): Assimp's FBX exporter writes files Blender refuses.
+std::string writeFbx(const Rig& rig, const std::vector<RigBone>& bones, const std::string& path,
+                     const RigExportOptions& options) {
+  const std::string bytes = fbxRigFile(rig, bones, keptInfluences(rig, options.maxInfluences), options.meshName);
+  std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  if (!file || !file.write(bytes.data(), std::streamsize(bytes.size())) || !file.flush())
+    return "cannot write the rig to " + path + ": " + std::strerror(errno);
+  return {};
 }
 
 }  // namespace
@@ -193,14 +130,15 @@ std::string rigFormatForFile(const std::string& path) {
 
 std::vector<std::string> rigBoneNames(const Skeleton& skeleton) {
   std::vector<std::string> names;
-  for (const Bone& bone : buildBones(skeleton)) names.push_back(boneName(bone));
+  for (const RigBone& bone : buildRigBones(skeleton)) names.push_back(bone.name);
   return names;
 }
 
 std::string exportRig(const Rig& rig, const std::string& path, const std::string& format,
                       const RigExportOptions& options) {
   if (std::string problem = checkRig(rig); !problem.empty()) return problem;
-  const std::vector<Bone> bones = buildBones(rig.skeleton);
+  const std::vector<RigBone> bones = buildRigBones(rig.skeleton);
+  if (format == "fbx") return writeFbx(rig, bones, path, options);
 
   auto scene = std::make_unique<aiScene>();
   scene->mNumMaterials = 1;
@@ -208,27 +146,24 @@ std::string exportRig(const Rig& rig, const std::string& path, const std::string
   scene->mNumMeshes = 1;
   scene->mMeshes = new aiMesh* [1] { buildMesh(rig, bones, options) };
 
-  // Node tree: Root -> {Mesh, Armature -> bones by hierarchy}.
-  scene->mRootNode = new aiNode("Root");
+  // Node tree: Scene -> {Mesh, Armature -> Root -> bones by hierarchy}.
+  scene->mRootNode = new aiNode("Scene");
   aiNode* meshNode = newNode(options.meshName, Transform::Identity(), scene->mRootNode);
   meshNode->mNumMeshes = 1;
   meshNode->mMeshes = new unsigned[1]{0};
   aiNode* armature = newNode("Armature", Transform::Identity(), scene->mRootNode);
   setChildren(scene->mRootNode, {meshNode, armature});
-
   std::vector<aiNode*> boneNodes(bones.size());
   std::vector<std::vector<aiNode*>> children(bones.size());
-  std::vector<aiNode*> armatureChildren;
   for (size_t b = 0; b < bones.size(); ++b) {
-    const Bone& bone = bones[b];
-    const Transform parentGlobal =
-        bone.parent < 0 ? Transform::Identity() : bones[size_t(bone.parent)].global;
+    const RigBone& bone = bones[b];
+    const Transform parentGlobal = bone.parent < 0 ? Transform::Identity() : bones[size_t(bone.parent)].global;
     aiNode* parent = bone.parent < 0 ? armature : boneNodes[size_t(bone.parent)];
-    boneNodes[b] = newNode(boneName(bone), parentGlobal.inverse() * bone.global, parent);
-    (bone.parent < 0 ? armatureChildren : children[size_t(bone.parent)]).push_back(boneNodes[b]);
+    boneNodes[b] = newNode(bone.name, parentGlobal.inverse() * bone.global, parent);
+    if (bone.parent >= 0) children[size_t(bone.parent)].push_back(boneNodes[b]);
   }
   for (size_t b = 0; b < bones.size(); ++b) setChildren(boneNodes[b], children[b]);
-  setChildren(armature, armatureChildren);
+  setChildren(armature, {boneNodes[0]});
 
   Assimp::Exporter exporter;
   if (exporter.Export(scene.get(), format, path) != AI_SUCCESS) {
