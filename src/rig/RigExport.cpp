@@ -187,7 +187,10 @@ RigSummary readRigSummary(const std::string& path) {
     const aiMesh* mesh = scene->mMeshes[m];
     std::vector<double> sums(mesh->mNumVertices, 0.0);
     for (unsigned b = 0; b < mesh->mNumBones; ++b) {
-      boneNames[mesh->mBones[b]->mName.C_Str()] = true;
+      const aiBone* bone = mesh->mBones[b];
+      if (std::any_of(bone->mWeights, bone->mWeights + bone->mNumWeights,
+                      [](const aiVertexWeight& w) { return w.mWeight > 0; }))
+        boneNames[bone->mName.C_Str()] = true;  // not the root joint (glTF pads influences with weight 0)
       for (unsigned w = 0; w < mesh->mBones[b]->mNumWeights; ++w)
         sums[mesh->mBones[b]->mWeights[w].mVertexId] += mesh->mBones[b]->mWeights[w].mWeight;
     }

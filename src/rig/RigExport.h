@@ -39,7 +39,7 @@ std::vector<std::string> rigBoneNames(const Skeleton& skeleton);
 
 // What an exported rig holds when read back (for tests and the CLI's report).
 struct RigSummary {
-  int bones = 0;  // joints of the skin (the root joint and the bones that influence the mesh)
+  int bones = 0;  // bones that influence the mesh
   int vertices = 0;
   int faces = 0;
   double maxWeightSumError = 0;  // max over vertices of |sum of weights - 1|
