@@ -24,8 +24,11 @@ def medial(*args):
 
 
 def blender_reports(paths):
+    # Under scripts/sanitize the sanitizer runtimes are preloaded for the Python interpreter; Blender is
+    # not Medial's code and runs without them.
+    env = {k: v for k, v in os.environ.items() if k not in ("LD_PRELOAD", "ASAN_OPTIONS")}
     done = subprocess.run(["blender", "-b", "--factory-startup", "--python", REPORT, "--"] + paths,
-                          capture_output=True, text=True, timeout=600)
+                          capture_output=True, text=True, timeout=600, env=env)
     reports = {}
     for line in done.stdout.splitlines():
         if line.startswith("MEDIAL-REPORT "):
