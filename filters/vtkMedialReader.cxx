@@ -2,6 +2,7 @@
 
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"
+#include "MedialMeshData.h"
 #include "MedialSkeletonData.h"
 #include "MedialSketchData.h"
 #include "vtkMedialINRReader.h"
@@ -32,6 +33,8 @@
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include "rig/RigImport.h"
+
 #include <sys/stat.h>
 
 #include <set>
@@ -41,7 +44,7 @@ vtkStandardNewMacro(vtkMedialReader);
 namespace {
 
 const std::set<std::string> kMeshExtensions = {".vtp", ".vtk", ".vtu",  ".obj", ".ply", ".stl", ".off",
-                                               ".g",   ".byu", ".gltf", ".glb", ".swc", ".txt"};
+                                               ".g",   ".byu", ".gltf", ".glb", ".fbx", ".swc", ".txt"};
 const std::set<std::string> kVolumeExtensions = {".nii",  ".nii.gz", ".mha", ".mhd",    ".nrrd", ".nhdr",
                                                  ".gipl", ".dcm",    ".inr", ".inr.gz", ".vti",  ".inv3"};
 
@@ -84,6 +87,7 @@ vtkMedialReader::~vtkMedialReader() = default;
 void vtkMedialReader::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << this->FileName << "\n";
+  os << indent << "RigSkeleton: " << this->RigSkeleton << "\n";
 }
 
 bool vtkMedialReader::IsVolumeFile(const char* fileName) {
@@ -100,7 +104,7 @@ bool vtkMedialReader::CanReadFile(const char* fileName) {
 }
 
 const char* vtkMedialReader::GetMeshExtensions() {
-  return "*.vtp *.vtk *.vtu *.obj *.ply *.stl *.off *.g *.byu *.gltf *.glb *.swc";
+  return "*.vtp *.vtk *.vtu *.obj *.ply *.stl *.off *.g *.byu *.gltf *.glb *.fbx *.swc";
 }
 
 const char* vtkMedialReader::GetSketchExtensions() { return "*.txt"; }
@@ -196,8 +200,25 @@ void vtkMedialReader::ReadFile() {
   this->Result = data;
 }
 
+vtkSmartPointer<vtkDataObject> vtkMedialReader::ReadRig() {
+  const std::string& path = this->FileName;
+  const medial::ImportedRig rig = medial::importRig(path);
+  if (!rig.error.empty()) {
+    this->ErrorMessage = path + ": " + rig.error;
+    return nullptr;
+  }
+  if (!this->RigSkeleton) return medial::polyDataFromMesh(rig.mesh);
+  if (rig.skeleton.edgeCount() == 0) {
+    this->ErrorMessage = path + ": the file holds no joints (not a rig)";
+    return nullptr;
+  }
+  return medial::polyDataFromSkeleton(rig.skeleton);
+}
+
 vtkSmartPointer<vtkDataObject> vtkMedialReader::ReadPolyData(const std::string& extension) {
   const std::string& path = this->FileName;
+  if (extension == ".fbx" || (this->RigSkeleton && (extension == ".glb" || extension == ".gltf")))
+    return this->ReadRig();
   vtkSmartPointer<vtkAlgorithm> reader;
   if (extension == ".vtp") {
     auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();

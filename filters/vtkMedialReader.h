@@ -3,7 +3,8 @@
  * @brief The one place that opens any input Medial supports, chosen by extension.
  *
  * Meshes and skeletons (output vtkPolyData): .vtp .vtk .vtu (its surface) .obj .ply .stl .g/.byu and
- * .gltf/.glb (the scene's meshes merged, node transforms applied) through VTK's readers, .off
+ * .gltf/.glb (the scene's meshes merged, node transforms applied) through VTK's readers, .fbx (and
+ * a rig's skeleton with RigSkeleton) through Assimp (src/rig/RigImport.h), .off
  * (OFF/COFF/NOFF...) through OpenMesh (vtkMedialOFFReader), .swc (vtkMedialSWCReader).
  * Sketches (output vtkPolyData of strokes with cell data `Placement`): .txt (vtkMedialSketchReader).
  * Volumes (output vtkImageData, physical coordinates kept): .nii .nii.gz .mha .mhd .nrrd .nhdr .gipl .dcm
@@ -42,6 +43,12 @@ class MEDIALFILTERS_EXPORT vtkMedialReader : public vtkDataObjectAlgorithm {
   /// "*.txt": sketches, strokes with their placements.
   static const char* GetSketchExtensions();
 
+  /// For a rig (.fbx, .glb, .gltf with joints): output its skeleton (joints as nodes, Radius from the
+  /// weights' spread; src/rig/RigImport.h) instead of its mesh. Default off.
+  vtkSetMacro(RigSkeleton, bool);
+  vtkGetMacro(RigSkeleton, bool);
+  vtkBooleanMacro(RigSkeleton, bool);
+
   /// The last error in one line (empty after a successful read), without VTK's file/line prefix.
   const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
@@ -61,10 +68,12 @@ class MEDIALFILTERS_EXPORT vtkMedialReader : public vtkDataObjectAlgorithm {
   void ReadFile();
   vtkSmartPointer<vtkDataObject> ReadPolyData(const std::string& extension);
   vtkSmartPointer<vtkDataObject> ReadVolume(const std::string& extension);
+  vtkSmartPointer<vtkDataObject> ReadRig();  // .fbx, or a rig's skeleton
 
   std::string FileName;
   bool ReadsVolume = false;  // set by RequestDataObject from the file name
   std::string ErrorMessage;
+  bool RigSkeleton = false;
   std::string ResultFileName;
   vtkMTimeType ResultTime = 0;
   vtkSmartPointer<vtkDataObject> Result;

@@ -7,6 +7,7 @@
 #include "vtkMedialRigWriter.h"
 
 #include <filesystem>
+#include <vector>
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -17,6 +18,7 @@
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkLineSource.h>
+#include <vtkMath.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -165,4 +167,77 @@ TEST(ContractionSkeleton, WeightsPerBoneAndRigFile) {
   EXPECT_EQ(refused->Write(), 0);
   EXPECT_NE(refusal->Joined().find("no SkinWeights"), std::string::npos) << refusal->Joined();
   EXPECT_FALSE(std::filesystem::exists(dir + "/plain.glb"));
+}
+
+// The rigs Medial writes open again: the mesh as written, and (RigSkeleton) the skeleton: every node with
+// two or more edges at its joint, leaves near where they were (a file stores no bone length: the tail is
+// estimated from the bone's vertices), a Radius from the weights. A joint tree has no cycles: each edge that
+// closed one comes back as a leaf bone with a tail of its own.
+TEST(ContractionSkeleton, RigFilesOpenAgainAsMeshAndSkeleton) {
+  auto elephant = readMesh(medial::test::sourceDir() + "/data/external/cgal/meshes/elephant.off");
+  ASSERT_TRUE(elephant);
+  auto filter = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
+  filter->SetInputData(elephant);
+  filter->ComputeWeightsOn();
+  filter->Update();
+  vtkPolyData* skeleton = filter->GetOutput(0);
+  ASSERT_GT(skeleton->GetNumberOfLines(), 10);
+  const double size = elephant->GetLength();
+  const std::string dir = medial::test::scratchDir("filter-rig-round-trip");
+  for (const char* name : {"elephant.glb", "elephant.fbx"}) {
+    const std::string path = dir + "/" + name;
+    auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
+    writer->SetFileName(path.c_str());
+    writer->SetInputConnection(0, filter->GetOutputPort(1));
+    writer->SetInputConnection(1, filter->GetOutputPort(0));
+    ASSERT_EQ(writer->Write(), 1) << name;
+
+    auto mesh = vtkSmartPointer<vtkMedialReader>::New();
+    mesh->SetFileName(path.c_str());
+    mesh->Update();
+    auto* meshOut = vtkPolyData::SafeDownCast(mesh->GetOutputDataObject(0));
+    ASSERT_TRUE(meshOut) << mesh->GetErrorMessage();
+    EXPECT_EQ(meshOut->GetNumberOfPoints(), elephant->GetNumberOfPoints()) << name;
+    EXPECT_EQ(meshOut->GetNumberOfPolys(), elephant->GetNumberOfPolys()) << name;
+
+    auto bones = vtkSmartPointer<vtkMedialReader>::New();
+    bones->SetFileName(path.c_str());
+    bones->RigSkeletonOn();
+    bones->Update();
+    auto* back = vtkPolyData::SafeDownCast(bones->GetOutputDataObject(0));
+    ASSERT_TRUE(back) << bones->GetErrorMessage();
+    const vtkIdType cycles = skeleton->GetNumberOfLines() - skeleton->GetNumberOfPoints() + 1;
+    EXPECT_EQ(back->GetNumberOfPoints(), skeleton->GetNumberOfPoints() + cycles) << name;
+    EXPECT_EQ(back->GetNumberOfLines(), skeleton->GetNumberOfLines()) << name;
+    std::vector<int> degree(size_t(skeleton->GetNumberOfPoints()), 0);
+    for (vtkIdType c = 0; c < skeleton->GetNumberOfCells(); ++c)
+      for (vtkIdType k = 0; k < skeleton->GetCell(c)->GetNumberOfPoints(); ++k)
+        ++degree[size_t(skeleton->GetCell(c)->GetPointId(k))];
+    int exact = 0, inner = 0;  // nodes found at a joint; nodes with two or more edges
+    for (vtkIdType n = 0; n < skeleton->GetNumberOfPoints(); ++n) {
+      double p[3], nearest = INFINITY;
+      skeleton->GetPoint(n, p);
+      for (vtkIdType m = 0; m < back->GetNumberOfPoints(); ++m) {
+        double q[3];
+        back->GetPoint(m, q);
+        nearest = std::min(nearest, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
+      }
+      EXPECT_LT(nearest, 0.05 * size) << name << " node " << n;
+      exact += nearest < 1e-5 * size;
+      inner += degree[size_t(n)] > 1;
+    }
+    // Every inner node is a joint, except the far end of an edge that closed a cycle when no other bone
+    // starts there (at most one per cycle).
+    EXPECT_GE(exact, inner - cycles) << name;
+    vtkDataArray* radius = back->GetPointData()->GetArray("Radius");
+    ASSERT_TRUE(radius) << name;
+    EXPECT_GT(radius->GetRange()[0], 0) << name;
+    EXPECT_LT(radius->GetRange()[1], 0.5 * size) << name;
+  }
+  auto notARig = vtkSmartPointer<vtkMedialReader>::New();
+  auto errors = medial::ErrorCollector::Watch(notARig);
+  notARig->SetFileName(medial::test::dataPath("meshes/torus.off").c_str());
+  notARig->RigSkeletonOn();  // ignored for a plain mesh format: the mesh is read
+  notARig->Update();
+  EXPECT_FALSE(errors->HasErrors()) << errors->Joined();
 }

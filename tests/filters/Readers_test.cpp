@@ -323,7 +323,9 @@ TEST(Readers, FuzzCorpusGivesAResultOrAnError) {
       std::filesystem::copy_file(entry.path(), copy, std::filesystem::copy_options::overwrite_existing);
       const ReadResult r = readFile(copy);
       auto* polyData = vtkPolyData::SafeDownCast(r.data);
-      if (r.error.empty()) EXPECT_TRUE(polyData && polyData->GetNumberOfPoints() > 0) << entry.path();
+      if (r.error.empty()) {
+        EXPECT_TRUE(polyData && polyData->GetNumberOfPoints() > 0) << entry.path();
+      }
       ++files;
     }
   }
@@ -339,7 +341,9 @@ TEST(Readers, FuzzCorpusGivesAResultOrAnError) {
     ASSERT_EQ(std::system(("tar -czf " + inv3 + " -C " + project + " main.plist matrix.dat").c_str()), 0);
     const ReadResult r = readFile(inv3);
     auto* image = vtkImageData::SafeDownCast(r.data);
-    if (r.error.empty()) EXPECT_TRUE(image && image->GetNumberOfPoints() > 0) << entry.path();
+    if (r.error.empty()) {
+      EXPECT_TRUE(image && image->GetNumberOfPoints() > 0) << entry.path();
+    }
     ++files;
   }
 }
