@@ -12,6 +12,7 @@
 #include "VtkView.h"
 
 #include "vtkMedialGhostPass.h"
+#include "MedialErrorCollector.h"
 #include "vtkMedialReader.h"
 #include "vtkMedialScene.h"
 
@@ -370,11 +371,25 @@ bool MainWindow::openFile(const QString& path) {
   const QString title = QFileInfo(path).fileName().isEmpty() ? path : QFileInfo(path).fileName();
   SceneObject* object = objects_->add(title, data, path);
   if (!object) return false;
+  addRigSkeleton(path, title);
   addRecent(path);
   log("Opened " + path);
   if (objectCount() == 1) resetCamera();
   statusBar()->showMessage("Opened " + path, 5000);
   return true;
+}
+
+void MainWindow::addRigSkeleton(const QString& path, const QString& title) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  if (suffix != "fbx" && suffix != "glb" && suffix != "gltf") return;
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  auto errors = medial::ErrorCollector::Watch(reader);  // a glTF scene without joints is a mesh: no dialog
+  const QByteArray name = path.toLocal8Bit();
+  reader->SetFileName(name.constData());
+  reader->RigSkeletonOn();
+  reader->Update();
+  if (errors->HasErrors()) return;
+  if (objects_->add(title + " skeleton", reader->GetOutputDataObject(0), path)) log("Opened the rig's skeleton");
 }
 
 void MainWindow::onObjectsChanged() {

@@ -89,6 +89,8 @@ class MainWindow : public QMainWindow {
   void showEvent(QShowEvent* event) override;
 
  private:
+  // A rig (.fbx, .glb, .gltf with joints) also shows its skeleton, as a second object "<title> skeleton".
+  void addRigSkeleton(const QString& path, const QString& title);
   void buildMenus();
   void buildGhostToolBar();
   void buildPanels();

@@ -275,13 +275,20 @@ TEST_F(GuiWorkflow, SkeletonGhostViewSqmAndRig) {
   // Rig export (GLB) and Save As of the skeleton (SWC).
   ASSERT_TRUE(window->objects()->exportRig(skeleton, QString::fromStdString(dir + "/torus-rig.glb")));
   EXPECT_GT(std::filesystem::file_size(dir + "/torus-rig.glb"), 1000u);
-  // The rig opens again (glTF through VTK's reader): the torus's mesh.
-  const int before = window->objectCount();
-  open(dir + "/torus-rig.glb");
-  ASSERT_EQ(window->objectCount(), before + 1);
-  EXPECT_EQ(window->objects()->at(before)->kind, SceneObject::Kind::Mesh);
-  EXPECT_GT(window->objects()->at(before)->polyData()->GetNumberOfPolys(), 1000);
-  window->objects()->remove(window->objects()->at(before));
+  // The rig opens again: the torus's mesh, and its skeleton as a second object (FBX as well).
+  ASSERT_TRUE(window->objects()->exportRig(skeleton, QString::fromStdString(dir + "/torus-rig.fbx")));
+  for (const char* rig : {"/torus-rig.glb", "/torus-rig.fbx"}) {
+    const int before = window->objectCount();
+    open(dir + rig);
+    ASSERT_EQ(window->objectCount(), before + 2) << rig;
+    EXPECT_EQ(window->objects()->at(before)->kind, SceneObject::Kind::Mesh);
+    EXPECT_GT(window->objects()->at(before)->polyData()->GetNumberOfPolys(), 1000);
+    SceneObject* bones = window->objects()->at(before + 1);
+    EXPECT_EQ(bones->kind, SceneObject::Kind::Skeleton) << rig;
+    EXPECT_GE(bones->polyData()->GetNumberOfLines(), skeleton->polyData()->GetNumberOfLines()) << rig;
+    window->objects()->remove(bones);
+    window->objects()->remove(window->objects()->at(before));
+  }
   ASSERT_TRUE(window->objects()->save(skeleton, QString::fromStdString(dir + "/torus-skeleton.vtp")));
   // SWC holds trees only: the torus's cycle is refused with a message.
   EXPECT_FALSE(window->objects()->save(skeleton, QString::fromStdString(dir + "/torus-skeleton.swc")));
