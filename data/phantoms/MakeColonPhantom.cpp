@@ -1,12 +1,18 @@
-// medial-make-colon-phantom OUTPUT_DIR [VOLUME.nii.gz]: a CT-like colon phantom written as a DICOM series
-// (one CT slice per file, int16 Hounsfield units) and, when named, as NIfTI too, for the TSK centerline
-// and the GUI's virtual colonoscopy.
+// medial-make-colon-phantom OUTPUT_DIR [VOLUME] [--size WxHxD] [--collapse N] [--gap MM] [--no-dicom]:
+// a CT-like colon phantom written as a DICOM series (one CT slice per file, int16 Hounsfield units) and,
+// when VOLUME is named, as one file too (.nii.gz, .nii, .mha, .nrrd: ITK's writer by extension), for the
+// TSK centerline, its benchmark and the GUI's virtual colonoscopy.
 //
 // An elliptic body (soft tissue 40 HU, a 10 mm fat layer at -100 HU) in air (-1000 HU) holds an
 // air-filled colon (-1000 HU) that runs from the rectum up the sigmoid and the descending colon, across the
 // transverse colon and down the ascending colon to the cecum, 8 to 12 mm in radius with a haustral fold
 // every 30 mm and four polyps (tissue spheres of radius 3 to 5 mm centred on the wall); Gaussian noise
-// (sigma 20 HU, fixed seed) over everything. 206 x 165 x 187 voxels of 0.7 x 0.7 x 1.0 mm. The true axis
+// (sigma 20 HU, fixed seed) over everything. 206 x 165 x 187 voxels of 0.7 x 0.7 x 1.0 mm; --size scales
+// the body and the colon's course to another voxel count (same spacing; the colon's radius by the smallest
+// of the three factors, so loops keep their tissue between them): 512x512x400 is a full-size CT with a
+// colon about 1 m long. --collapse N removes the air over N stretches of --gap MM (default 10) along the
+// axis, evenly spaced, as a collapsed or fluid-filled segment does; their arc lengths go to
+// OUTPUT_DIR/gaps.txt. The true axis
 // goes to OUTPUT_DIR/axis.txt ("x y z radius" in mm per line) and the polyps to OUTPUT_DIR/polyps.txt
 // ("x y z radius"), so that tests can measure a centerline and find the polyps on the unfolded wall.
 // Threshold -1024..-600 HU with the border air dropped gives the colon alone (as in the TSK paper's CT data).
@@ -31,7 +37,8 @@
 namespace {
 
 using Point = std::array<double, 3>;
-constexpr int kSize[3] = {206, 165, 187};
+constexpr int kDefaultSize[3] = {206, 165, 187};
+int kSize[3] = {206, 165, 187};  // --size
 constexpr double kSpacing[3] = {0.7, 0.7, 1.0};
 
 // Control points of the colon's axis in mm, rectum first. Non-adjacent loops keep >= 13 mm of tissue
@@ -54,16 +61,23 @@ Point catmullRom(const Point& p0, const Point& p1, const Point& p2, const Point&
 struct AxisPoint {
   Point p;
   double radius;
+  double arc = 0;  // mm from the rectum
 };
 
+// The axis for a volume of kSize voxels: the control points scaled by kSize / kDefaultSize per axis.
 std::vector<AxisPoint> colonAxis() {
+  double scale[3], smallest = INFINITY;
+  for (int c = 0; c < 3; ++c) smallest = std::min(smallest, scale[c] = double(kSize[c]) / kDefaultSize[c]);
+  std::vector<Point> control;
+  for (const Point& p : kControl) control.push_back({p[0] * scale[0], p[1] * scale[1], p[2] * scale[2]});
   std::vector<Point> points;
-  const size_t n = kControl.size();
+  const size_t n = control.size();
+  const int steps = int(200 * std::max({scale[0], scale[1], scale[2]}));
   for (size_t i = 0; i + 1 < n; ++i)
-    for (int k = 0; k < 200; ++k)
-      points.push_back(catmullRom(kControl[i > 0 ? i - 1 : 0], kControl[i], kControl[i + 1],
-                                  kControl[std::min(i + 2, n - 1)], k / 200.0));
-  points.push_back(kControl.back());
+    for (int k = 0; k < steps; ++k)
+      points.push_back(catmullRom(control[i > 0 ? i - 1 : 0], control[i], control[i + 1],
+                                  control[std::min(i + 2, n - 1)], double(k) / steps));
+  points.push_back(control.back());
   std::vector<double> arc(points.size(), 0.0);
   for (size_t i = 1; i < points.size(); ++i)
     arc[i] = arc[i - 1] + std::hypot(points[i][0] - points[i - 1][0], points[i][1] - points[i - 1][1],
@@ -73,7 +87,7 @@ std::vector<AxisPoint> colonAxis() {
     const double s = arc[i] / arc.back();
     const double base = 8.0 + 4.0 * s;  // rectum 8 mm ... cecum 12 mm
     const double fold = std::pow(std::max(0.0, std::cos(2 * M_PI * arc[i] / 30.0)), 8);  // haustra
-    axis.push_back({points[i], base * (1.0 - 0.18 * fold)});
+    axis.push_back({points[i], smallest * base * (1.0 - 0.18 * fold), arc[i]});
   }
   return axis;
 }
@@ -81,20 +95,88 @@ std::vector<AxisPoint> colonAxis() {
 // A DICOM UID under the 2.25 root (a number from a fixed-seed generator: the phantom is reproducible).
 std::string makeUid(std::mt19937_64& random) { return "2.25." + std::to_string(random() >> 1); }
 
+struct Options {
+  std::filesystem::path out;
+  std::string volume;  // also written as one file when named
+  int collapse = 0;
+  double gap = 10.0;  // mm
+  bool dicom = true;
+};
+
+const char kUsage[] =
+    "usage: medial-make-colon-phantom OUTPUT_DIR [VOLUME.nii.gz|.mha|.nrrd] [--size WxHxD] [--collapse N]\n"
+    "                                 [--gap MM] [--no-dicom]\n";
+
+// Parses the command line into `options`; false (after a message) on a usage error.
+bool parse(int argc, char** argv, Options& options) {
+  std::vector<std::string> positional;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string { return i + 1 < argc ? argv[++i] : std::string(); };
+    if (arg == "--size") {
+      const std::string v = value();
+      if (std::sscanf(v.c_str(), "%dx%dx%d", &kSize[0], &kSize[1], &kSize[2]) != 3 || kSize[0] < 32 ||
+          kSize[1] < 32 || kSize[2] < 32 || kSize[0] > 4096 || kSize[1] > 4096 || kSize[2] > 4096) {
+        std::fprintf(stderr, "medial-make-colon-phantom: --size expects WxHxD, each 32..4096, got '%s'\n", v.c_str());
+        return false;
+      }
+    } else if (arg == "--collapse") {
+      options.collapse = std::atoi(value().c_str());
+      if (options.collapse < 0 || options.collapse > 20) {
+        std::fprintf(stderr, "medial-make-colon-phantom: --collapse expects 0..20\n");
+        return false;
+      }
+    } else if (arg == "--gap") {
+      options.gap = std::atof(value().c_str());
+      if (!(options.gap > 0 && options.gap <= 200)) {
+        std::fprintf(stderr, "medial-make-colon-phantom: --gap expects 0..200 mm\n");
+        return false;
+      }
+    } else if (arg == "--no-dicom") {
+      options.dicom = false;
+    } else if (arg.rfind("-", 0) == 0) {
+      std::fprintf(stderr, "medial-make-colon-phantom: unknown option %s\n%s", arg.c_str(), kUsage);
+      return false;
+    } else {
+      positional.push_back(arg);
+    }
+  }
+  if (positional.empty() || positional.size() > 2 || (!options.dicom && positional.size() < 2)) {
+    std::fprintf(stderr, "%s", kUsage);
+    return false;
+  }
+  options.out = positional[0];
+  if (positional.size() == 2) options.volume = positional[1];
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2 && argc != 3) {
-    std::fprintf(stderr, "usage: medial-make-colon-phantom OUTPUT_DIR [VOLUME.nii.gz]\n");
-    return 2;
-  }
-  const std::filesystem::path out = argv[1];
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      std::printf("%s", kUsage);
+      return 0;
+    }
+  Options options;
+  if (!parse(argc, argv, options)) return 2;
+  const std::filesystem::path& out = options.out;
   std::filesystem::create_directories(out);
 
-  // Air inside the colon: balls along the axis.
+  // Air inside the colon: balls along the axis, except over the collapsed stretches (a ball is left out
+  // when it reaches into one, so the air ends at the stretch's ends on the axis).
   const std::vector<AxisPoint> axis = colonAxis();
+  std::vector<std::pair<double, double>> gaps;
+  for (int k = 0; k < options.collapse; ++k) {
+    const double middle = axis.back().arc * (k + 1) / (options.collapse + 1);
+    gaps.push_back({middle - 0.5 * options.gap, middle + 0.5 * options.gap});
+  }
   std::vector<unsigned char> colon(size_t(kSize[0]) * kSize[1] * kSize[2], 0);
   for (const AxisPoint& a : axis) {
+    if (std::any_of(gaps.begin(), gaps.end(), [&](const std::pair<double, double>& g) {
+          return a.arc + a.radius > g.first && a.arc - a.radius < g.second;
+        }))
+      continue;
     int lo[3], hi[3];
     for (int c = 0; c < 3; ++c) {
       lo[c] = std::max(0, static_cast<int>(std::floor((a.p[c] - a.radius) / kSpacing[c])));
@@ -150,7 +232,7 @@ int main(int argc, char** argv) {
   std::mt19937 random(20081);
   std::normal_distribution<double> noise(0.0, 20.0);
   const double cx = 0.5 * (kSize[0] - 1) * kSpacing[0], cy = 0.5 * (kSize[1] - 1) * kSpacing[1];
-  const double ax = 66.0, ay = 52.0;  // body semi-axes (mm)
+  const double ax = 66.0 * kSize[0] / kDefaultSize[0], ay = 52.0 * kSize[1] / kDefaultSize[1];  // body (mm)
   for (int z = 0; z < kSize[2]; ++z)
     for (int y = 0; y < kSize[1]; ++y)
       for (int x = 0; x < kSize[0]; ++x) {
@@ -211,22 +293,27 @@ int main(int argc, char** argv) {
   writer->SetFileNames(names->GetFileNames());
   writer->SetMetaDataDictionaryArray(&dictionaries);
   try {
-    writer->Update();
+    if (options.dicom) writer->Update();
   } catch (const itk::ExceptionObject& e) {
     std::fprintf(stderr, "medial-make-colon-phantom: %s\n", e.GetDescription());
     return 1;
   }
 
-  if (argc == 3) {
-    auto nifti = itk::ImageFileWriter<Volume>::New();
-    nifti->SetInput(volume);
-    nifti->SetFileName(argv[2]);
+  if (!options.volume.empty()) {
+    auto file = itk::ImageFileWriter<Volume>::New();
+    file->SetInput(volume);
+    file->SetFileName(options.volume);
     try {
-      nifti->Update();
+      file->Update();
     } catch (const itk::ExceptionObject& e) {
-      std::fprintf(stderr, "medial-make-colon-phantom: %s: %s\n", argv[2], e.GetDescription());
+      std::fprintf(stderr, "medial-make-colon-phantom: %s: %s\n", options.volume.c_str(), e.GetDescription());
       return 1;
     }
+  }
+  if (!gaps.empty()) {
+    std::ofstream gapFile(out / "gaps.txt");
+    gapFile << "# collapsed segments: start and end arc length (mm) along axis.txt\n";
+    for (const auto& [start, end] : gaps) gapFile << start << ' ' << end << '\n';
   }
   std::ofstream polypFile(out / "polyps.txt");
   polypFile << "# polyps: centre x y z and radius (mm)\n";
@@ -236,7 +323,8 @@ int main(int argc, char** argv) {
   axisFile << "# true colon axis, rectum first: x y z radius (mm)\n";
   for (const AxisPoint& a : axis)
     axisFile << a.p[0] << ' ' << a.p[1] << ' ' << a.p[2] << ' ' << a.radius << '\n';
-  std::printf("wrote %d DICOM slices, axis.txt and polyps.txt to %s%s%s\n", kSize[2], out.string().c_str(),
-              argc == 3 ? " and " : "", argc == 3 ? argv[2] : "");
+  std::printf("wrote %dx%dx%d voxels: %s%s%s%s, axis.txt and polyps.txt%s to %s\n", kSize[0], kSize[1], kSize[2],
+              options.dicom ? "DICOM slices" : "", options.dicom && !options.volume.empty() ? " and " : "",
+              options.volume.c_str(), "", gaps.empty() ? "" : ", gaps.txt", out.string().c_str());
   return 0;
 }
