@@ -84,6 +84,8 @@ int runCenterline(const std::vector<std::string>& args) {
   if (!profile.empty()) writeProfileCsv(vtkTable::SafeDownCast(filter->GetOutputDataObject(1)), profile);
   if (!terrain.empty()) writeTerrainPng(vtkImageData::SafeDownCast(filter->GetOutputDataObject(2)), terrain);
   timings.stop();
+  for (const std::string& stage : vtkMedialTskCenterline::GetStageNames())
+    if (filter->GetStageSeconds(stage) > 0) timings.detail("centerline", stage, filter->GetStageSeconds(stage));
   if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
   return kSuccess;
 }

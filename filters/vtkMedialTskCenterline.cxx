@@ -196,6 +196,16 @@ int vtkMedialTskCenterline::FillInputPortInformation(int, vtkInformation* info) 
   return 1;
 }
 
+std::vector<std::string> vtkMedialTskCenterline::GetStageNames() {
+  return {"selection", "cleanup", "axis", "sections"};
+}
+
+double vtkMedialTskCenterline::GetStageSeconds(const std::string& stage) const {
+  for (const auto& [name, seconds] : this->StageSeconds)
+    if (name == stage) return seconds;
+  return 0;
+}
+
 int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                         vtkInformationVector* outputVector) {
   medial::ScalarVolume volume;
@@ -211,6 +221,7 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   });
   this->StructureVoxels = result.structureVoxels;
   this->PrimitiveCenterlinePoints = result.primitiveCenterlinePoints;
+  this->StageSeconds = result.stageSeconds;
   if (!result.ok()) {
     vtkErrorMacro(<< result.error);
     return 0;

@@ -22,6 +22,10 @@
  */
 #pragma once
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "MedialFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
@@ -99,6 +103,11 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   /// Figures of the last update.
   vtkGetMacro(PrimitiveCenterlinePoints, int);
   vtkGetMacro(StructureVoxels, vtkIdType);
+  /// Seconds of a stage of the last update: selection, cleanup (with the crop), axis, sections (0 when
+  /// not run).
+  double GetStageSeconds(const std::string& stage) const;
+  /// The stages' names, in order (for C++ callers).
+  static std::vector<std::string> GetStageNames();
 
  protected:
   vtkMedialTskCenterline();
@@ -133,4 +142,5 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   // Figures of the last update.
   int PrimitiveCenterlinePoints = 0;
   vtkIdType StructureVoxels = 0;
+  std::vector<std::pair<std::string, double>> StageSeconds;  // of the last update
 };

@@ -1,7 +1,9 @@
 #include "centerline/TskCenterline.h"
 
 #include "centerline/Branches.h"
+#include "centerline/StructureRuns.h"
 #include "centerline/TubularClusters.h"
+#include "common/Stopwatch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,19 +13,44 @@ namespace medial {
 
 namespace {
 
+// The runs of the voxels `p` selects (StructureRuns.h), and how many voxels they hold.
 template <class T>
-int64_t selectVoxels(const T* values, int components, const TskCenterlineParameters& p, BinaryVolume& out) {
-  int64_t selected = 0;
-  const int64_t count = out.voxelCount();
-  for (int64_t i = 0; i < count; ++i) {
-    const double v = double(values[i * components]);
-    bool in = v != 0;
-    if (p.selection == VoxelSelection::Label) in = v == p.label;
-    if (p.selection == VoxelSelection::Threshold) in = v >= p.thresholdLow && v <= p.thresholdHigh;
-    out.inside[size_t(i)] = in;
-    selected += in;
+std::vector<VoxelRun> runsOf(const T* values, int components, const std::array<int, 3>& size,
+                             const TskCenterlineParameters& p) {
+  const double label = p.label, low = p.thresholdLow, high = p.thresholdHigh;
+  switch (p.selection) {
+    case VoxelSelection::Label:
+      return selectedRuns(size, [&](int64_t i) { return double(values[i * components]) == label; });
+    case VoxelSelection::Threshold:
+      return selectedRuns(size, [&](int64_t i) {
+        const double v = double(values[i * components]);
+        return v >= low && v <= high;
+      });
+    default:
+      return selectedRuns(size, [&](int64_t i) { return values[i * components] != T(0); });
   }
-  return selected;
+}
+
+std::vector<VoxelRun> selectedRuns(const ScalarVolume& volume, const TskCenterlineParameters& p,
+                                   int64_t& selected) {
+  const int c = std::max(1, volume.components);
+  std::vector<VoxelRun> runs;
+  using Type = ScalarVolume::Type;
+  switch (volume.type) {
+    case Type::Int8: runs = runsOf(static_cast<const int8_t*>(volume.voxels), c, volume.size, p); break;
+    case Type::UInt8: runs = runsOf(static_cast<const uint8_t*>(volume.voxels), c, volume.size, p); break;
+    case Type::Int16: runs = runsOf(static_cast<const int16_t*>(volume.voxels), c, volume.size, p); break;
+    case Type::UInt16: runs = runsOf(static_cast<const uint16_t*>(volume.voxels), c, volume.size, p); break;
+    case Type::Int32: runs = runsOf(static_cast<const int32_t*>(volume.voxels), c, volume.size, p); break;
+    case Type::UInt32: runs = runsOf(static_cast<const uint32_t*>(volume.voxels), c, volume.size, p); break;
+    case Type::Int64: runs = runsOf(static_cast<const int64_t*>(volume.voxels), c, volume.size, p); break;
+    case Type::UInt64: runs = runsOf(static_cast<const uint64_t*>(volume.voxels), c, volume.size, p); break;
+    case Type::Float32: runs = runsOf(static_cast<const float*>(volume.voxels), c, volume.size, p); break;
+    case Type::Float64: runs = runsOf(static_cast<const double*>(volume.voxels), c, volume.size, p); break;
+  }
+  selected = 0;
+  for (const VoxelRun& r : runs) selected += r.x1 - r.x0 + 1;
+  return runs;
 }
 
 bool dropsBorderParts(const TskCenterlineParameters& p) {
@@ -105,51 +132,6 @@ std::vector<int> junctionPoints(const std::vector<Centerline>& branches, const s
 
 }  // namespace
 
-BinaryVolume selectStructure(const ScalarVolume& volume, const TskCenterlineParameters& parameters,
-                             int64_t& selected) {
-  BinaryVolume out;
-  out.size = volume.size;
-  out.origin = volume.origin;
-  out.spacing = volume.spacing;
-  out.direction = volume.direction;
-  out.inside.resize(size_t(out.voxelCount()));
-  const int c = std::max(1, volume.components);
-  using Type = ScalarVolume::Type;
-  switch (volume.type) {
-    case Type::Int8:
-      selected = selectVoxels(static_cast<const int8_t*>(volume.voxels), c, parameters, out);
-      break;
-    case Type::UInt8:
-      selected = selectVoxels(static_cast<const uint8_t*>(volume.voxels), c, parameters, out);
-      break;
-    case Type::Int16:
-      selected = selectVoxels(static_cast<const int16_t*>(volume.voxels), c, parameters, out);
-      break;
-    case Type::UInt16:
-      selected = selectVoxels(static_cast<const uint16_t*>(volume.voxels), c, parameters, out);
-      break;
-    case Type::Int32:
-      selected = selectVoxels(static_cast<const int32_t*>(volume.voxels), c, parameters, out);
-      break;
-    case Type::UInt32:
-      selected = selectVoxels(static_cast<const uint32_t*>(volume.voxels), c, parameters, out);
-      break;
-    case Type::Int64:
-      selected = selectVoxels(static_cast<const int64_t*>(volume.voxels), c, parameters, out);
-      break;
-    case Type::UInt64:
-      selected = selectVoxels(static_cast<const uint64_t*>(volume.voxels), c, parameters, out);
-      break;
-    case Type::Float32:
-      selected = selectVoxels(static_cast<const float*>(volume.voxels), c, parameters, out);
-      break;
-    case Type::Float64:
-      selected = selectVoxels(static_cast<const double*>(volume.voxels), c, parameters, out);
-      break;
-  }
-  return out;
-}
-
 TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterlineParameters& parameters,
                                   const std::function<bool(double)>& progress) {
   TskCenterlineResult result;
@@ -162,24 +144,35 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
   const auto report = [&progress](double fraction) { return !progress || progress(fraction); };
 
   // The structure: selection, clean-up, and the box it fills (every later step works on the box only).
+  Stopwatch stage;
+  const auto lap = [&](const char* name) {
+    result.stageSeconds.emplace_back(name, stage.seconds());
+    stage.restart();
+  };
   int64_t selected = 0;
-  BinaryVolume volume = selectStructure(input, parameters, selected);
+  const std::vector<VoxelRun> runs = selectedRuns(input, parameters, selected);
+  lap("selection");
   if (parameters.selection == VoxelSelection::Label && selected == 0) {
     result.error = "no voxel has the label " + format(parameters.label);
     return result;
   }
   const bool dropBorder = dropsBorderParts(parameters);
-  if (dropBorder) dropBorderTouchingParts(volume);
-  keepLargestComponent(volume);
-  if (parameters.fillHoles) fillHoles(volume);
-  result.structureVoxels = int64_t(std::count(volume.inside.begin(), volume.inside.end(), 1));
+  BinaryVolume frame;
+  frame.size = input.size;
+  frame.origin = input.origin;
+  frame.spacing = input.spacing;
+  frame.direction = input.direction;
+  ChosenPart part = largestPart(frame, runs, dropBorder, 1);
+  BinaryVolume volume = std::move(part.volume);
+  if (parameters.fillHoles && part.voxels > 0) part.voxels += fillHoles(volume);
+  result.structureVoxels = part.voxels;
+  lap("cleanup");
   if (result.structureVoxels < 8) {
     result.error = "nothing is left to follow: " + std::to_string(result.structureVoxels) +
                    " voxels after selection and clean-up (check the label or threshold" +
                    (dropBorder ? "; parts touching the volume's border were dropped" : "") + ")";
     return result;
   }
-  cropToStructure(volume, 1);
   if (!report(0.1)) {
     result.error = "aborted";
     return result;
@@ -206,6 +199,7 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
                 [&report](double f) { return report(0.1 + 0.8 * f); }, result)
           : followTube(
                 volume, seed, parameters.tsk, [&report](double f) { return report(0.1 + 0.7 * f); }, result);
+  lap("axis");
   if (!followed) return result;
   if (result.branches.empty() || result.branches.front().points.size() < 2) {
     result.error = "the structure is too small for a centerline";
@@ -220,6 +214,7 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
       result.error = report(1.0) ? "no section could be computed along the centerline" : "aborted";
       return result;
     }
+    lap("sections");
   }
   report(1.0);
   return result;

@@ -16,6 +16,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace medial {
@@ -61,16 +62,12 @@ struct TskCenterlineResult {
   TubeSections sections;              // with computeSections
   int64_t structureVoxels = 0;        // after selection and clean-up
   int primitiveCenterlinePoints = 0;  // phase I's chosen points, over all branches
+  // Seconds of each stage, in order: selection (runs of selected voxels), cleanup (the part to follow in
+  // its box, holes), axis (phases I and II, and the branches), sections.
+  std::vector<std::pair<std::string, double>> stageSeconds;
   std::string error;
   bool ok() const { return error.empty(); }
 };
-
-/// The voxels of `volume` that `parameters` select, with the volume's frame.
-/// @param volume the voxels and their frame
-/// @param parameters selection, label and threshold window (the rest is not used here)
-/// @param selected out: how many voxels were selected
-BinaryVolume selectStructure(const ScalarVolume& volume, const TskCenterlineParameters& parameters,
-                             int64_t& selected);
 
 /// The TSK centerline of the structure in `volume`.
 /// @param volume a 3-D volume, at least 2 voxels along each axis
