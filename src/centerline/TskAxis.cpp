@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 namespace medial {
 
@@ -71,13 +72,13 @@ std::vector<float> distanceToOutside(const BinaryVolume& volume) {
   std::vector<double> squared(static_cast<size_t>(count));
   for (int64_t i = 0; i < count; ++i)
     squared[size_t(i)] = volume.inside[size_t(i)] ? std::numeric_limits<double>::infinity() : 0.0;
-  std::vector<double> line, out, z;
-  std::vector<int> v;
-  for (int axis = 0; axis < 3; ++axis) {
+  // One pass per axis; its lines are independent, so two threads take half of them each.
+  const auto pass = [&](int axis, int from, int to) {
     const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    std::vector<double> line(size_t(volume.size[size_t(axis)])), out, z;
+    std::vector<int> v;
     std::array<int, 3> c{};
-    line.resize(size_t(volume.size[size_t(axis)]));
-    for (c[size_t(a2)] = 0; c[size_t(a2)] < volume.size[size_t(a2)]; ++c[size_t(a2)])
+    for (c[size_t(a2)] = from; c[size_t(a2)] < to; ++c[size_t(a2)])
       for (c[size_t(a1)] = 0; c[size_t(a1)] < volume.size[size_t(a1)]; ++c[size_t(a1)]) {
         bool any = false;  // a line with no inside voxel (most of a CT around a colon) stays all zero
         for (int p = 0; p < volume.size[size_t(axis)]; ++p) {
@@ -92,6 +93,41 @@ std::vector<float> distanceToOutside(const BinaryVolume& volume) {
           squared[size_t(volume.index(c[0], c[1], c[2]))] = out[size_t(p)];
         }
       }
+  };
+  // Along z the lines' voxels lie a slice apart: for each y, the (x, z) plane is copied row by row into a
+  // buffer first, transformed there column by column (in cache), and copied back.
+  const auto passZ = [&](int from, int to) {
+    const int nx = volume.size[0], nz = volume.size[2];
+    std::vector<double> plane(static_cast<size_t>(nx) * static_cast<size_t>(nz)), line(static_cast<size_t>(nz)), out, z;
+    std::vector<int> v;
+    for (int y = from; y < to; ++y) {
+      for (int k = 0; k < nz; ++k)
+        std::copy_n(squared.begin() + volume.index(0, y, k), nx, plane.begin() + int64_t(k) * nx);
+      for (int x = 0; x < nx; ++x) {
+        bool any = false;
+        for (int k = 0; k < nz; ++k) {
+          line[size_t(k)] = plane[size_t(k) * size_t(nx) + size_t(x)];
+          any = any || line[size_t(k)] != 0;
+        }
+        if (!any) continue;
+        distanceTransform1d(line, volume.spacing[2], out, v, z);
+        for (int k = 0; k < nz; ++k) plane[size_t(k) * size_t(nx) + size_t(x)] = out[size_t(k)];
+      }
+      for (int k = 0; k < nz; ++k)
+        std::copy_n(plane.begin() + int64_t(k) * nx, nx, squared.begin() + volume.index(0, y, k));
+    }
+  };
+  for (int axis = 0; axis < 3; ++axis) {
+    const int lines = volume.size[size_t((axis + 2) % 3)], half = lines / 2;
+    if (axis == 2) {
+      std::thread second(passZ, half, lines);
+      passZ(0, half);
+      second.join();
+    } else {
+      std::thread second(pass, axis, half, lines);
+      pass(axis, 0, half);
+      second.join();
+    }
   }
   std::vector<float> distance(static_cast<size_t>(count));
   for (int64_t i = 0; i < count; ++i) distance[size_t(i)] = float(std::sqrt(squared[size_t(i)]));
