@@ -191,8 +191,7 @@ Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, 
   // The end clusters are left out while their chosen point lies near the wall (border distance below half
   // the median of the chosen points): P0 is on the wall of a cap (the lowest voxel), and the Manhattan
   // layers reach a far cap first at its rim, so the end clusters are lopsided and would hook the axis.
-  std::vector<float> border;
-  for (int64_t voxel : clusters.primitive) border.push_back(clusters.borderDistance[size_t(voxel)]);
+  const std::vector<float>& border = clusters.primitiveBorderDistance;
   std::vector<float> sorted = border;
   std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
   const float enough = 0.5f * sorted[sorted.size() / 2];

@@ -9,41 +9,24 @@ namespace medial {
 
 namespace {
 
-// Step 2b: distance (mm) to the nearest outside voxel along the six main directions.
-std::vector<float> sixDirectionBorderDistance(const BinaryVolume& v) {
-  std::vector<float> distance(size_t(v.voxelCount()), std::numeric_limits<float>::infinity());
+// Step 2b: distance (mm) from `voxel` to the nearest outside voxel along the six main directions (the
+// volume's edge counts as outside). Computed for the voxels step 3 compares only (the last layer of each
+// section): a pass over the whole box took 1.2 s of a full-size CT's 3.
+float sixDirectionBorderDistance(const BinaryVolume& v, int64_t voxel) {
+  const auto c = v.coordinates(voxel);
+  const int64_t strides[3] = {1, v.size[0], int64_t(v.size[0]) * v.size[1]};
+  float best = std::numeric_limits<float>::infinity();
   for (int axis = 0; axis < 3; ++axis) {
-    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-    const int length = v.size[size_t(axis)];
+    const int p = c[size_t(axis)], length = v.size[size_t(axis)];
+    const int64_t stride = strides[axis];
+    int before = p, after = p;  // the run of inside voxels through p
+    while (before > 0 && v.inside[size_t(voxel - (p - before + 1) * stride)]) --before;
+    while (after < length - 1 && v.inside[size_t(voxel + (after + 1 - p) * stride)]) ++after;
     const double step = v.spacing[axis];
-    std::array<int, 3> c{};
-    for (c[size_t(a2)] = 0; c[size_t(a2)] < v.size[size_t(a2)]; ++c[size_t(a2)])
-      for (c[size_t(a1)] = 0; c[size_t(a1)] < v.size[size_t(a1)]; ++c[size_t(a1)]) {
-        auto at = [&](int position) {
-          c[size_t(axis)] = position;
-          return v.index(c[0], c[1], c[2]);
-        };
-        int lastOutside = -1;  // the volume's edge counts as outside
-        for (int p = 0; p < length; ++p) {
-          const int64_t i = at(p);
-          if (!v.inside[size_t(i)]) {
-            lastOutside = p;
-            distance[size_t(i)] = 0;
-          } else {
-            distance[size_t(i)] = std::min(distance[size_t(i)], float((p - lastOutside) * step));
-          }
-        }
-        int nextOutside = length;
-        for (int p = length - 1; p >= 0; --p) {
-          const int64_t i = at(p);
-          if (!v.inside[size_t(i)])
-            nextOutside = p;
-          else
-            distance[size_t(i)] = std::min(distance[size_t(i)], float((nextOutside - p) * step));
-        }
-      }
+    best = std::min(best, float((p - (before - 1)) * step));
+    best = std::min(best, float((after + 1 - p) * step));
   }
-  return distance;
+  return best;
 }
 
 }  // namespace
@@ -144,13 +127,12 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
   for (const auto& l : layers) reached += int64_t(l.size());
   for (int64_t i = 0; i < v.voxelCount(); ++i) r.unreachedVoxels += v.inside[size_t(i)] != 0;
   r.unreachedVoxels -= reached;
-  if (aborted(0.2)) return r;
-  r.borderDistance = sixDirectionBorderDistance(v);
   if (aborted(0.4)) return r;
 
   // Step 3: the primitive centerline, section by section.
   r.primitive.push_back(seed);
   r.primitiveLayer.push_back(0);
+  r.primitiveBorderDistance.push_back(sixDirectionBorderDistance(v, seed));
   int current = 0;
   while (current + 1 < int(layers.size())) {
     int64_t volume = 1;
@@ -162,10 +144,15 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
       if (double(height) * height * height > 4.0 * double(volume) / M_PI) break;  // eq. (1)
     }
     const auto& lastLayer = layers[size_t(last)];
-    const int64_t chosen = *std::max_element(lastLayer.begin(), lastLayer.end(), [&](int64_t a, int64_t b) {
-      return r.borderDistance[size_t(a)] < r.borderDistance[size_t(b)];
-    });
+    int64_t chosen = lastLayer.front();
+    float chosenDistance = -1;
+    for (int64_t voxel : lastLayer)  // the first of the farthest from the border, as max_element takes
+      if (const float d = sixDirectionBorderDistance(v, voxel); d > chosenDistance) {
+        chosenDistance = d;
+        chosen = voxel;
+      }
     r.primitive.push_back(chosen);
+    r.primitiveBorderDistance.push_back(chosenDistance);
     r.primitiveLayer.push_back(last);
     current = last;
   }

@@ -31,8 +31,8 @@ namespace medial {
 
 struct TubularClusters {
   std::vector<int> layer;              // per voxel; -1 outside or unreached from P0
-  std::vector<float> borderDistance;   // per voxel (mm); 0 outside
   std::vector<int64_t> primitive;      // the chosen points P_0 ... P_n (voxel indices)
+  std::vector<float> primitiveBorderDistance;  // of each chosen point (mm; step 2b, six directions)
   std::vector<int> primitiveLayer;     // the layer of each chosen point
   std::vector<int64_t> orderedVoxels;  // every reached voxel, in the total order of step 5
   std::vector<int> orderedCluster;     // the cluster (vertex index) of each ordered voxel
