@@ -50,6 +50,10 @@ TubularClusters structureTube(const BinaryVolume& volume, int64_t seed = -1,
 std::vector<std::vector<int64_t>> manhattanLayers(const BinaryVolume& volume, int64_t seed,
                                                   std::vector<int>& layer);
 
+// Step 2b: the distance (mm) from an inside voxel to the nearest outside voxel along the six main
+// directions (the volume's edge counts as outside); never less than the Euclidean distance.
+float sixDirectionBorderDistance(const BinaryVolume& volume, int64_t voxel);
+
 // The structure's voxel of lowest physical z (-1 when it is empty).
 int64_t lowestVoxel(const BinaryVolume& volume);
 
