@@ -68,6 +68,46 @@ double trilinear(const BinaryVolume& v, const std::vector<float>& field, const E
   return weights > 0 ? sum / weights : 0;
 }
 
+// distanceToOutside at the given voxels only: the transform along x runs on every line, along y only on
+// the lines of the voxels' x columns, along z only on the voxels' own (x, y) lines, which is all the last
+// two passes need for them. The values are those of the full transform.
+std::vector<float> distanceAtVoxels(const BinaryVolume& v, const std::vector<int64_t>& voxels) {
+  const int nx = v.size[0], ny = v.size[1], nz = v.size[2];
+  std::vector<double> squared(size_t(v.voxelCount()));
+  for (int64_t i = 0; i < v.voxelCount(); ++i)
+    squared[size_t(i)] = v.inside[size_t(i)] ? std::numeric_limits<double>::infinity() : 0.0;
+  std::vector<double> line, out, z;
+  std::vector<int> stack;
+  auto transform = [&](int64_t first, int64_t stride, int count, double step) {
+    line.resize(size_t(count));
+    bool any = false;
+    for (int p = 0; p < count; ++p) {
+      line[size_t(p)] = squared[size_t(first + p * stride)];
+      any = any || line[size_t(p)] != 0;
+    }
+    if (!any) return;
+    distanceTransform1d(line, step, out, stack, z);
+    for (int p = 0; p < count; ++p) squared[size_t(first + p * stride)] = out[size_t(p)];
+  };
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j) transform(v.index(0, j, k), 1, nx, v.spacing[0]);
+  std::vector<bool> column(size_t(nx), false), pillar(size_t(nx) * size_t(ny), false);
+  for (int64_t voxel : voxels) {
+    const auto c = v.coordinates(voxel);
+    column[size_t(c[0])] = true;
+    pillar[size_t(c[0]) + size_t(nx) * size_t(c[1])] = true;
+  }
+  for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i)
+      if (column[size_t(i)]) transform(v.index(i, 0, k), nx, ny, v.spacing[1]);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      if (pillar[size_t(i) + size_t(nx) * size_t(j)]) transform(v.index(i, j, 0), int64_t(nx) * ny, nz, v.spacing[2]);
+  std::vector<float> distance;
+  for (int64_t voxel : voxels) distance.push_back(float(std::sqrt(squared[size_t(voxel)])));
+  return distance;
+}
+
 // The distance to the outside at each point (trilinear between the voxels around it), as
 // trilinear(distanceToOutside(volume)) gives it, but with the transform run in small boxes only: for a run
 // of consecutive points, the box around their voxels grown by a bound of those voxels' distances (the
@@ -113,7 +153,18 @@ std::vector<double> distanceAtPoints(const BinaryVolume& volume, const std::vect
       for (int j = 0; j < box.size[1]; ++j)
         std::copy_n(volume.inside.begin() + volume.index(lo[0], lo[1] + j, lo[2] + k), box.size[0],
                     box.inside.begin() + box.index(0, j, k));
-    const std::vector<float> distance = distanceToOutside(box);
+    std::vector<int64_t> corners;  // the box's voxels that the points' trilinear interpolation reads
+    for (size_t s = begin; s < end; ++s) {
+      const Eigen::Vector3d index = box.continuousIndex(points[s]);
+      const int i0 = int(std::floor(index.x())), j0 = int(std::floor(index.y())), k0 = int(std::floor(index.z()));
+      for (int dz = 0; dz <= 1; ++dz)
+        for (int dy = 0; dy <= 1; ++dy)
+          for (int dx = 0; dx <= 1; ++dx)
+            if (box.contains(i0 + dx, j0 + dy, k0 + dz)) corners.push_back(box.index(i0 + dx, j0 + dy, k0 + dz));
+    }
+    const std::vector<float> values = distanceAtVoxels(box, corners);
+    std::vector<float> distance(size_t(box.voxelCount()), 0.0f);
+    for (size_t c = 0; c < corners.size(); ++c) distance[size_t(corners[c])] = values[c];
     for (size_t s = begin; s < end; ++s) out.push_back(trilinear(box, distance, box.continuousIndex(points[s])));
   }
   return out;
