@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <limits>
 
 namespace medial {
@@ -30,26 +29,49 @@ std::vector<std::vector<int64_t>> manhattanLayers(const BinaryVolume& v, int64_t
                                                   std::vector<int>& layer) {
   layer.assign(size_t(v.voxelCount()), -1);
   std::vector<std::vector<int64_t>> layers;
-  std::deque<int64_t> queue{seed};
+  if (seed < 0 || seed >= v.voxelCount()) return layers;
+  // Layer by layer from frontier to frontier. Where the structure keeps off the volume's faces (a box
+  // cropped with a margin: the usual case), a neighbour is an index offset, with no bounds to check.
+  const int nx = v.size[0], ny = v.size[1], nz = v.size[2];
+  bool offFaces = true;
+  for (int k = 0; k < nz && offFaces; ++k)
+    for (int j = 0; j < ny && offFaces; ++j)
+      for (int i = 0; i < nx; i += (k == 0 || k == nz - 1 || j == 0 || j == ny - 1) ? 1 : std::max(1, nx - 1))
+        if (v.inside[size_t(v.index(i, j, k))]) {
+          offFaces = false;
+          break;
+        }
+  const int64_t offsets[6] = {1, -1, nx, -int64_t(nx), int64_t(nx) * ny, -int64_t(nx) * ny};
+  static const int steps[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   layer[size_t(seed)] = 0;
-  while (!queue.empty()) {
-    const int64_t at = queue.front();
-    queue.pop_front();
-    const int l = layer[size_t(at)];
-    if (int(layers.size()) <= l) layers.emplace_back();
-    layers[size_t(l)].push_back(at);
-    const auto c = v.coordinates(at);
-    static const int steps[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    for (const auto& s : steps) {
-      const int i = c[0] + s[0], j = c[1] + s[1], k = c[2] + s[2];
-      if (!v.contains(i, j, k)) continue;
-      const int64_t next = v.index(i, j, k);
-      if (v.inside[size_t(next)] && layer[size_t(next)] < 0) {
-        layer[size_t(next)] = l + 1;
-        queue.push_back(next);
+  layers.push_back({seed});
+  for (int l = 0; !layers[size_t(l)].empty(); ++l) {
+    std::vector<int64_t> next;
+    for (int64_t at : layers[size_t(l)]) {
+      if (offFaces) {
+        for (int64_t offset : offsets) {
+          const int64_t n = at + offset;
+          if (v.inside[size_t(n)] && layer[size_t(n)] < 0) {
+            layer[size_t(n)] = l + 1;
+            next.push_back(n);
+          }
+        }
+        continue;
+      }
+      const auto c = v.coordinates(at);
+      for (const auto& s : steps) {
+        const int i = c[0] + s[0], j = c[1] + s[1], k = c[2] + s[2];
+        if (!v.contains(i, j, k)) continue;
+        const int64_t n = v.index(i, j, k);
+        if (v.inside[size_t(n)] && layer[size_t(n)] < 0) {
+          layer[size_t(n)] = l + 1;
+          next.push_back(n);
+        }
       }
     }
+    layers.push_back(std::move(next));
   }
+  layers.pop_back();  // the empty frontier
   return layers;
 }
 
@@ -202,10 +224,19 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
   }
   if (aborted(0.8)) return r;
 
-  // Step 5: the total order.
-  std::stable_sort(members.begin(), members.end(), [](const Member& a, const Member& b) {
-    return a.cluster != b.cluster ? a.cluster < b.cluster : a.relative < b.relative;
-  });
+  // Step 5: the total order: by cluster (a counting sort), then by relative position within each (stable).
+  {
+    std::vector<size_t> start(size_t(n) + 1, 0);
+    for (const Member& m : members) ++start[size_t(m.cluster) + 1];
+    for (int j = 0; j < n; ++j) start[size_t(j) + 1] += start[size_t(j)];
+    std::vector<Member> sorted(members.size());
+    std::vector<size_t> at(start.begin(), start.end() - 1);
+    for (const Member& m : members) sorted[at[size_t(m.cluster)]++] = m;
+    for (int j = 0; j < n; ++j)
+      std::stable_sort(sorted.begin() + long(start[size_t(j)]), sorted.begin() + long(start[size_t(j) + 1]),
+                       [](const Member& a, const Member& b) { return a.relative < b.relative; });
+    members = std::move(sorted);
+  }
   r.orderedVoxels.reserve(members.size());
   r.orderedCluster.reserve(members.size());
   for (const auto& m : members) {
