@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 namespace medial {
 
@@ -161,13 +162,27 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
     std::vector<Eigen::Vector3d> offset(n, Eigen::Vector3d::Zero());
     std::vector<char> measured(n, 0);  // the section gave a centre
     std::vector<double> radii;         // median ray length of every section used
-    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    // The sections' frames, transported along the axis (in order), then their walls (two threads: the
+    // rays are most of the time).
+    std::vector<Eigen::Vector3d> normals(n), binormals(n);
+    Eigen::Vector3d transported = Eigen::Vector3d::Zero();
     for (size_t i = 0; i < n; ++i) {
       const Eigen::Vector3d tangent = (axis[std::min(i + 1, n - 1)] - axis[i > 0 ? i - 1 : 0]).normalized();
-      normal = transportNormal(normal, tangent, i == 0);
-      const Eigen::Vector3d binormal = tangent.cross(normal);
+      normals[i] = transported = transportNormal(transported, tangent, i == 0);
+      binormals[i] = tangent.cross(transported);
+    }
+    std::vector<std::vector<double>> walls(n);
+    const auto cast = [&](size_t from, size_t to) {
+      for (size_t i = from; i < to; ++i) walls[i] = caster.walls(axis[i], normals[i], binormals[i], rays);
+    };
+    std::thread second(cast, n / 2, n);
+    cast(0, n / 2);
+    second.join();
+    for (size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3d& normal = normals[i];
+      const Eigen::Vector3d& binormal = binormals[i];
       // The wall polygon in the section's (normal, binormal) coordinates, and its area centroid.
-      const std::vector<double> distances = caster.walls(axis[i], normal, binormal, rays);
+      const std::vector<double>& distances = walls[i];
       if (std::any_of(distances.begin(), distances.end(), [](double d) { return std::isnan(d); })) continue;
       std::vector<Eigen::Vector2d> wall;
       for (int r = 0; r < rays; ++r) {
