@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <thread>
 
 namespace medial {
 
@@ -25,6 +27,21 @@ float sixDirectionBorderDistance(const BinaryVolume& v, int64_t voxel) {
   return best;
 }
 
+namespace {
+
+// Whether no voxel of the structure lies on the volume's faces: then every neighbour of a structure voxel
+// is inside the volume, one index offset away.
+bool keepsOffFaces(const BinaryVolume& v) {
+  const int nx = v.size[0], ny = v.size[1], nz = v.size[2];
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; i += (k == 0 || k == nz - 1 || j == 0 || j == ny - 1) ? 1 : std::max(1, nx - 1))
+        if (v.inside[size_t(v.index(i, j, k))]) return false;
+  return true;
+}
+
+}  // namespace
+
 std::vector<std::vector<int64_t>> manhattanLayers(const BinaryVolume& v, int64_t seed,
                                                   std::vector<int>& layer) {
   layer.assign(size_t(v.voxelCount()), -1);
@@ -32,15 +49,8 @@ std::vector<std::vector<int64_t>> manhattanLayers(const BinaryVolume& v, int64_t
   if (seed < 0 || seed >= v.voxelCount()) return layers;
   // Layer by layer from frontier to frontier. Where the structure keeps off the volume's faces (a box
   // cropped with a margin: the usual case), a neighbour is an index offset, with no bounds to check.
-  const int nx = v.size[0], ny = v.size[1], nz = v.size[2];
-  bool offFaces = true;
-  for (int k = 0; k < nz && offFaces; ++k)
-    for (int j = 0; j < ny && offFaces; ++j)
-      for (int i = 0; i < nx; i += (k == 0 || k == nz - 1 || j == 0 || j == ny - 1) ? 1 : std::max(1, nx - 1))
-        if (v.inside[size_t(v.index(i, j, k))]) {
-          offFaces = false;
-          break;
-        }
+  const int nx = v.size[0], ny = v.size[1];
+  const bool offFaces = keepsOffFaces(v);
   const int64_t offsets[6] = {1, -1, nx, -int64_t(nx), int64_t(nx) * ny, -int64_t(nx) * ny};
   static const int steps[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   layer[size_t(seed)] = 0;
@@ -82,12 +92,38 @@ std::vector<std::vector<int64_t>> growLayers(const BinaryVolume& v, int64_t seed
 }
 
 // The lowest voxel of the last layer: an end of the structure as seen from `from`.
+// Breadth-first (6-connected) with frontiers only and a byte per voxel: no layer numbers kept.
 int64_t farEnd(const BinaryVolume& v, int64_t from, int& distance) {
-  std::vector<int> layer;
-  const auto layers = growLayers(v, from, layer);
-  distance = int(layers.size()) - 1;
-  const auto& last = layers.back();
-  return *std::min_element(last.begin(), last.end(),
+  std::vector<uint8_t> seen(v.inside.size(), 0);
+  std::vector<int64_t> frontier{from}, next;
+  seen[size_t(from)] = 1;
+  distance = 0;
+  static const int steps[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const bool offFaces = keepsOffFaces(v);
+  const int64_t offsets[6] = {1, -1, v.size[0], -int64_t(v.size[0]), int64_t(v.size[0]) * v.size[1],
+                              -int64_t(v.size[0]) * v.size[1]};
+  auto reach = [&](int64_t n) {
+    if (v.inside[size_t(n)] && !seen[size_t(n)]) {
+      seen[size_t(n)] = 1;
+      next.push_back(n);
+    }
+  };
+  while (true) {
+    next.clear();
+    for (int64_t at : frontier) {
+      if (offFaces) {
+        for (int64_t offset : offsets) reach(at + offset);
+        continue;
+      }
+      const auto c = v.coordinates(at);
+      for (const auto& s : steps)
+        if (v.contains(c[0] + s[0], c[1] + s[1], c[2] + s[2])) reach(v.index(c[0] + s[0], c[1] + s[1], c[2] + s[2]));
+    }
+    if (next.empty()) break;
+    frontier.swap(next);
+    ++distance;
+  }
+  return *std::min_element(frontier.begin(), frontier.end(),
                            [&](int64_t a, int64_t b) { return v.physical(a).z() < v.physical(b).z(); });
 }
 
@@ -198,30 +234,41 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
     int cluster;
     double relative;
   };
-  std::vector<Member> members;
-  members.reserve(size_t(reached));
-  for (int l = 0; l < int(layers.size()); ++l) {
-    const int after =
-        int(std::lower_bound(r.primitiveLayer.begin(), r.primitiveLayer.end(), l) - r.primitiveLayer.begin());
-    const int first = std::max(0, after - 2), lastCandidate = std::min(n - 1, after + 1);
-    for (int64_t voxel : layers[size_t(l)]) {
-      const Eigen::Vector3d p = v.physical(voxel);
-      auto membership = [&](int j) {
-        if (j < 0 || j >= n) return 0.0;
-        const double d = (p - vertex[size_t(j)]).norm();
-        return d > 0 ? nearest[size_t(j)] / d : std::numeric_limits<double>::infinity();
-      };
-      int cluster = first;
-      double best = -1;
-      for (int j = first; j <= lastCandidate; ++j)
-        if (const double mu = membership(j); mu > best) {
-          best = mu;
-          cluster = j;
-        }
-      const double next = membership(cluster + 1), previous = membership(cluster - 1);
-      members.push_back({voxel, cluster, std::isfinite(best) ? next - previous : 0.0});
+  // Each voxel's cluster and position in it, layer by layer; two threads take half of the layers each
+  // (by voxel count) and their lists are joined in layer order.
+  const auto assign = [&](int fromLayer, int toLayer, std::vector<Member>& out) {
+    for (int l = fromLayer; l < toLayer; ++l) {
+      const int after =
+          int(std::lower_bound(r.primitiveLayer.begin(), r.primitiveLayer.end(), l) - r.primitiveLayer.begin());
+      const int first = std::max(0, after - 2), lastCandidate = std::min(n - 1, after + 1);
+      for (int64_t voxel : layers[size_t(l)]) {
+        const Eigen::Vector3d p = v.physical(voxel);
+        auto membership = [&](int j) {
+          if (j < 0 || j >= n) return 0.0;
+          const double d = (p - vertex[size_t(j)]).norm();
+          return d > 0 ? nearest[size_t(j)] / d : std::numeric_limits<double>::infinity();
+        };
+        int cluster = first;
+        double best = -1;
+        for (int j = first; j <= lastCandidate; ++j)
+          if (const double mu = membership(j); mu > best) {
+            best = mu;
+            cluster = j;
+          }
+        const double next = membership(cluster + 1), previous = membership(cluster - 1);
+        out.push_back({voxel, cluster, std::isfinite(best) ? next - previous : 0.0});
+      }
     }
-  }
+  };
+  int middle = 0;
+  for (int64_t counted = 0; middle < int(layers.size()) && 2 * counted < reached; ++middle)
+    counted += int64_t(layers[size_t(middle)].size());
+  std::vector<Member> members, later;
+  members.reserve(size_t(reached));
+  std::thread second(assign, middle, int(layers.size()), std::ref(later));
+  assign(0, middle, members);
+  second.join();
+  members.insert(members.end(), later.begin(), later.end());
   if (aborted(0.8)) return r;
 
   // Step 5: the total order: by cluster (a counting sort), then by relative position within each (stable).
@@ -232,9 +279,14 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
     std::vector<Member> sorted(members.size());
     std::vector<size_t> at(start.begin(), start.end() - 1);
     for (const Member& m : members) sorted[at[size_t(m.cluster)]++] = m;
-    for (int j = 0; j < n; ++j)
-      std::stable_sort(sorted.begin() + long(start[size_t(j)]), sorted.begin() + long(start[size_t(j) + 1]),
-                       [](const Member& a, const Member& b) { return a.relative < b.relative; });
+    const auto sortClusters = [&](int from, int to) {
+      for (int j = from; j < to; ++j)
+        std::stable_sort(sorted.begin() + long(start[size_t(j)]), sorted.begin() + long(start[size_t(j) + 1]),
+                         [](const Member& a, const Member& b) { return a.relative < b.relative; });
+    };
+    std::thread secondHalf(sortClusters, n / 2, n);
+    sortClusters(0, n / 2);
+    secondHalf.join();
     members = std::move(sorted);
   }
   r.orderedVoxels.reserve(members.size());
