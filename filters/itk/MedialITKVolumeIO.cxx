@@ -6,7 +6,10 @@
 #include "MedialITKPlugin.h"
 
 #include <vtkImageData.h>
-#include <vtkImageImport.h>
+#include <vtkAOSDataArrayTemplate.h>
+#include <vtkDataArray.h>
+#include <vtkTypeTraits.h>
+#include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 
 #include <itkGDCMImageIO.h>
@@ -26,28 +29,35 @@
 
 namespace {
 
-// Connects an ITK image to a vtkImageImport through the callbacks of itk::VTKImageExport, then keeps a
-// deep copy so that the ITK side can go away.
+// Hands the ITK image's voxels to `out` without a copy: the pixel container lets go of its buffer (which
+// ITK allocated with new[]) and a VTK array takes it over (freed with delete[]). The frame is ITK's: extent
+// from the region's index, origin, spacing and direction as ITK has them (VTK 9's image data applies the
+// direction the same way). A CT of 210 MB no longer needs 420 MB while it is read.
 template <typename ImageType>
-void bridgeToVtk(ImageType* itkImage, vtkImageData* out) {
-  auto exporter = itk::VTKImageExport<ImageType>::New();
-  exporter->SetInput(itkImage);
-  auto importer = vtkSmartPointer<vtkImageImport>::New();
-  importer->SetUpdateInformationCallback(exporter->GetUpdateInformationCallback());
-  importer->SetPipelineModifiedCallback(exporter->GetPipelineModifiedCallback());
-  importer->SetWholeExtentCallback(exporter->GetWholeExtentCallback());
-  importer->SetSpacingCallback(exporter->GetSpacingCallback());
-  importer->SetOriginCallback(exporter->GetOriginCallback());
-  importer->SetDirectionCallback(exporter->GetDirectionCallback());
-  importer->SetScalarTypeCallback(exporter->GetScalarTypeCallback());
-  importer->SetNumberOfComponentsCallback(exporter->GetNumberOfComponentsCallback());
-  importer->SetPropagateUpdateExtentCallback(exporter->GetPropagateUpdateExtentCallback());
-  importer->SetUpdateDataCallback(exporter->GetUpdateDataCallback());
-  importer->SetDataExtentCallback(exporter->GetDataExtentCallback());
-  importer->SetBufferPointerCallback(exporter->GetBufferPointerCallback());
-  importer->SetCallbackUserData(exporter->GetCallbackUserData());
-  importer->Update();
-  out->DeepCopy(importer->GetOutput());
+void adoptIntoVtk(ImageType* image, vtkImageData* out) {
+  using Pixel = typename ImageType::PixelType;
+  const auto region = image->GetBufferedRegion();
+  const auto index = region.GetIndex();
+  const auto size = region.GetSize();
+  out->SetExtent(int(index[0]), int(index[0] + size[0]) - 1, int(index[1]), int(index[1] + size[1]) - 1,
+                 int(index[2]), int(index[2] + size[2]) - 1);
+  out->SetSpacing(image->GetSpacing()[0], image->GetSpacing()[1], image->GetSpacing()[2]);
+  out->SetOrigin(image->GetOrigin()[0], image->GetOrigin()[1], image->GetOrigin()[2]);
+  double direction[9];
+  for (unsigned r = 0; r < 3; ++r)
+    for (unsigned c = 0; c < 3; ++c) direction[3 * r + c] = image->GetDirection()(r, c);
+  out->SetDirectionMatrix(direction);
+  auto* container = image->GetPixelContainer();
+  const vtkIdType count = vtkIdType(container->Size());
+  container->SetContainerManageMemory(false);
+  // The concrete array class of the type (vtkShortArray for int16...), as VTK's own readers give.
+  vtkSmartPointer<vtkAOSDataArrayTemplate<Pixel>> scalars;
+  scalars.TakeReference(vtkAOSDataArrayTemplate<Pixel>::SafeDownCast(
+      vtkDataArray::CreateDataArray(vtkTypeTraits<Pixel>::VTKTypeID())));
+  scalars->SetName("scalars");  // as vtkImageImport named them
+  scalars->SetArray(container->GetImportPointer(), count, 0,
+                    vtkAOSDataArrayTemplate<Pixel>::VTK_DATA_ARRAY_DELETE);
+  out->GetPointData()->SetScalars(scalars);
 }
 
 std::vector<std::string> dicomSeriesFiles(const std::string& directory, const std::string& wantedUid,
@@ -78,12 +88,12 @@ void readScalarImage(const std::string& path, const std::vector<std::string>& di
     reader->SetImageIO(itk::GDCMImageIO::New());
     reader->SetFileNames(dicomFiles);
     reader->Update();
-    bridgeToVtk<ImageType>(reader->GetOutput(), out);
+    adoptIntoVtk<ImageType>(reader->GetOutput(), out);
   } else {
     auto reader = itk::ImageFileReader<ImageType>::New();
     reader->SetFileName(path);
     reader->Update();
-    bridgeToVtk<ImageType>(reader->GetOutput(), out);
+    adoptIntoVtk<ImageType>(reader->GetOutput(), out);
   }
 }
 

@@ -175,7 +175,8 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
   }
 
   // Step 2a: Manhattan layers grown inside the structure.
-  const std::vector<std::vector<int64_t>> layers = growLayers(v, seed, r.layer);
+  std::vector<int> layer;  // per voxel, freed once step 4 has used it (140 MB on a full-size CT)
+  std::vector<std::vector<int64_t>> layers = growLayers(v, seed, layer);
   int64_t reached = 0;
   for (const auto& l : layers) reached += int64_t(l.size());
   for (int64_t i = 0; i < v.voxelCount(); ++i) r.unreachedVoxels += v.inside[size_t(i)] != 0;
@@ -224,11 +225,12 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
         for (int dx = -1; dx <= 1; ++dx) {
           if ((dx | dy | dz) == 0 || !v.contains(c[0] + dx, c[1] + dy, c[2] + dz)) continue;
           const int64_t other = v.index(c[0] + dx, c[1] + dy, c[2] + dz);
-          if (r.layer[size_t(other)] >= 0)
+          if (layer[size_t(other)] >= 0)
             best = std::min(best, (v.physical(other) - vertex[size_t(j)]).norm());
         }
     if (std::isfinite(best)) nearest[size_t(j)] = best;
   }
+  std::vector<int>().swap(layer);
   struct Member {
     int64_t voxel;
     int cluster;
@@ -269,6 +271,8 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
   assign(0, middle, members);
   second.join();
   members.insert(members.end(), later.begin(), later.end());
+  std::vector<Member>().swap(later);  // the lists and layers go before step 5 copies the members
+  std::vector<std::vector<int64_t>>().swap(layers);
   if (aborted(0.8)) return r;
 
   // Step 5: the total order: by cluster (a counting sort), then by relative position within each (stable).

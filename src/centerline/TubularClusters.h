@@ -30,7 +30,6 @@
 namespace medial {
 
 struct TubularClusters {
-  std::vector<int> layer;              // per voxel; -1 outside or unreached from P0
   std::vector<int64_t> primitive;      // the chosen points P_0 ... P_n (voxel indices)
   std::vector<float> primitiveBorderDistance;  // of each chosen point (mm; step 2b, six directions)
   std::vector<int> primitiveLayer;     // the layer of each chosen point
