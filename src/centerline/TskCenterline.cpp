@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
+#include <type_traits>
 
 namespace medial {
 
@@ -18,6 +20,19 @@ template <class T>
 std::vector<VoxelRun> runsOf(const T* values, int components, const std::array<int, 3>& size,
                              const TskCenterlineParameters& p) {
   const double label = p.label, low = p.thresholdLow, high = p.thresholdHigh;
+  if constexpr (std::is_integral_v<T>) {
+    // Integer voxels (CT's int16) compare as integers: the window rounded inwards, clamped to the type.
+    if (p.selection == VoxelSelection::Threshold) {
+      const double lo = std::max(std::ceil(low), double(std::numeric_limits<T>::lowest()));
+      const double hi = std::min(std::floor(high), double(std::numeric_limits<T>::max()));
+      if (!(lo <= hi)) return {};
+      const T first = T(lo), last = T(hi);
+      return selectedRuns(size, [&](int64_t i) {
+        const T v = values[i * components];
+        return v >= first && v <= last;
+      });
+    }
+  }
   switch (p.selection) {
     case VoxelSelection::Label:
       return selectedRuns(size, [&](int64_t i) { return double(values[i * components]) == label; });
