@@ -117,7 +117,8 @@ bool parse(int argc, char** argv, Options& options) {
       const std::string v = value();
       if (std::sscanf(v.c_str(), "%dx%dx%d", &kSize[0], &kSize[1], &kSize[2]) != 3 || kSize[0] < 32 ||
           kSize[1] < 32 || kSize[2] < 32 || kSize[0] > 4096 || kSize[1] > 4096 || kSize[2] > 4096) {
-        std::fprintf(stderr, "medial-make-colon-phantom: --size expects WxHxD, each 32..4096, got '%s'\n", v.c_str());
+        std::fprintf(stderr, "medial-make-colon-phantom: --size expects WxHxD, each 32..4096, got '%s'\n",
+                     v.c_str());
         return false;
       }
     } else if (arg == "--collapse") {
@@ -323,8 +324,9 @@ int main(int argc, char** argv) {
   axisFile << "# true colon axis, rectum first: x y z radius (mm)\n";
   for (const AxisPoint& a : axis)
     axisFile << a.p[0] << ' ' << a.p[1] << ' ' << a.p[2] << ' ' << a.radius << '\n';
-  std::printf("wrote %dx%dx%d voxels: %s%s%s%s, axis.txt and polyps.txt%s to %s\n", kSize[0], kSize[1], kSize[2],
-              options.dicom ? "DICOM slices" : "", options.dicom && !options.volume.empty() ? " and " : "",
-              options.volume.c_str(), "", gaps.empty() ? "" : ", gaps.txt", out.string().c_str());
+  std::printf("wrote %dx%dx%d voxels: %s%s%s%s, axis.txt and polyps.txt%s to %s\n", kSize[0], kSize[1],
+              kSize[2], options.dicom ? "DICOM slices" : "",
+              options.dicom && !options.volume.empty() ? " and " : "", options.volume.c_str(), "",
+              gaps.empty() ? "" : ", gaps.txt", out.string().c_str());
   return 0;
 }

@@ -24,11 +24,11 @@ template <typename Selected>
 std::vector<VoxelRun> selectedRuns(const std::array<int, 3>& size, const Selected& selected);
 
 struct ChosenPart {
-  BinaryVolume volume;        // the part in its box grown by `margin` (kept within the volume)
+  BinaryVolume volume;         // the part in its box grown by `margin` (kept within the volume)
   std::array<int, 3> first{};  // the box's first voxel in the whole volume
-  int64_t voxels = 0;         // of the part
-  int parts = 0;              // 26-connected parts of the selection
-  int64_t borderVoxels = 0;   // voxels of the parts that touch the border (left out when dropBorder)
+  int64_t voxels = 0;          // of the part
+  int parts = 0;               // 26-connected parts of the selection
+  int64_t borderVoxels = 0;    // voxels of the parts that touch the border (left out when dropBorder)
 };
 
 /// The largest 26-connected part of the runs (of those not touching the border when `dropBorder`), in

@@ -102,7 +102,8 @@ std::vector<float> distanceAtVoxels(const BinaryVolume& v, const std::vector<int
       if (column[size_t(i)]) transform(v.index(i, 0, k), nx, ny, v.spacing[1]);
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
-      if (pillar[size_t(i) + size_t(nx) * size_t(j)]) transform(v.index(i, j, 0), int64_t(nx) * ny, nz, v.spacing[2]);
+      if (pillar[size_t(i) + size_t(nx) * size_t(j)])
+        transform(v.index(i, j, 0), int64_t(nx) * ny, nz, v.spacing[2]);
   std::vector<float> distance;
   for (int64_t voxel : voxels) distance.push_back(float(std::sqrt(squared[size_t(voxel)])));
   return distance;
@@ -123,15 +124,18 @@ std::vector<double> distanceAtPoints(const BinaryVolume& volume, const std::vect
     double bound = 0;
     for (size_t s = begin; s < end; ++s) {
       const Eigen::Vector3d index = volume.continuousIndex(points[s]);
-      const int i0 = int(std::floor(index.x())), j0 = int(std::floor(index.y())), k0 = int(std::floor(index.z()));
+      const int i0 = int(std::floor(index.x())), j0 = int(std::floor(index.y())),
+                k0 = int(std::floor(index.z()));
       for (int dz = 0; dz <= 1; ++dz)
         for (int dy = 0; dy <= 1; ++dy)
           for (int dx = 0; dx <= 1; ++dx) {
             const int c[3] = {i0 + dx, j0 + dy, k0 + dz};
             if (!volume.contains(c[0], c[1], c[2])) continue;
             const int64_t voxel = volume.index(c[0], c[1], c[2]);
-            if (volume.inside[size_t(voxel)]) bound = std::max(bound, double(sixDirectionBorderDistance(volume, voxel)));
-            for (int a = 0; a < 3; ++a) lo[size_t(a)] = std::min(lo[size_t(a)], c[a]), hi[size_t(a)] = std::max(hi[size_t(a)], c[a]);
+            if (volume.inside[size_t(voxel)])
+              bound = std::max(bound, double(sixDirectionBorderDistance(volume, voxel)));
+            for (int a = 0; a < 3; ++a)
+              lo[size_t(a)] = std::min(lo[size_t(a)], c[a]), hi[size_t(a)] = std::max(hi[size_t(a)], c[a]);
           }
     }
     if (hi[0] < 0) {  // every point outside the volume
@@ -156,16 +160,19 @@ std::vector<double> distanceAtPoints(const BinaryVolume& volume, const std::vect
     std::vector<int64_t> corners;  // the box's voxels that the points' trilinear interpolation reads
     for (size_t s = begin; s < end; ++s) {
       const Eigen::Vector3d index = box.continuousIndex(points[s]);
-      const int i0 = int(std::floor(index.x())), j0 = int(std::floor(index.y())), k0 = int(std::floor(index.z()));
+      const int i0 = int(std::floor(index.x())), j0 = int(std::floor(index.y())),
+                k0 = int(std::floor(index.z()));
       for (int dz = 0; dz <= 1; ++dz)
         for (int dy = 0; dy <= 1; ++dy)
           for (int dx = 0; dx <= 1; ++dx)
-            if (box.contains(i0 + dx, j0 + dy, k0 + dz)) corners.push_back(box.index(i0 + dx, j0 + dy, k0 + dz));
+            if (box.contains(i0 + dx, j0 + dy, k0 + dz))
+              corners.push_back(box.index(i0 + dx, j0 + dy, k0 + dz));
     }
     const std::vector<float> values = distanceAtVoxels(box, corners);
     std::vector<float> distance(size_t(box.voxelCount()), 0.0f);
     for (size_t c = 0; c < corners.size(); ++c) distance[size_t(corners[c])] = values[c];
-    for (size_t s = begin; s < end; ++s) out.push_back(trilinear(box, distance, box.continuousIndex(points[s])));
+    for (size_t s = begin; s < end; ++s)
+      out.push_back(trilinear(box, distance, box.continuousIndex(points[s])));
   }
   return out;
 }
@@ -203,7 +210,8 @@ std::vector<float> distanceToOutside(const BinaryVolume& volume) {
   // buffer first, transformed there column by column (in cache), and copied back.
   const auto passZ = [&](int from, int to) {
     const int nx = volume.size[0], nz = volume.size[2];
-    std::vector<double> plane(static_cast<size_t>(nx) * static_cast<size_t>(nz)), line(static_cast<size_t>(nz)), out, z;
+    std::vector<double> plane(static_cast<size_t>(nx) * static_cast<size_t>(nz)),
+        line(static_cast<size_t>(nz)), out, z;
     std::vector<int> v;
     for (int y = from; y < to; ++y) {
       for (int k = 0; k < nz; ++k)

@@ -52,16 +52,36 @@ std::vector<VoxelRun> selectedRuns(const ScalarVolume& volume, const TskCenterli
   std::vector<VoxelRun> runs;
   using Type = ScalarVolume::Type;
   switch (volume.type) {
-    case Type::Int8: runs = runsOf(static_cast<const int8_t*>(volume.voxels), c, volume.size, p); break;
-    case Type::UInt8: runs = runsOf(static_cast<const uint8_t*>(volume.voxels), c, volume.size, p); break;
-    case Type::Int16: runs = runsOf(static_cast<const int16_t*>(volume.voxels), c, volume.size, p); break;
-    case Type::UInt16: runs = runsOf(static_cast<const uint16_t*>(volume.voxels), c, volume.size, p); break;
-    case Type::Int32: runs = runsOf(static_cast<const int32_t*>(volume.voxels), c, volume.size, p); break;
-    case Type::UInt32: runs = runsOf(static_cast<const uint32_t*>(volume.voxels), c, volume.size, p); break;
-    case Type::Int64: runs = runsOf(static_cast<const int64_t*>(volume.voxels), c, volume.size, p); break;
-    case Type::UInt64: runs = runsOf(static_cast<const uint64_t*>(volume.voxels), c, volume.size, p); break;
-    case Type::Float32: runs = runsOf(static_cast<const float*>(volume.voxels), c, volume.size, p); break;
-    case Type::Float64: runs = runsOf(static_cast<const double*>(volume.voxels), c, volume.size, p); break;
+    case Type::Int8:
+      runs = runsOf(static_cast<const int8_t*>(volume.voxels), c, volume.size, p);
+      break;
+    case Type::UInt8:
+      runs = runsOf(static_cast<const uint8_t*>(volume.voxels), c, volume.size, p);
+      break;
+    case Type::Int16:
+      runs = runsOf(static_cast<const int16_t*>(volume.voxels), c, volume.size, p);
+      break;
+    case Type::UInt16:
+      runs = runsOf(static_cast<const uint16_t*>(volume.voxels), c, volume.size, p);
+      break;
+    case Type::Int32:
+      runs = runsOf(static_cast<const int32_t*>(volume.voxels), c, volume.size, p);
+      break;
+    case Type::UInt32:
+      runs = runsOf(static_cast<const uint32_t*>(volume.voxels), c, volume.size, p);
+      break;
+    case Type::Int64:
+      runs = runsOf(static_cast<const int64_t*>(volume.voxels), c, volume.size, p);
+      break;
+    case Type::UInt64:
+      runs = runsOf(static_cast<const uint64_t*>(volume.voxels), c, volume.size, p);
+      break;
+    case Type::Float32:
+      runs = runsOf(static_cast<const float*>(volume.voxels), c, volume.size, p);
+      break;
+    case Type::Float64:
+      runs = runsOf(static_cast<const double*>(volume.voxels), c, volume.size, p);
+      break;
   }
   selected = 0;
   for (const VoxelRun& r : runs) selected += r.x1 - r.x0 + 1;

@@ -19,13 +19,16 @@ double maskAt(const BinaryVolume& volume, const Eigen::Matrix3d& toIndex, const 
   const int i = int(std::floor(c.x())), j = int(std::floor(c.y())), k = int(std::floor(c.z()));
   const double fx = c.x() - i, fy = c.y() - j, fz = c.z() - k;
   double value = 0;
-  if (i >= 0 && j >= 0 && k >= 0 && i + 1 < volume.size[0] && j + 1 < volume.size[1] && k + 1 < volume.size[2]) {
+  if (i >= 0 && j >= 0 && k >= 0 && i + 1 < volume.size[0] && j + 1 < volume.size[1] &&
+      k + 1 < volume.size[2]) {
     // All eight voxels in the volume (nearly always): offsets from the first, no bounds to check.
-    const int64_t at = volume.index(i, j, k), row = volume.size[0], slice = int64_t(volume.size[0]) * volume.size[1];
+    const int64_t at = volume.index(i, j, k), row = volume.size[0],
+                  slice = int64_t(volume.size[0]) * volume.size[1];
     const uint8_t* m = volume.inside.data() + at;
     const double x0 = 1 - fx, y0 = 1 - fy, z0 = 1 - fz;
     return z0 * (y0 * (x0 * m[0] + fx * m[1]) + fy * (x0 * m[row] + fx * m[row + 1])) +
-           fz * (y0 * (x0 * m[slice] + fx * m[slice + 1]) + fy * (x0 * m[slice + row] + fx * m[slice + row + 1]));
+           fz * (y0 * (x0 * m[slice] + fx * m[slice + 1]) +
+                 fy * (x0 * m[slice + row] + fx * m[slice + row + 1]));
   }
   for (int dk = 0; dk < 2; ++dk)
     for (int dj = 0; dj < 2; ++dj)

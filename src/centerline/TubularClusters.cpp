@@ -100,8 +100,8 @@ int64_t farEnd(const BinaryVolume& v, int64_t from, int& distance) {
   distance = 0;
   static const int steps[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   const bool offFaces = keepsOffFaces(v);
-  const int64_t offsets[6] = {1, -1, v.size[0], -int64_t(v.size[0]), int64_t(v.size[0]) * v.size[1],
-                              -int64_t(v.size[0]) * v.size[1]};
+  const int64_t offsets[6] = {
+      1, -1, v.size[0], -int64_t(v.size[0]), int64_t(v.size[0]) * v.size[1], -int64_t(v.size[0]) * v.size[1]};
   auto reach = [&](int64_t n) {
     if (v.inside[size_t(n)] && !seen[size_t(n)]) {
       seen[size_t(n)] = 1;
@@ -117,7 +117,8 @@ int64_t farEnd(const BinaryVolume& v, int64_t from, int& distance) {
       }
       const auto c = v.coordinates(at);
       for (const auto& s : steps)
-        if (v.contains(c[0] + s[0], c[1] + s[1], c[2] + s[2])) reach(v.index(c[0] + s[0], c[1] + s[1], c[2] + s[2]));
+        if (v.contains(c[0] + s[0], c[1] + s[1], c[2] + s[2]))
+          reach(v.index(c[0] + s[0], c[1] + s[1], c[2] + s[2]));
     }
     if (next.empty()) break;
     frontier.swap(next);
@@ -240,8 +241,8 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
   // (by voxel count) and their lists are joined in layer order.
   const auto assign = [&](int fromLayer, int toLayer, std::vector<Member>& out) {
     for (int l = fromLayer; l < toLayer; ++l) {
-      const int after =
-          int(std::lower_bound(r.primitiveLayer.begin(), r.primitiveLayer.end(), l) - r.primitiveLayer.begin());
+      const int after = int(std::lower_bound(r.primitiveLayer.begin(), r.primitiveLayer.end(), l) -
+                            r.primitiveLayer.begin());
       const int first = std::max(0, after - 2), lastCandidate = std::min(n - 1, after + 1);
       for (int64_t voxel : layers[size_t(l)]) {
         const Eigen::Vector3d p = v.physical(voxel);

@@ -30,12 +30,12 @@
 namespace medial {
 
 struct TubularClusters {
-  std::vector<int64_t> primitive;      // the chosen points P_0 ... P_n (voxel indices)
+  std::vector<int64_t> primitive;              // the chosen points P_0 ... P_n (voxel indices)
   std::vector<float> primitiveBorderDistance;  // of each chosen point (mm; step 2b, six directions)
-  std::vector<int> primitiveLayer;     // the layer of each chosen point
-  std::vector<int64_t> orderedVoxels;  // every reached voxel, in the total order of step 5
-  std::vector<int> orderedCluster;     // the cluster (vertex index) of each ordered voxel
-  int64_t unreachedVoxels = 0;         // structure voxels not 6-connected to P0
+  std::vector<int> primitiveLayer;             // the layer of each chosen point
+  std::vector<int64_t> orderedVoxels;          // every reached voxel, in the total order of step 5
+  std::vector<int> orderedCluster;             // the cluster (vertex index) of each ordered voxel
+  int64_t unreachedVoxels = 0;                 // structure voxels not 6-connected to P0
   std::string error;
   bool ok() const { return error.empty(); }
 };

@@ -231,7 +231,9 @@ double linkingNumber(const Polygon& a, const Polygon& b) {
     }
   };
   const Projected pa(a, across, up, view), pb(b, across, up, view);
-  auto cross2 = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+  auto cross2 = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
+    return u.x() * v.y() - u.y() * v.x();
+  };
   // Each segment of b's 2-D box, to skip the pairs that cannot cross.
   std::vector<Eigen::AlignedBox2d> boxes;
   for (size_t j = 0; j < b.size(); ++j) {
@@ -252,8 +254,8 @@ double linkingNumber(const Polygon& a, const Polygon& b) {
       const Eigen::Vector2d db = t - r;
       const double sideR = cross2(da, r - p), sideT = cross2(da, t - p);
       const double sideP = cross2(db, p - r), sideQ = cross2(db, q - r);
-      if (!((sideR > 0) != (sideT > 0) && (sideP > 0) != (sideQ > 0)) || sideR == 0 || sideT == 0 || sideP == 0 ||
-          sideQ == 0)
+      if (!((sideR > 0) != (sideT > 0) && (sideP > 0) != (sideQ > 0)) || sideR == 0 || sideT == 0 ||
+          sideP == 0 || sideQ == 0)
         continue;  // no crossing (or a touching one, which a generic view does not meet)
       const double s = sideP / (sideP - sideQ), u = sideR / (sideR - sideT);  // along a, along b
       const double depthA = pa.depth[i] + s * (pa.depth[(i + 1) % a.size()] - pa.depth[i]);

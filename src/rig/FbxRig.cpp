@@ -21,7 +21,8 @@ std::vector<double> matrixArray(const Eigen::Matrix4d& m) {  // FBX stores matri
 // R = Rz * Ry * Rx, in degrees.
 void addLocalTransform(Node& properties, const Eigen::Matrix4d& local) {
   const Eigen::Vector3d t = local.topRightCorner<3, 1>();
-  const Eigen::Vector3d zyx = Eigen::Matrix3d(local.topLeftCorner<3, 3>()).eulerAngles(2, 1, 0) * (180.0 / M_PI);
+  const Eigen::Vector3d zyx =
+      Eigen::Matrix3d(local.topLeftCorner<3, 3>()).eulerAngles(2, 1, 0) * (180.0 / M_PI);
   properties.addProperty70("Lcl Translation", "Lcl Translation", "", "A", {t.x(), t.y(), t.z()});
   properties.addProperty70("Lcl Rotation", "Lcl Rotation", "", "A", {zyx[2], zyx[1], zyx[0]});
   properties.addProperty70("Lcl Scaling", "Lcl Scaling", "", "A", {1.0, 1.0, 1.0});
@@ -32,8 +33,8 @@ Node headerExtension() {
   header.add("FBXHeaderVersion", {int32_t(1003)});
   header.add("FBXVersion", {int32_t(7400)});
   Node& stamp = header.add("CreationTimeStamp");
-  const std::pair<const char*, int32_t> fields[] = {{"Version", 1000}, {"Year", 1970},  {"Month", 1},
-                                                    {"Day", 1},        {"Hour", 10},    {"Minute", 0},
+  const std::pair<const char*, int32_t> fields[] = {{"Version", 1000}, {"Year", 1970},    {"Month", 1},
+                                                    {"Day", 1},        {"Hour", 10},      {"Minute", 0},
                                                     {"Second", 0},     {"Millisecond", 0}};
   for (const auto& [name, value] : fields) stamp.add(name, {value});
   header.add("Creator", {std::string("Medial")});
@@ -44,9 +45,9 @@ Node globalSettings() {
   Node settings{"GlobalSettings", {}, {}};
   settings.add("Version", {int32_t(1000)});
   Node& p = settings.add("Properties70");
-  const std::pair<const char*, int32_t> axes[] = {{"UpAxis", 1},    {"UpAxisSign", 1},         {"FrontAxis", 2},
-                                                  {"FrontAxisSign", 1}, {"CoordAxis", 0},      {"CoordAxisSign", 1},
-                                                  {"OriginalUpAxis", 1}, {"OriginalUpAxisSign", 1}};
+  const std::pair<const char*, int32_t> axes[] = {
+      {"UpAxis", 1},    {"UpAxisSign", 1},    {"FrontAxis", 2},      {"FrontAxisSign", 1},
+      {"CoordAxis", 0}, {"CoordAxisSign", 1}, {"OriginalUpAxis", 1}, {"OriginalUpAxisSign", 1}};
   for (const auto& [name, value] : axes) p.addProperty70(name, "int", "Integer", "", {value});
   p.addProperty70("UnitScaleFactor", "double", "Number", "", {100.0});
   p.addProperty70("OriginalUnitScaleFactor", "double", "Number", "", {100.0});
@@ -56,13 +57,14 @@ Node globalSettings() {
 Node definitions(int models, int attributes, int deformers) {
   Node d{"Definitions", {}, {}};
   d.add("Version", {int32_t(100)});
-  const std::pair<const char*, int> types[] = {{"GlobalSettings", 1}, {"Model", models},       {"Geometry", 1},
-                                               {"NodeAttribute", attributes}, {"Deformer", deformers},
-                                               {"Pose", 1}};
+  const std::pair<const char*, int> types[] = {{"GlobalSettings", 1},   {"Model", models},
+                                               {"Geometry", 1},         {"NodeAttribute", attributes},
+                                               {"Deformer", deformers}, {"Pose", 1}};
   int total = 0;
   for (const auto& [name, count] : types) total += count;
   d.add("Count", {int32_t(total)});
-  for (const auto& [name, count] : types) d.add("ObjectType", {std::string(name)}).add("Count", {int32_t(count)});
+  for (const auto& [name, count] : types)
+    d.add("ObjectType", {std::string(name)}).add("Count", {int32_t(count)});
   return d;
 }
 
@@ -82,11 +84,14 @@ std::string fbxRigFile(const Rig& rig, const std::vector<RigBone>& bones,
                        const std::string& meshName) {
   int64_t nextId = 1000000;
   Node objects{"Objects", {}, {}}, connections{"Connections", {}, {}};
-  auto connect = [&](int64_t child, int64_t parent) { connections.add("C", {std::string("OO"), child, parent}); };
+  auto connect = [&](int64_t child, int64_t parent) {
+    connections.add("C", {std::string("OO"), child, parent});
+  };
 
   // The mesh: a Geometry (triangles; FBX marks a polygon's last corner as -(index + 1)) under a Model.
   const int64_t geometryId = nextId++, meshId = nextId++;
-  Node& geometry = objects.add("Geometry", {geometryId, objectName(meshName, "Geometry"), std::string("Mesh")});
+  Node& geometry =
+      objects.add("Geometry", {geometryId, objectName(meshName, "Geometry"), std::string("Mesh")});
   std::vector<double> vertices(rig.mesh.vertices.data(), rig.mesh.vertices.data() + rig.mesh.vertices.size());
   std::vector<int32_t> corners;
   for (Eigen::Index f = 0; f < rig.mesh.faces.rows(); ++f)
@@ -101,7 +106,8 @@ std::string fbxRigFile(const Rig& rig, const std::vector<RigBone>& bones,
   // The armature: a Null holding the joints, then one LimbNode per joint (the root joint first).
   const int64_t armatureId = nextId++, armatureAttribute = nextId++;
   objects.children.push_back(model(armatureId, "Armature", "Null", Eigen::Matrix4d::Identity()));
-  objects.add("NodeAttribute", {armatureAttribute, objectName("Armature", "NodeAttribute"), std::string("Null")})
+  objects
+      .add("NodeAttribute", {armatureAttribute, objectName("Armature", "NodeAttribute"), std::string("Null")})
       .add("TypeFlags", {std::string("Null")});
   connect(armatureId, 0);
   connect(armatureAttribute, armatureId);
@@ -109,7 +115,8 @@ std::string fbxRigFile(const Rig& rig, const std::vector<RigBone>& bones,
   for (const RigBone& bone : bones) {
     const int64_t id = nextId++, attribute = nextId++;
     boneIds.push_back(id);
-    const Eigen::Matrix4d parent = bone.parent < 0 ? Eigen::Matrix4d::Identity() : bones[size_t(bone.parent)].global;
+    const Eigen::Matrix4d parent =
+        bone.parent < 0 ? Eigen::Matrix4d::Identity() : bones[size_t(bone.parent)].global;
     objects.children.push_back(model(id, bone.name, "LimbNode", parent.inverse() * bone.global));
     objects.add("NodeAttribute", {attribute, objectName(bone.name, "NodeAttribute"), std::string("LimbNode")})
         .add("TypeFlags", {std::string("Skeleton")});
@@ -128,8 +135,8 @@ std::string fbxRigFile(const Rig& rig, const std::vector<RigBone>& bones,
   for (size_t b = 0; b < bones.size(); ++b) {
     if (bones[b].edge < 0 || influences[size_t(bones[b].edge)].empty()) continue;
     const int64_t clusterId = nextId++;
-    Node& cluster =
-        objects.add("Deformer", {clusterId, objectName(bones[b].name, "SubDeformer"), std::string("Cluster")});
+    Node& cluster = objects.add(
+        "Deformer", {clusterId, objectName(bones[b].name, "SubDeformer"), std::string("Cluster")});
     cluster.add("Version", {int32_t(100)});
     cluster.add("UserData", {std::string(), std::string()});
     std::vector<int32_t> indexes;
@@ -163,7 +170,10 @@ std::string fbxRigFile(const Rig& rig, const std::vector<RigBone>& bones,
 
   std::vector<Node> file;
   file.push_back(headerExtension());
-  file.push_back(Node{"FileId", {fbx::Raw{std::string("\x28\xb3\x2a\xeb\xb6\x24\xcc\xc2\xbf\xc8\xb0\x2a\xa9\x2b\xfc\xf1", 16)}}, {}});
+  file.push_back(
+      Node{"FileId",
+           {fbx::Raw{std::string("\x28\xb3\x2a\xeb\xb6\x24\xcc\xc2\xbf\xc8\xb0\x2a\xa9\x2b\xfc\xf1", 16)}},
+           {}});
   file.push_back(Node{"CreationTime", {std::string("1970-01-01 10:00:00:000")}, {}});
   file.push_back(Node{"Creator", {std::string("Medial")}, {}});
   file.push_back(globalSettings());

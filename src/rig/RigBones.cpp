@@ -88,7 +88,8 @@ std::vector<std::vector<std::pair<int, double>>> keptInfluences(const Rig& rig, 
     for (size_t k = 0; k < keep; ++k) sum += rig.weights(v, order[k]);
     if (!(sum > 0)) continue;
     for (size_t k = 0; k < keep; ++k)
-      if (rig.weights(v, order[k]) > 0) perEdge[size_t(order[k])].push_back({int(v), rig.weights(v, order[k]) / sum});
+      if (rig.weights(v, order[k]) > 0)
+        perEdge[size_t(order[k])].push_back({int(v), rig.weights(v, order[k]) / sum});
   }
   return perEdge;
 }

@@ -26,9 +26,9 @@ namespace medial {
 
 struct RigBone {
   std::string name;
-  int edge = -1;        // the skeleton edge, -1 for the root joint
-  int head = -1, tail = -1;  // skeleton nodes (the root joint: its node twice)
-  int parent = -1;      // index in the bone list, -1 for the root joint
+  int edge = -1;                                         // the skeleton edge, -1 for the root joint
+  int head = -1, tail = -1;                              // skeleton nodes (the root joint: its node twice)
+  int parent = -1;                                       // index in the bone list, -1 for the root joint
   Eigen::Matrix4d global = Eigen::Matrix4d::Identity();  // rest pose, mesh space
 };
 

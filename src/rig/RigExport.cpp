@@ -108,7 +108,8 @@ aiMesh* buildMesh(const Rig& rig, const std::vector<RigBone>& bones, const RigEx
 // Binary FBX, written by Medial (rig/FbxRig.h): Assimp's FBX exporter writes files Blender refuses.
 std::string writeFbx(const Rig& rig, const std::vector<RigBone>& bones, const std::string& path,
                      const RigExportOptions& options) {
-  const std::string bytes = fbxRigFile(rig, bones, keptInfluences(rig, options.maxInfluences), options.meshName);
+  const std::string bytes =
+      fbxRigFile(rig, bones, keptInfluences(rig, options.maxInfluences), options.meshName);
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   if (!file || !file.write(bytes.data(), std::streamsize(bytes.size())) || !file.flush())
     return "cannot write the rig to " + path + ": " + std::strerror(errno);
@@ -157,7 +158,8 @@ std::string exportRig(const Rig& rig, const std::string& path, const std::string
   std::vector<std::vector<aiNode*>> children(bones.size());
   for (size_t b = 0; b < bones.size(); ++b) {
     const RigBone& bone = bones[b];
-    const Transform parentGlobal = bone.parent < 0 ? Transform::Identity() : bones[size_t(bone.parent)].global;
+    const Transform parentGlobal =
+        bone.parent < 0 ? Transform::Identity() : bones[size_t(bone.parent)].global;
     aiNode* parent = bone.parent < 0 ? armature : boneNodes[size_t(bone.parent)];
     boneNodes[b] = newNode(bone.name, parentGlobal.inverse() * bone.global, parent);
     if (bone.parent >= 0) children[size_t(bone.parent)].push_back(boneNodes[b]);

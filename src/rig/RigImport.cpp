@@ -67,7 +67,8 @@ ImportedRig importRig(const std::string& path) {
       strongest.resize(vertices.size(), {std::string(), 0.0});
       for (unsigned f = 0; f < mesh->mNumFaces; ++f)
         if (mesh->mFaces[f].mNumIndices == 3)
-          faces.emplace_back(first + int(mesh->mFaces[f].mIndices[0]), first + int(mesh->mFaces[f].mIndices[1]),
+          faces.emplace_back(first + int(mesh->mFaces[f].mIndices[0]),
+                             first + int(mesh->mFaces[f].mIndices[1]),
                              first + int(mesh->mFaces[f].mIndices[2]));
       for (unsigned b = 0; b < mesh->mNumBones; ++b) {
         const aiBone* bone = mesh->mBones[b];
@@ -86,7 +87,8 @@ ImportedRig importRig(const std::string& path) {
     return rig;
   }
   rig.mesh.vertices.resize(Eigen::Index(vertices.size()), 3);
-  for (size_t v = 0; v < vertices.size(); ++v) rig.mesh.vertices.row(Eigen::Index(v)) = vertices[v].transpose();
+  for (size_t v = 0; v < vertices.size(); ++v)
+    rig.mesh.vertices.row(Eigen::Index(v)) = vertices[v].transpose();
   rig.mesh.faces.resize(Eigen::Index(faces.size()), 3);
   for (size_t f = 0; f < faces.size(); ++f) rig.mesh.faces.row(Eigen::Index(f)) = faces[f].transpose();
 
@@ -110,14 +112,16 @@ ImportedRig importRig(const std::string& path) {
   // Nodes: joint positions, the same place once.
   Skeleton& s = rig.skeleton;
   std::vector<int> nodeOf(joints.size());
-  const double size = (rig.mesh.vertices.colwise().maxCoeff() - rig.mesh.vertices.colwise().minCoeff()).norm();
+  const double size =
+      (rig.mesh.vertices.colwise().maxCoeff() - rig.mesh.vertices.colwise().minCoeff()).norm();
   auto nodeAt = [&](const Eigen::Vector3d& p) {
     for (int n = 0; n < s.nodeCount(); ++n)
       if ((s.nodes[size_t(n)] - p).norm() <= 1e-6 * size) return n;
     s.nodes.push_back(p);
     return s.nodeCount() - 1;
   };
-  for (size_t j = 0; j < joints.size(); ++j) nodeOf[j] = nodeAt(walk.global[joints[j]].topRightCorner<3, 1>());
+  for (size_t j = 0; j < joints.size(); ++j)
+    nodeOf[j] = nodeAt(walk.global[joints[j]].topRightCorner<3, 1>());
   std::set<std::pair<int, int>> edges;
   std::vector<bool> hasChild(joints.size(), false);
   std::vector<std::pair<int, int>> segmentOf(joints.size(), {-1, -1});  // joint -> (head node, tail node)
@@ -149,8 +153,9 @@ ImportedRig importRig(const std::string& path) {
     segmentOf[j] = {nodeOf[j], tail};
   }
   for (const auto& [a, b] : edges) s.edges.push_back({a, b});
-  const auto root = std::find_if(joints.begin(), joints.end(),
-                                 [&](const aiNode* j) { return !j->mParent || !jointIndex.count(j->mParent); });
+  const auto root = std::find_if(joints.begin(), joints.end(), [&](const aiNode* j) {
+    return !j->mParent || !jointIndex.count(j->mParent);
+  });
   s.root = nodeOf[size_t(root - joints.begin())];
 
   // Radii from the weights' spread.
@@ -160,7 +165,8 @@ ImportedRig importRig(const std::string& path) {
     const auto [head, tail] = segmentOf[j];
     if (head < 0) continue;
     for (int v : verticesOf[joints[j]->mName.C_Str()])
-      distances[size_t(head)].push_back(distanceToSegment(vertices[size_t(v)], s.nodes[size_t(head)], s.nodes[size_t(tail)]));
+      distances[size_t(head)].push_back(
+          distanceToSegment(vertices[size_t(v)], s.nodes[size_t(head)], s.nodes[size_t(tail)]));
   }
   s.radii.assign(s.nodes.size(), 0.0);
   for (size_t n = 0; n < s.nodes.size(); ++n)

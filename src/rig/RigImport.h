@@ -17,10 +17,10 @@
 namespace medial {
 
 struct ImportedRig {
-  TriangleMesh mesh;   // every mesh of the file, in scene space, merged
-  Skeleton skeleton;   // empty when the file has no joints
-  int joints = 0;      // joints in the file
-  std::string error;   // empty on success
+  TriangleMesh mesh;  // every mesh of the file, in scene space, merged
+  Skeleton skeleton;  // empty when the file has no joints
+  int joints = 0;     // joints in the file
+  std::string error;  // empty on success
 };
 
 ImportedRig importRig(const std::string& path);

@@ -3,6 +3,7 @@
 #include "RunCommand.h"
 #include "TestPaths.h"
 #include "common/Stopwatch.h"
+#include "centerline/StructureRuns.h"
 #include "common/UnionFind.h"
 
 #include <vtkCell.h>
@@ -607,7 +608,8 @@ TEST(Cli, DicomFolderWithAnotherSeriesAndATruncatedSlice) {
   ASSERT_EQ(std::system((phantom + dir + "/second > /dev/null").c_str()), 0);  // new UIDs: another series
   for (const char* slice : {"slice001.dcm", "slice002.dcm", "slice003.dcm"})
     std::filesystem::copy_file(dir + "/second/" + slice, dir + "/first/other-" + slice);
-  const std::string command = "centerline " + dir + "/first -o " + dir + "/c.vtp --threshold -1024:-600 --quiet";
+  const std::string command =
+      "centerline " + dir + "/first -o " + dir + "/c.vtp --threshold -1024:-600 --quiet";
   const auto mixed = runCommand(medialCommand(command));
   EXPECT_EQ(mixed.exitCode, 0) << mixed.err;
   std::filesystem::resize_file(dir + "/first/slice100.dcm", 3000);
@@ -634,18 +636,22 @@ TEST(Cli, HostileInputsGiveOneLineWithTheRightReason) {
     std::string args, reason;
   };
   const std::vector<Case> cases = {
-      {"skeleton " + write("nan.off", "OFF\n4 4 0\n0 0 nan\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"),
+      {"skeleton " +
+           write("nan.off", "OFF\n4 4 0\n0 0 nan\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"),
        "nan.off:3: the number nan is not finite"},
-      {"skeleton " + write("huge.off", "OFF\n4 4 0\n0 0 1e300\n" + tetrahedron.substr(6)), "the number 1e300"},
+      {"skeleton " + write("huge.off", "OFF\n4 4 0\n0 0 1e300\n" + tetrahedron.substr(6)),
+       "the number 1e300"},
       {"skeleton " + write("truncated.off", "OFF\n10000000 1 0\n0 0 0\n3 0 1 2\n"), "the file ends early"},
       {"skeleton " + write("bad-face.off", "OFF\n4 1 0\n" + tetrahedron.substr(0, 24) + "1000000000 0 1 2\n"),
        "face 0 does not list the 1000000000 corners"},
-      {"sqm " + write("cycle.swc", "1 1 0 0 0 1 3\n2 3 1 0 0 1 1\n3 3 2 0 0 1 2\n"), "a cycle; SWC describes trees"},
+      {"sqm " + write("cycle.swc", "1 1 0 0 0 1 3\n2 3 1 0 0 1 1\n3 3 2 0 0 1 2\n"),
+       "a cycle; SWC describes trees"},
       {"sqm " + write("zero-radius.swc", "1 1 0 0 0 0 -1\n2 3 1 0 0 1 1\n"), "radius 0"},
       {"sketch " + write("same.txt", sameStroke), "the strokes have no extent"},
-      {"centerline " + write("claims-4gb.mha",
-                             "ObjectType = Image\nNDims = 3\nElementType = MET_UCHAR\nDimSize = 2000 2000 1000\n"
-                             "ElementDataFile = LOCAL\nxxxx"),
+      {"centerline " +
+           write("claims-4gb.mha",
+                 "ObjectType = Image\nNDims = 3\nElementType = MET_UCHAR\nDimSize = 2000 2000 1000\n"
+                 "ElementDataFile = LOCAL\nxxxx"),
        "the header claims 4.0 GB of voxels"},
   };
   for (const Case& c : cases) {
@@ -659,14 +665,72 @@ TEST(Cli, HostileInputsGiveOneLineWithTheRightReason) {
   }
   // Outputs where none can be written.
   for (const std::string& output : {std::string("/proc/medial-out.vtp"), dir + "/no-such-folder/out.vtp"}) {
-    const auto r = runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + output + " --quiet"));
+    const auto r =
+        runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + output + " --quiet"));
     EXPECT_EQ(r.exitCode, 1) << output;
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_NE(r.err.find(output + ": cannot create the file"), std::string::npos) << r.err;
   }
   // A face that repeats a vertex is degenerate, not an error: the skeleton comes out.
-  const auto repeated = runCommand(medialCommand(
-      "skeleton " + write("repeated.off", "OFF\n4 4 0\n" + tetrahedron.substr(0, 24) + "3 0 0 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n") +
-      " -o " + dir + "/repeated.vtp --quiet"));
+  const auto repeated =
+      runCommand(medialCommand("skeleton " +
+                               write("repeated.off", "OFF\n4 4 0\n" + tetrahedron.substr(0, 24) +
+                                                         "3 0 0 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n") +
+                               " -o " + dir + "/repeated.vtp --quiet"));
   EXPECT_EQ(repeated.exitCode, 0) << repeated.err;
+}
+
+// The colon phantom's options: --collapse N leaves N stretches without air (N + 1 parts of colon air,
+// their arc lengths in gaps.txt), --size scales the body and the colon, usage errors exit 2.
+TEST(Cli, ColonPhantomCollapsedSegmentsAndSize) {
+  const std::string dir = scratchDir("cli-phantom-options");
+  const std::string phantom = binaryDir() + "/bin/medial-make-colon-phantom ";
+  ASSERT_EQ(std::system((phantom + dir + "/collapsed " + dir +
+                         "/collapsed.mha --collapse 2 --gap 12 --no-dicom"
+                         " > /dev/null")
+                            .c_str()),
+            0);
+  std::ifstream gaps(dir + "/collapsed/gaps.txt");
+  std::string line;
+  std::vector<std::pair<double, double>> stretches;
+  while (std::getline(gaps, line))
+    if (!line.empty() && line[0] != '#') {
+      std::istringstream values(line);
+      double start = 0, end = 0;
+      values >> start >> end;
+      stretches.push_back({start, end});
+    }
+  ASSERT_EQ(stretches.size(), 2u);
+  for (const auto& [start, end] : stretches) EXPECT_NEAR(end - start, 12.0, 1e-9);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/collapsed/slice001.dcm")) << "--no-dicom writes no series";
+
+  // The air inside the body (threshold, border air dropped) falls into three parts.
+  auto readMha = [](const std::string& path, std::array<int, 3>& size) {  // uncompressed int16 MetaImage
+    std::ifstream file(path, std::ios::binary);
+    std::string header;
+    while (std::getline(file, header) && header.rfind("ElementDataFile", 0) != 0)
+      if (header.rfind("DimSize", 0) == 0)
+        std::istringstream(header.substr(header.find('=') + 1)) >> size[0] >> size[1] >> size[2];
+    std::vector<int16_t> voxels(size_t(size[0]) * size_t(size[1]) * size_t(size[2]));
+    file.read(reinterpret_cast<char*>(voxels.data()), std::streamsize(voxels.size() * sizeof(int16_t)));
+    return voxels;
+  };
+  std::array<int, 3> size{};
+  const std::vector<int16_t> hu = readMha(dir + "/collapsed.mha", size);
+  EXPECT_EQ(size, (std::array<int, 3>{206, 165, 187}));
+  const auto runs = medial::selectedRuns(size, [&](int64_t i) { return hu[size_t(i)] <= -600; });
+  medial::BinaryVolume frame;
+  frame.size = size;
+  EXPECT_EQ(medial::largestPart(frame, runs, true).parts - 1, 3)
+      << "the air around the body, and the colon in three";
+
+  ASSERT_EQ(
+      std::system(
+          (phantom + dir + "/big " + dir + "/big.mha --size 300x280x250 --no-dicom > /dev/null").c_str()),
+      0);
+  readMha(dir + "/big.mha", size);
+  EXPECT_EQ(size, (std::array<int, 3>{300, 280, 250}));
+  EXPECT_EQ(runCommand(phantom + "--help").exitCode, 0);
+  EXPECT_EQ(runCommand(phantom + dir + "/x --size 10").exitCode, 2);
+  EXPECT_EQ(runCommand(phantom + dir + "/x --frobnicate").exitCode, 2);
 }

@@ -446,9 +446,11 @@ TEST_F(GuiWorkflow, CancelALongRunAndRecover) {
 TEST_F(GuiWorkflow, CorruptFilesGiveAnErrorAndTheSessionGoesOn) {
   std::ofstream(dir + "/truncated.off") << "OFF\n10000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   std::ofstream(dir + "/claims-4gb.mha") << "ObjectType = Image\nNDims = 3\nElementType = MET_UCHAR\n"
-                                          << "DimSize = 2000 2000 1000\nElementDataFile = LOCAL\nxxxx";
-  for (const char* name : {"corrupt.vtp", "corrupt.nii.gz", "corrupt.txt", "truncated.off", "claims-4gb.mha"}) {
-    if (!std::filesystem::exists(dir + "/" + name)) std::ofstream(dir + "/" + name) << "this is not a " << name << " file\n";
+                                         << "DimSize = 2000 2000 1000\nElementDataFile = LOCAL\nxxxx";
+  for (const char* name :
+       {"corrupt.vtp", "corrupt.nii.gz", "corrupt.txt", "truncated.off", "claims-4gb.mha"}) {
+    if (!std::filesystem::exists(dir + "/" + name))
+      std::ofstream(dir + "/" + name) << "this is not a " << name << " file\n";
     errors.clear();
     EXPECT_FALSE(window->openFile(QString::fromStdString(dir + "/" + name)));
     ASSERT_EQ(errors.size(), 1) << name;
@@ -770,9 +772,8 @@ TEST_F(GuiWorkflow, FullSizeCtScrollsAndRunsTheCenterlineWithoutFreezing) {
   sinceTick.start();
   qint64 longestGapMs = 0;
   QTimer ticker;
-  QObject::connect(&ticker, &QTimer::timeout, [&] {
-    longestGapMs = std::max(longestGapMs, sinceTick.restart());
-  });
+  QObject::connect(&ticker, &QTimer::timeout,
+                   [&] { longestGapMs = std::max(longestGapMs, sinceTick.restart()); });
   ticker.start(20);
   clock.restart();
   ASSERT_TRUE(runThroughUi(panel)) << errors.join("\n").toStdString();
@@ -782,7 +783,8 @@ TEST_F(GuiWorkflow, FullSizeCtScrollsAndRunsTheCenterlineWithoutFreezing) {
   SceneObject* line = object("full-ct.mha centerline");
   ASSERT_NE(line, nullptr);
   EXPECT_GT(line->polyData()->GetNumberOfPoints(), 1000) << "a colon about 1 m long at 0.7 mm";
-  std::printf("full-size CT: opened in %.2f s, slice step %.1f ms (median of 40), centerline with sections "
-              "%.2f s, longest event-loop gap %lld ms\n",
-              openSeconds, frameMs, centerlineSeconds, static_cast<long long>(longestGapMs));
+  std::printf(
+      "full-size CT: opened in %.2f s, slice step %.1f ms (median of 40), centerline with sections "
+      "%.2f s, longest event-loop gap %lld ms\n",
+      openSeconds, frameMs, centerlineSeconds, static_cast<long long>(longestGapMs));
 }

@@ -86,7 +86,8 @@ double gaussLinkingIntegral(const Polygon& a, const Polygon& b) {
 Polygon randomLoop(std::mt19937& random, const Eigen::Vector3d& centre, int steps) {
   std::normal_distribution<double> step(0.0, 1.0);
   Polygon p{centre};
-  for (int k = 1; k < steps; ++k) p.push_back(p.back() + Eigen::Vector3d(step(random), step(random), step(random)));
+  for (int k = 1; k < steps; ++k)
+    p.push_back(p.back() + Eigen::Vector3d(step(random), step(random), step(random)));
   return p;
 }
 

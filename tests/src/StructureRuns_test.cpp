@@ -26,7 +26,7 @@ std::vector<medial::VoxelRun> runsOf(const medial::BinaryVolume& v) {
 TEST(StructureRuns, BorderPartsDiagonalNeighboursAndTheBox) {
   medial::BinaryVolume v = emptyVolume(10, 10, 10);
   for (int x = 0; x < 3; ++x) v.inside[size_t(v.index(x, 5, 5))] = 1;  // touches the border (x = 0)
-  v.inside[size_t(v.index(4, 4, 4))] = 1;                                // two voxels joined by a corner
+  v.inside[size_t(v.index(4, 4, 4))] = 1;                              // two voxels joined by a corner
   v.inside[size_t(v.index(5, 5, 5))] = 1;
   v.inside[size_t(v.index(8, 8, 2))] = 1;  // alone
   const auto runs = runsOf(v);
