@@ -11,7 +11,6 @@ import argparse
 import os
 import resource
 import shutil
-import statistics
 import subprocess
 import tempfile
 import time
@@ -21,20 +20,12 @@ import vtk
 from vtk.util import numpy_support
 
 import medial
+from tsk_bench import timed  # median seconds of `repeat` runs, and the last result
 
 TOP = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 PHANTOM = os.path.join(TOP, "build", "bin", "medial-make-colon-phantom")
 MEDIAL = os.path.join(TOP, "build", "bin", "medial")
 SIZES = ["256x256x500", "512x512x400", "512x512x800"]
-
-
-def median_time(repeat, run):
-    times, result = [], None
-    for _ in range(repeat):
-        start = time.perf_counter()
-        result = run()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times), result
 
 
 def raw_read(path):
@@ -95,16 +86,16 @@ def main():
             dicom = args.dicom and size == "512x512x400"  # a 400-slice series, read as a folder
             subprocess.run([PHANTOM, folder, volume, "--size", size] + ([] if dicom else ["--no-dicom"]),
                            check=True, stdout=subprocess.DEVNULL)
-            raw_seconds, raw = median_time(args.repeat, lambda: raw_read(volume))
-            read_seconds, image = median_time(args.repeat, lambda: medial_read(volume))
+            raw_seconds, raw = timed(args.repeat, lambda: raw_read(volume))
+            read_seconds, image = timed(args.repeat, lambda: medial_read(volume))
             if dicom:
-                dicom_seconds, _ = median_time(args.repeat, lambda: medial_read(folder))
+                dicom_seconds, _ = timed(args.repeat, lambda: medial_read(folder))
                 print("DICOM series of %s (%d files): read in %.2f s, %.1fx the raw read of the MetaImage" % (
                     size, len([n for n in os.listdir(folder) if n.endswith(".dcm")]), dicom_seconds,
                     dicom_seconds / raw_seconds))
             voxels = raw.size
-            threshold_seconds, _ = median_time(5, lambda: int(((raw >= -1024) & (raw <= -600)).sum()))
-            line_seconds, (points, f) = median_time(args.repeat, lambda: centerline(image))
+            threshold_seconds, _ = timed(5, lambda: int(((raw >= -1024) & (raw <= -600)).sum()))
+            line_seconds, (points, f) = timed(args.repeat, lambda: centerline(image))
             stages = {s: f.GetStageSeconds(s) for s in ("selection", "cleanup", "axis")}
             peak = subprocess.run(["/usr/bin/time", "-f", "%M", MEDIAL, "centerline", volume, "-o",
                                    os.path.join(work, "line.vtp"), "--threshold", "-1024:-600", "--quiet"],

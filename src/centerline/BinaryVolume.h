@@ -40,6 +40,9 @@ struct BinaryVolume {
   }
 };
 
+// Whole-volume clean-up. tskCenterline does the same from runs (StructureRuns.h), without full-volume
+// arrays; these stay as the reference its test compares against, and for callers holding a mask already.
+
 // Keeps the largest 26-connected component of the structure; returns how many components there were.
 int keepLargestComponent(BinaryVolume& volume);
 

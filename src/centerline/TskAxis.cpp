@@ -52,20 +52,22 @@ void distanceTransform1d(std::vector<double>& f, double h, std::vector<double>& 
   }
 }
 
-double trilinear(const BinaryVolume& v, const std::vector<float>& field, const Eigen::Vector3d& index) {
+// The voxels around a continuous index that lie in the volume, with their trilinear weights.
+struct Corner {
+  int64_t voxel;
+  double weight;
+};
+std::vector<Corner> trilinearCorners(const BinaryVolume& v, const Eigen::Vector3d& index) {
   const int i0 = int(std::floor(index.x())), j0 = int(std::floor(index.y())), k0 = int(std::floor(index.z()));
   const double fx = index.x() - i0, fy = index.y() - j0, fz = index.z() - k0;
-  double sum = 0, weights = 0;
+  std::vector<Corner> corners;
   for (int dz = 0; dz <= 1; ++dz)
     for (int dy = 0; dy <= 1; ++dy)
-      for (int dx = 0; dx <= 1; ++dx) {
-        const int i = i0 + dx, j = j0 + dy, k = k0 + dz;
-        if (!v.contains(i, j, k)) continue;
-        const double w = (dx ? fx : 1 - fx) * (dy ? fy : 1 - fy) * (dz ? fz : 1 - fz);
-        sum += w * field[size_t(v.index(i, j, k))];
-        weights += w;
-      }
-  return weights > 0 ? sum / weights : 0;
+      for (int dx = 0; dx <= 1; ++dx)
+        if (v.contains(i0 + dx, j0 + dy, k0 + dz))
+          corners.push_back({v.index(i0 + dx, j0 + dy, k0 + dz),
+                             (dx ? fx : 1 - fx) * (dy ? fy : 1 - fy) * (dz ? fz : 1 - fz)});
+  return corners;
 }
 
 // distanceToOutside at the given voxels only: the transform along x runs on every line, along y only on
@@ -122,22 +124,13 @@ std::vector<double> distanceAtPoints(const BinaryVolume& volume, const std::vect
     const size_t end = std::min(points.size(), begin + kRun);
     std::array<int, 3> lo{INT32_MAX, INT32_MAX, INT32_MAX}, hi{-1, -1, -1};
     double bound = 0;
-    for (size_t s = begin; s < end; ++s) {
-      const Eigen::Vector3d index = volume.continuousIndex(points[s]);
-      const int i0 = int(std::floor(index.x())), j0 = int(std::floor(index.y())),
-                k0 = int(std::floor(index.z()));
-      for (int dz = 0; dz <= 1; ++dz)
-        for (int dy = 0; dy <= 1; ++dy)
-          for (int dx = 0; dx <= 1; ++dx) {
-            const int c[3] = {i0 + dx, j0 + dy, k0 + dz};
-            if (!volume.contains(c[0], c[1], c[2])) continue;
-            const int64_t voxel = volume.index(c[0], c[1], c[2]);
-            if (volume.inside[size_t(voxel)])
-              bound = std::max(bound, double(sixDirectionBorderDistance(volume, voxel)));
-            for (int a = 0; a < 3; ++a)
-              lo[size_t(a)] = std::min(lo[size_t(a)], c[a]), hi[size_t(a)] = std::max(hi[size_t(a)], c[a]);
-          }
-    }
+    for (size_t s = begin; s < end; ++s)
+      for (const Corner& corner : trilinearCorners(volume, volume.continuousIndex(points[s]))) {
+        if (volume.inside[size_t(corner.voxel)])
+          bound = std::max(bound, double(sixDirectionBorderDistance(volume, corner.voxel)));
+        const auto c = volume.coordinates(corner.voxel);
+        for (size_t a = 0; a < 3; ++a) lo[a] = std::min(lo[a], c[a]), hi[a] = std::max(hi[a], c[a]);
+      }
     if (hi[0] < 0) {  // every point outside the volume
       out.insert(out.end(), end - begin, 0.0);
       continue;
@@ -157,22 +150,23 @@ std::vector<double> distanceAtPoints(const BinaryVolume& volume, const std::vect
       for (int j = 0; j < box.size[1]; ++j)
         std::copy_n(volume.inside.begin() + volume.index(lo[0], lo[1] + j, lo[2] + k), box.size[0],
                     box.inside.begin() + box.index(0, j, k));
-    std::vector<int64_t> corners;  // the box's voxels that the points' trilinear interpolation reads
+    // The points' corners in the box, their distances, and each point's weighted mean of them.
+    std::vector<std::vector<Corner>> around;
+    std::vector<int64_t> voxels;
     for (size_t s = begin; s < end; ++s) {
-      const Eigen::Vector3d index = box.continuousIndex(points[s]);
-      const int i0 = int(std::floor(index.x())), j0 = int(std::floor(index.y())),
-                k0 = int(std::floor(index.z()));
-      for (int dz = 0; dz <= 1; ++dz)
-        for (int dy = 0; dy <= 1; ++dy)
-          for (int dx = 0; dx <= 1; ++dx)
-            if (box.contains(i0 + dx, j0 + dy, k0 + dz))
-              corners.push_back(box.index(i0 + dx, j0 + dy, k0 + dz));
+      around.push_back(trilinearCorners(box, box.continuousIndex(points[s])));
+      for (const Corner& corner : around.back()) voxels.push_back(corner.voxel);
     }
-    const std::vector<float> values = distanceAtVoxels(box, corners);
-    std::vector<float> distance(size_t(box.voxelCount()), 0.0f);
-    for (size_t c = 0; c < corners.size(); ++c) distance[size_t(corners[c])] = values[c];
-    for (size_t s = begin; s < end; ++s)
-      out.push_back(trilinear(box, distance, box.continuousIndex(points[s])));
+    const std::vector<float> values = distanceAtVoxels(box, voxels);
+    size_t next = 0;
+    for (const auto& corners : around) {
+      double sum = 0, weights = 0;
+      for (const Corner& corner : corners) {
+        sum += corner.weight * values[next++];
+        weights += corner.weight;
+      }
+      out.push_back(weights > 0 ? sum / weights : 0);
+    }
   }
   return out;
 }
