@@ -157,6 +157,23 @@ vtkProp3D* vtkMedialScene::AddMesh(vtkPolyData* mesh, const double rgb[3]) {
   return actor;
 }
 
+vtkProp3D* vtkMedialScene::AddLine(vtkPolyData* polyData, const double rgb[3], double width) {
+  if (!polyData || polyData->GetNumberOfPoints() == 0) {
+    vtkErrorMacro(<< "nothing to show: the line has no points");
+    return nullptr;
+  }
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(polyData);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(rgb[0], rgb[1], rgb[2]);
+  actor->GetProperty()->SetLineWidth(static_cast<float>(width));
+  actor->GetProperty()->LightingOff();
+  this->Renderer->AddActor(actor);
+  return actor;
+}
+
 vtkProp3D* vtkMedialScene::AddSkeleton(vtkPolyData* skeleton, const double rgb[3]) {
   // Radius per node: the `Radius` array, else 1 % of the bounding-box diagonal.
   double bounds[6];

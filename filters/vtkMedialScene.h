@@ -34,6 +34,9 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   /// Adds a mesh, skeleton or volume and returns its prop (an actor, or an assembly for volumes), or
   /// null for data it cannot show (an error is reported).
   vtkProp3D* AddData(vtkDataObject* data);
+  /// Adds the lines of `polyData` drawn as plain lines of `width` pixels, unlit, in `rgb` (a centerline:
+  /// the fly-through's camera stands on it, and it builds no geometry however many points it has).
+  vtkProp3D* AddLine(vtkPolyData* polyData, const double rgb[3], double width);
   /// Removes every prop added so far.
   void Clear();
 

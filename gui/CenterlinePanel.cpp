@@ -18,10 +18,7 @@
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
 
-#include <vtkActor.h>
 #include <vtkCellArray.h>
-#include <vtkMapper.h>
-#include <vtkProperty.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
@@ -188,15 +185,10 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
   line->ShallowCopy(tsk->GetOutput());
   const QString name = input->name + " centerline";
   if (SceneObject* previous = objects()->findByName(name)) objects()->remove(previous);
-  SceneObject* result = objects()->add(name, line);
+  // A plain line, not tubes and balls: the fly-through's camera stands on it, and the tubes of a
+  // 1,500-point colon took 140 ms on the UI thread to build.
+  SceneObject* result = objects()->addLine(name, line, {0.1, 0.8, 0.2}, 3);
   if (!result) return;
-  // Drawn as a plain line, not as tubes and balls: the fly-through's camera stands on it.
-  if (auto* actor = vtkActor::SafeDownCast(result->prop)) {
-    actor->GetMapper()->SetInputDataObject(line);
-    actor->GetProperty()->SetLineWidth(3);
-    actor->GetProperty()->LightingOff();
-    actor->GetProperty()->SetColor(0.1, 0.8, 0.2);
-  }
   objects()->setInterest(result, true);
   fly_.setPath(line);
   buildProfile(vtkTable::SafeDownCast(tsk->GetOutputDataObject(1)));

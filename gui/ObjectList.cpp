@@ -122,6 +122,23 @@ SceneObject* ObjectList::add(const QString& name, vtkDataObject* data, const QSt
     fail("Cannot show " + name, name + ": " + QString::fromStdString(errors->Joined()));
     return nullptr;
   }
+  return adopt(name, data, path, prop);
+}
+
+SceneObject* ObjectList::addLine(const QString& name, vtkPolyData* line, const std::array<double, 3>& rgb,
+                                 double width) {
+  auto errors = medial::ErrorCollector::Watch(scene_);
+  vtkProp3D* prop = scene_->AddLine(line, rgb.data(), width);
+  scene_->RemoveObserver(errors);
+  if (!prop) {
+    fail("Cannot show " + name, name + ": " + QString::fromStdString(errors->Joined()));
+    return nullptr;
+  }
+  return adopt(name, line, QString(), prop);
+}
+
+SceneObject* ObjectList::adopt(const QString& name, vtkDataObject* data, const QString& path,
+                               vtkProp3D* prop) {
   auto object = std::make_unique<SceneObject>();
   object->name = name;
   object->path = path;

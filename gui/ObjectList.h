@@ -6,6 +6,7 @@
 
 #include <QWidget>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -31,6 +32,9 @@ class ObjectList : public QWidget {
   // A skeleton's tubes are drawn at radiusScale x `Radius` (a centerline: thin, to fly inside its tube).
   SceneObject* add(const QString& name, vtkDataObject* data, const QString& path = QString(),
                    double radiusScale = 1.0);
+  // Adds a polyline drawn as a plain line of `width` pixels in `rgb` (a centerline), not as tubes and balls.
+  SceneObject* addLine(const QString& name, vtkPolyData* line, const std::array<double, 3>& rgb,
+                       double width);
   void remove(SceneObject* object);
   int count() const { return static_cast<int>(objects_.size()); }
   SceneObject* at(int row) const { return objects_[row].get(); }
@@ -65,6 +69,8 @@ class ObjectList : public QWidget {
   QTreeWidgetItem* itemOf(const SceneObject* object) const;
   int rowOf(const SceneObject* object) const;
   void fail(const QString& title, const QString& message);
+  // Adds the row of an object the scene already shows as `prop`.
+  SceneObject* adopt(const QString& name, vtkDataObject* data, const QString& path, vtkProp3D* prop);
 
   vtkMedialScene* scene_;
   QTreeWidget* tree_ = nullptr;

@@ -19,6 +19,7 @@
 #include "vtkMedialTskCenterline.h"
 #include "vtkMedialScene.h"
 
+#include <chrono>
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -768,12 +769,23 @@ TEST_F(GuiWorkflow, FullSizeCtScrollsAndRunsTheCenterlineWithoutFreezing) {
   CenterlinePanel* panel = window->centerlinePanel();
   window->filterTabs()->setCurrentIndex(2);
   panel->form()->setValue("Selection", 1);
+  clock.restart();
+  QTest::qWait(50);  // the tab's first paint (its chart) happens here, before the user can press Run
+  const double tabMs = clock.elapsed() - 50.0;
   QElapsedTimer sinceTick;
   sinceTick.start();
   qint64 longestGapMs = 0;
   QTimer ticker;
-  QObject::connect(&ticker, &QTimer::timeout,
-                   [&] { longestGapMs = std::max(longestGapMs, sinceTick.restart()); });
+  QObject::connect(&ticker, &QTimer::timeout, [&] {
+    auto g = sinceTick.restart();
+    if (g > 60)
+      fprintf(stderr, "GAP %lld at %lld\n", (long long)g,
+              (long long)(std::chrono::duration_cast<std::chrono::milliseconds>(
+                              std::chrono::steady_clock::now().time_since_epoch())
+                              .count() %
+                          100000));
+    longestGapMs = std::max(longestGapMs, g);
+  });
   ticker.start(20);
   clock.restart();
   ASSERT_TRUE(runThroughUi(panel)) << errors.join("\n").toStdString();
@@ -784,7 +796,7 @@ TEST_F(GuiWorkflow, FullSizeCtScrollsAndRunsTheCenterlineWithoutFreezing) {
   ASSERT_NE(line, nullptr);
   EXPECT_GT(line->polyData()->GetNumberOfPoints(), 1000) << "a colon about 1 m long at 0.7 mm";
   std::printf(
-      "full-size CT: opened in %.2f s, slice step %.1f ms (median of 40), centerline with sections "
-      "%.2f s, longest event-loop gap %lld ms\n",
-      openSeconds, frameMs, centerlineSeconds, static_cast<long long>(longestGapMs));
+      "full-size CT: opened in %.2f s, slice step %.1f ms (median of 40), centerline tab shown in %.0f ms, "
+      "centerline with sections %.2f s, longest event-loop gap %lld ms\n",
+      openSeconds, frameMs, tabMs, centerlineSeconds, static_cast<long long>(longestGapMs));
 }
