@@ -1,4 +1,5 @@
 // `medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] [--fill-holes]
+//  [--max-gap MM] [--min-part-volume MM3]
 //  [--profile PROFILE.csv] [--terrain TERRAIN.png] [--section-spacing K] [--section-rays N]`
 #include "Commands.h"
 #include "CommandLine.h"
@@ -25,7 +26,8 @@ namespace medial::cli {
 int runCenterline(const std::vector<std::string>& args) {
   const ParsedArgs parsed =
       parseArgs(args, {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain",
-                        "--section-spacing", "--section-rays", "--antecedent-width", "--centering"},
+                        "--section-spacing", "--section-rays", "--antecedent-width", "--centering", "--max-gap",
+                        "--min-part-volume"},
                        {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1)
     throw UsageError("centerline needs exactly one VOLUME (file or DICOM folder)");
@@ -57,6 +59,8 @@ int runCenterline(const std::vector<std::string>& args) {
     const auto seed = parseNumbers(parsed.value("--seed"), 3, "--seed");
     filter->SetSeed(seed[0], seed[1], seed[2]);
   }
+  MEDIAL_OPTION(parsed, "--max-gap", filter, MaxGap);
+  MEDIAL_OPTION(parsed, "--min-part-volume", filter, MinimumPartVolume);
   MEDIAL_OPTION(parsed, "--antecedent-width", filter, AntecedentWidth);
   if (parsed.has("--branches")) filter->DetectBranchesOn();
   MEDIAL_OPTION(parsed, "--centering", filter, CenteringIterations);
@@ -78,6 +82,8 @@ int runCenterline(const std::vector<std::string>& args) {
 
   timings.start("centerline");
   runFilter(filter, image, input, "centerline of " + input, progress);
+
+  for (int i = 0; i < filter->GetNumberOfNotes(); ++i) std::fprintf(stderr, "note: %s\n", filter->GetNote(i));
 
   timings.start("write");
   writePolyData(filter->GetOutput(), output);

@@ -32,6 +32,7 @@ void writeOrFail(const std::string& path,
 
 void writeProfileCsv(vtkTable* profile, const std::string& path) {
   const char* columns[5] = {"ArcLength", "MinDiameter", "MaxDiameter", "Perimeter", "Area"};
+  vtkDataArray* bridged = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("Bridged") : nullptr);
   vtkDataArray* arrays[5];
   for (int c = 0; c < 5; ++c) {
     arrays[c] = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName(columns[c]) : nullptr);
@@ -43,12 +44,13 @@ void writeProfileCsv(vtkTable* profile, const std::string& path) {
       error = "cannot create the file";
       return false;
     }
-    out << "arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2\n";
+    out << "arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2,bridged\n";
     char line[256];
     for (vtkIdType row = 0; row < arrays[0]->GetNumberOfTuples(); ++row) {
-      std::snprintf(line, sizeof line, "%.3f,%.3f,%.3f,%.3f,%.3f\n", arrays[0]->GetComponent(row, 0),
+      std::snprintf(line, sizeof line, "%.3f,%.3f,%.3f,%.3f,%.3f,%d\n", arrays[0]->GetComponent(row, 0),
                     arrays[1]->GetComponent(row, 0), arrays[2]->GetComponent(row, 0),
-                    arrays[3]->GetComponent(row, 0), arrays[4]->GetComponent(row, 0));
+                    arrays[3]->GetComponent(row, 0), arrays[4]->GetComponent(row, 0),
+                    bridged && bridged->GetComponent(row, 0) != 0 ? 1 : 0);
       out << line;  // NaN (no wall on some ray) is written as "nan"
     }
     if (!out.flush()) error = "cannot write the file";
@@ -63,11 +65,16 @@ void writeTerrainPng(vtkImageData* terrain, const std::string& path) {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(grey.width, grey.height, 1);
   auto pixels = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  pixels->SetNumberOfValues(vtkIdType(grey.width) * grey.height);
+  pixels->SetNumberOfComponents(3);
+  pixels->SetNumberOfTuples(vtkIdType(grey.width) * grey.height);
   for (int y = 0; y < grey.height; ++y)
-    for (int x = 0; x < grey.width; ++x)
-      pixels->SetValue(vtkIdType(grey.height - 1 - y) * grey.width + x,
-                       grey.pixels[size_t(y) * grey.width + x]);
+    for (int x = 0; x < grey.width; ++x) {
+      const uint8_t level = grey.pixels[size_t(y) * grey.width + x];
+      const bool bridged = grey.bridged[size_t(y)] != 0;
+      for (int c = 0; c < 3; ++c)
+        pixels->SetTypedComponent(vtkIdType(grey.height - 1 - y) * grey.width + x, c,
+                                  bridged ? medial::kBridgedRgb[c] : level);
+    }
   image->GetPointData()->SetScalars(pixels);
   writeOrFail(path, [&](const std::string& temporary, std::string& error) {
     auto writer = vtkSmartPointer<vtkPNGWriter>::New();

@@ -105,8 +105,9 @@ const std::vector<Command>& commands() {
        runSkeleton},
       {"centerline", "TSK centerline of a tubular structure in a CT or label volume",
        "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z]\n"
-       "                         [--fill-holes] [--keep-border-parts] [--branches] [--antecedent-width W] "
-       "[--centering N]\n"
+       "                         [--fill-holes] [--keep-border-parts] [--max-gap MM] [--min-part-volume "
+       "MM3]\n"
+       "                         [--branches] [--antecedent-width W] [--centering N]\n"
        "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] [--section-rays "
        "N]\n"
        "                         [--quiet] [--timings]\n\n"
@@ -114,13 +115,22 @@ const std::vector<Command>& commands() {
        "by\n"
        "the TSK method (WSCG 2008): layers and cylindrical clusters from P0, then three Takagi-Sugeno-Kang\n"
        "models. The structure: voxels equal to L, or within LO..HI (parts touching the volume's border are\n"
-       "dropped: the air outside the body), else the non-zero voxels; its largest 26-connected component.\n"
+       "dropped: the air outside the body), else the non-zero voxels. A structure in several parts (a colon\n"
+       "split by collapsed or fluid-filled segments) is followed part by part and chained from the lowest\n"
+       "end across each gap by the least-cost path through the volume (point data Bridged = 1 there).\n"
        "  -o, --output CENTERLINE   one polyline in mm with Radius and ArcLength (.vtp .vtk ...)\n"
        "  --label L                 the structure is the voxels of label L\n"
        "  --threshold LO:HI         the structure is the voxels in LO..HI (e.g. -1024:-600 for colon air)\n"
        "  --seed X,Y,Z              P0 in mm (default: the lowest end of the structure)\n"
        "  --fill-holes              fill cavities of the structure first\n"
        "  --keep-border-parts       keep thresholded parts that touch the volume's border\n"
+       "  --max-gap MM              longest gap bridged between parts (default " +
+           number(tsk->GetMaxGap()) +
+           "; a longer one starts another\n"
+           "                            polyline, with a note; 0 = the largest part only)\n"
+           "  --min-part-volume MM3     smaller parts are left out (default " +
+           number(tsk->GetMinimumPartVolume()) +
+           ")\n"
        "  --antecedent-width W      TSK Gaussian width relative to a cluster (default " +
            number(tsk->GetAntecedentWidth()) +
            ")\n"

@@ -17,6 +17,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkTable.h>
+#include <vtkUnsignedCharArray.h>
 
 vtkStandardNewMacro(vtkMedialTskCenterline);
 
@@ -29,7 +30,7 @@ void writePolylines(const medial::TskCenterlineResult& result, bool branchArrays
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   std::vector<double> radius, arcLength;
-  std::vector<int> branchId, parentId;
+  std::vector<int> branchId, parentId, bridged;
   auto lines = vtkSmartPointer<vtkCellArray>::New();
   std::vector<vtkIdType> firstId(result.branches.size());
   for (size_t b = 0; b < result.branches.size(); ++b) {
@@ -42,6 +43,7 @@ void writePolylines(const medial::TskCenterlineResult& result, bool branchArrays
       lines->InsertCellPoint(points->InsertNextPoint(centerline.points[k].data()));
       radius.push_back(centerline.radius[k]);
       arcLength.push_back(centerline.arcLength[k]);
+      bridged.push_back(centerline.bridged.empty() ? 0 : centerline.bridged[k]);
     }
     branchId.push_back(int(b));
     parentId.push_back(result.parent[b]);
@@ -50,6 +52,7 @@ void writePolylines(const medial::TskCenterlineResult& result, bool branchArrays
   output->SetLines(lines);
   output->GetPointData()->AddArray(doubleArray("Radius", radius));
   output->GetPointData()->AddArray(doubleArray("ArcLength", arcLength));
+  output->GetPointData()->AddArray(medial::intArray("Bridged", bridged));
   if (!branchArrays) return;
   output->GetCellData()->AddArray(medial::intArray("Branch", branchId));
   output->GetCellData()->AddArray(medial::intArray("ParentBranch", parentId));
@@ -64,6 +67,9 @@ void writeSections(const medial::TubeSections& sections, double spacing, vtkTabl
   table->AddColumn(doubleArray("MaxDiameter", sections.maxDiameter));
   table->AddColumn(doubleArray("Perimeter", sections.perimeter));
   table->AddColumn(doubleArray("Area", sections.area));
+  std::vector<int> bridged(sections.arcLength.size(), 0);
+  for (size_t k = 0; k < sections.bridged.size() && k < bridged.size(); ++k) bridged[k] = sections.bridged[k];
+  table->AddColumn(medial::intArray("Bridged", bridged));
   const int rays = sections.rays, count = int(sections.arcLength.size());
   terrain->SetDimensions(rays, count, 1);
   terrain->SetSpacing(360.0 / rays, spacing, 1.0);
@@ -74,6 +80,13 @@ void writeSections(const medial::TubeSections& sections, double spacing, vtkTabl
     for (int x = 0; x < rays; ++x)
       distance->SetValue(vtkIdType(y) * rays + x, sections.wall[size_t(y)][size_t(x)]);
   terrain->GetPointData()->SetScalars(distance);
+  auto bridgedRows = vtkSmartPointer<vtkUnsignedCharArray>::New();  // 1 on the rows of bridged sections
+  bridgedRows->SetName("Bridged");
+  bridgedRows->SetNumberOfValues(vtkIdType(rays) * count);
+  for (int y = 0; y < count; ++y)
+    for (int x = 0; x < rays; ++x)
+      bridgedRows->SetValue(vtkIdType(y) * rays + x, size_t(y) < sections.bridged.size() ? sections.bridged[size_t(y)] : 0);
+  terrain->GetPointData()->AddArray(bridgedRows);
 }
 
 }  // namespace
@@ -88,6 +101,8 @@ vtkMedialTskCenterline::vtkMedialTskCenterline() {
   this->BorderParts = int(defaults.borderParts);
   this->FillHoles = defaults.fillHoles;
   this->HasSeed = defaults.seed.has_value();
+  this->MaxGap = defaults.maxGap;
+  this->MinimumPartVolume = defaults.minimumPartVolume;
   this->AntecedentWidth = defaults.tsk.antecedentWidth;
   this->SampleSpacing = defaults.tsk.sampleSpacing;
   this->CenteringIterations = defaults.tsk.centeringIterations;
@@ -109,6 +124,8 @@ medial::TskCenterlineParameters vtkMedialTskCenterline::MakeParameters() const {
   p.borderParts = medial::BorderParts(this->BorderParts);
   p.fillHoles = this->FillHoles;
   if (this->HasSeed) p.seed = Eigen::Vector3d(this->Seed[0], this->Seed[1], this->Seed[2]);
+  p.maxGap = this->MaxGap;
+  p.minimumPartVolume = this->MinimumPartVolume;
   p.tsk.antecedentWidth = this->AntecedentWidth;
   p.tsk.sampleSpacing = this->SampleSpacing;
   p.tsk.centeringIterations = this->CenteringIterations;
@@ -133,6 +150,8 @@ void vtkMedialTskCenterline::PrintSelf(ostream& os, vtkIndent indent) {
     os << this->Seed[0] << " " << this->Seed[1] << " " << this->Seed[2] << "\n";
   else
     os << "(the lowest end)\n";
+  os << indent << "MaxGap: " << this->MaxGap << "\n";
+  os << indent << "MinimumPartVolume: " << this->MinimumPartVolume << "\n";
   os << indent << "AntecedentWidth: " << this->AntecedentWidth << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "CenteringIterations: " << this->CenteringIterations << "\n";
@@ -200,6 +219,14 @@ std::vector<std::string> vtkMedialTskCenterline::GetStageNames() {
   return {"selection", "cleanup", "axis", "sections"};
 }
 
+double vtkMedialTskCenterline::GetBridgedGap(int i) const {
+  return i >= 0 && i < this->GetNumberOfBridgedGaps() ? this->BridgedGaps[size_t(i)] : 0.0;
+}
+
+const char* vtkMedialTskCenterline::GetNote(int i) const {
+  return i >= 0 && i < this->GetNumberOfNotes() ? this->Notes[size_t(i)].c_str() : "";
+}
+
 double vtkMedialTskCenterline::GetStageSeconds(const std::string& stage) const {
   for (const auto& [name, seconds] : this->StageSeconds)
     if (name == stage) return seconds;
@@ -222,6 +249,9 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   this->StructureVoxels = result.structureVoxels;
   this->PrimitiveCenterlinePoints = result.primitiveCenterlinePoints;
   this->StageSeconds = result.stageSeconds;
+  this->PartsFollowed = result.partsFollowed;
+  this->BridgedGaps = result.bridgedGaps;
+  this->Notes = result.notes;
   if (!result.ok()) {
     vtkErrorMacro(<< result.error);
     return 0;

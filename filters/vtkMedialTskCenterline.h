@@ -68,6 +68,17 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   void SetSeed(double x, double y, double z);
   void ClearSeed();
 
+  /// A structure in several parts (a colon split by collapsed or fluid-filled segments): parts of at least
+  /// MinimumPartVolume mm^3 (default 1000) are followed and chained from the lowest end (or the seed's
+  /// part) across gaps of up to MaxGap mm (default 40), each gap bridged by the least-cost path through
+  /// the volume; point data `Bridged` is 1 on the bridges (radius 0 there, no lumen). A longer gap starts
+  /// another polyline (see GetNote). MaxGap 0: the largest part only, as in the paper. Not with
+  /// DetectBranches (the largest part only).
+  vtkSetClampMacro(MaxGap, double, 0.0, 1e6);
+  vtkGetMacro(MaxGap, double);
+  vtkSetClampMacro(MinimumPartVolume, double, 0.0, 1e12);
+  vtkGetMacro(MinimumPartVolume, double);
+
   /// Width of the TSK antecedent Gaussians relative to their cluster (default 0.3).
   vtkSetClampMacro(AntecedentWidth, double, 0.01, 10.0);
   vtkGetMacro(AntecedentWidth, double);
@@ -103,6 +114,14 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   /// Figures of the last update.
   vtkGetMacro(PrimitiveCenterlinePoints, int);
   vtkGetMacro(StructureVoxels, vtkIdType);
+  /// Parts of the structure followed (more than 1: gaps were bridged) and the gaps bridged.
+  vtkGetMacro(PartsFollowed, int);
+  int GetNumberOfBridgedGaps() const { return static_cast<int>(this->BridgedGaps.size()); }
+  /// The length of a bridged gap (mm): of its bridge, the part outside the structure.
+  double GetBridgedGap(int i) const;
+  /// Notes of the last update a user should see: parts left out, a gap longer than MaxGap.
+  int GetNumberOfNotes() const { return static_cast<int>(this->Notes.size()); }
+  const char* GetNote(int i) const;
   /// Seconds of a stage of the last update: selection, cleanup (with the crop), axis, sections (0 when
   /// not run).
   double GetStageSeconds(const std::string& stage) const;
@@ -131,6 +150,8 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   bool FillHoles;
   bool HasSeed;
   double Seed[3] = {0, 0, 0};
+  double MaxGap;
+  double MinimumPartVolume;
   double AntecedentWidth;
   double SampleSpacing;
   int CenteringIterations;
@@ -142,5 +163,8 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   // Figures of the last update.
   int PrimitiveCenterlinePoints = 0;
   vtkIdType StructureVoxels = 0;
+  int PartsFollowed = 0;
+  std::vector<double> BridgedGaps;
+  std::vector<std::string> Notes;
   std::vector<std::pair<std::string, double>> StageSeconds;  // of the last update
 };

@@ -16,9 +16,13 @@
 #include <QtCharts/QChartView>
 #include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
+#include <QtCharts/QScatterSeries>
 #include <QtCharts/QValueAxis>
 
+#include <vtkActor.h>
 #include <vtkCellArray.h>
+#include <vtkLookupTable.h>
+#include <vtkMapper.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
@@ -53,6 +57,11 @@ std::vector<Parameter> centerlineParameters() {
                "body) and keeps them otherwise"),
       MEDIAL_TOGGLE_PARAMETER(f, FillHoles, "Fill holes",
                               "Fill cavities of the structure before the distance field"),
+      MEDIAL_REAL_PARAMETER(f, MaxGap, "Max gap (mm)", 1,
+                            "Parts of the structure (a colon split by collapsed or fluid-filled segments) are "
+                            "joined across gaps up to this long, bridged through the CT; 0: the largest part only"),
+      MEDIAL_REAL_PARAMETER(f, MinimumPartVolume, "Min part volume (mm³)", 0,
+                            "Smaller parts of the structure are left out (noise, small-bowel gas)"),
       MEDIAL_REAL_PARAMETER(
           f, AntecedentWidth, "Antecedent width", 3,
           "Width of the TSK antecedent Gaussians relative to their cluster (§3, default 0.3)"),
@@ -91,10 +100,17 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
   maxDiameter_->setName("max diameter");
   marker_ = new QLineSeries;
   marker_->setName("camera");
+  bridged_ = new QScatterSeries;
+  bridged_->setName("bridged (no lumen)");
+  bridged_->setColor(QColor(medial::kBridgedRgb[0], medial::kBridgedRgb[1], medial::kBridgedRgb[2]));
+  bridged_->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+  bridged_->setMarkerSize(6);
+  bridged_->setBorderColor(Qt::transparent);
   auto* chart = new QChart;
   chart->addSeries(minDiameter_);
   chart->addSeries(maxDiameter_);
   chart->addSeries(marker_);
+  chart->addSeries(bridged_);
   chart->createDefaultAxes();
   chart->legend()->setAlignment(Qt::AlignBottom);
   chart->legend()->markers(marker_).first()->setVisible(false);
@@ -110,7 +126,7 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
   terrain_->setMinimumHeight(120);
   terrain_->setToolTip(
       "Unfolded wall: distance from the axis over the arc length (across, as the profile) "
-      "and the angle (down); dark bands are folds (paper Fig. 15)");
+      "and the angle (down); dark bands are folds (paper Fig. 15), orange: bridged across a gap");
   extraLayout()->addWidget(new QLabel("Unfolded wall", this));
   extraLayout()->addWidget(terrain_);
 
@@ -169,6 +185,8 @@ vtkSmartPointer<vtkAlgorithm> CenterlinePanel::makeFilter(SceneObject* input, QS
     filter->SelectNonZero();
   filter->SetBorderParts(static_cast<int>(form()->value("BorderParts")));
   filter->SetFillHoles(form()->isOn("FillHoles"));
+  filter->SetMaxGap(form()->value("MaxGap"));
+  filter->SetMinimumPartVolume(form()->value("MinimumPartVolume"));
   filter->SetAntecedentWidth(form()->value("AntecedentWidth"));
   filter->SetSampleSpacing(form()->value("SampleSpacing"));
   filter->SetCenteringIterations(static_cast<int>(form()->value("CenteringIterations")));
@@ -189,6 +207,7 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
   // 1,500-point colon took 140 ms on the UI thread to build.
   SceneObject* result = objects()->addLine(name, line, {0.1, 0.8, 0.2}, 3);
   if (!result) return;
+  showBridges(result, line);
   objects()->setInterest(result, true);
   fly_.setPath(line);
   buildProfile(vtkTable::SafeDownCast(tsk->GetOutputDataObject(1)));
@@ -199,21 +218,44 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
                    .arg(line->GetNumberOfPoints())
                    .arg(fly_.length(), 0, 'f', 1)
                    .arg(tsk->GetStructureVoxels()));
+  for (int i = 0; i < tsk->GetNumberOfNotes(); ++i) emit message(QString("Centerline: ") + tsk->GetNote(i));
+}
+
+void CenterlinePanel::showBridges(SceneObject* object, vtkPolyData* line) {
+  // Bridges across gaps (collapsed segments) in orange, the rest of the line green.
+  vtkDataArray* bridged = line->GetPointData()->GetArray("Bridged");
+  auto* actor = vtkActor::SafeDownCast(object->prop);
+  if (!bridged || !actor || bridged->GetRange(0)[1] < 1) return;
+  auto colours = vtkSmartPointer<vtkLookupTable>::New();
+  colours->SetNumberOfTableValues(2);
+  colours->SetTableValue(0, 0.1, 0.8, 0.2);
+  colours->SetTableValue(1, medial::kBridgedRgb[0] / 255.0, medial::kBridgedRgb[1] / 255.0,
+                         medial::kBridgedRgb[2] / 255.0);
+  colours->SetTableRange(0, 1);
+  vtkMapper* mapper = actor->GetMapper();
+  mapper->SetLookupTable(colours);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray("Bridged");
+  mapper->SetScalarRange(0, 1);
+  mapper->ScalarVisibilityOn();
 }
 
 void CenterlinePanel::buildProfile(vtkTable* profile) {
   // Min and max diameter of the perpendicular sections over the arc length (NaN rows skipped).
   minDiameter_->clear();
   maxDiameter_->clear();
+  bridged_->clear();
   double top = 1;
   auto* arc = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("ArcLength") : nullptr);
   auto* low = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("MinDiameter") : nullptr);
   auto* high = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("MaxDiameter") : nullptr);
+  auto* gap = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("Bridged") : nullptr);
   if (arc && low && high) {
-    QList<QPointF> lows, highs;
+    QList<QPointF> lows, highs, bridges;
     std::vector<double> maxima;
     for (vtkIdType i = 0; i < arc->GetNumberOfTuples(); ++i) {
       const double s = arc->GetComponent(i, 0), a = low->GetComponent(i, 0), b = high->GetComponent(i, 0);
+      if (gap && gap->GetComponent(i, 0) != 0) bridges.append(QPointF(s, 0));
       if (!std::isfinite(a) || !std::isfinite(b)) continue;
       lows.append(QPointF(s, a));
       highs.append(QPointF(s, b));
@@ -221,6 +263,7 @@ void CenterlinePanel::buildProfile(vtkTable* profile) {
     }
     minDiameter_->replace(lows);
     maxDiameter_->replace(highs);
+    bridged_->replace(bridges);
     // The axis ends at the 95th percentile of the max diameter: oblique cuts at sharp bends spike it.
     if (!maxima.empty()) {
       std::sort(maxima.begin(), maxima.end());
@@ -249,17 +292,22 @@ void CenterlinePanel::showTerrain(vtkImageData* terrain) {
     terrainImage_ = QImage();
     return;
   }
-  QImage image(grey.height, grey.width, QImage::Format_Grayscale8);  // sections x angles
+  QImage image(grey.height, grey.width, QImage::Format_RGB32);  // sections x angles
+  const QRgb bridged = qRgb(medial::kBridgedRgb[0], medial::kBridgedRgb[1], medial::kBridgedRgb[2]);
   for (int angle = 0; angle < grey.width; ++angle) {
-    uchar* row = image.scanLine(angle);
-    for (int section = 0; section < grey.height; ++section)
-      row[section] = grey.pixels[size_t(section) * grey.width + angle];
+    auto* row = reinterpret_cast<QRgb*>(image.scanLine(angle));
+    for (int section = 0; section < grey.height; ++section) {
+      const int level = grey.pixels[size_t(section) * grey.width + angle];
+      row[section] = grey.bridged[size_t(section)] ? bridged : qRgb(level, level, level);
+    }
   }
   terrainImage_ = image;
   terrain_->setPixmap(QPixmap::fromImage(image.scaled(std::max(terrain_->width(), 100), 120)));
 }
 
 int CenterlinePanel::profilePoints() const { return static_cast<int>(maxDiameter_->count()); }
+
+int CenterlinePanel::bridgedProfilePoints() const { return static_cast<int>(bridged_->count()); }
 
 void CenterlinePanel::setPosition(double arcLength) {
   if (fly_.empty()) return;

@@ -19,6 +19,7 @@ class QPushButton;
 class QSlider;
 class QDoubleSpinBox;
 class QLineSeries;
+class QScatterSeries;
 class vtkImageData;
 class vtkTable;
 
@@ -42,6 +43,8 @@ class CenterlinePanel : public FilterPanel {
   void play(bool on);
   bool isPlaying() const { return timer_.isActive(); }
   int profilePoints() const;
+  // Sections on bridges across gaps (collapsed segments), marked along the profile's axis.
+  int bridgedProfilePoints() const;
   const QImage& terrainImage() const { return terrainImage_; }
 
  signals:
@@ -55,6 +58,7 @@ class CenterlinePanel : public FilterPanel {
 
  private:
   void buildProfile(vtkTable* profile);
+  void showBridges(SceneObject* object, vtkPolyData* line);
   void showTerrain(vtkImageData* terrain);
   void step();
 
@@ -66,6 +70,7 @@ class CenterlinePanel : public FilterPanel {
   QLabel* terrain_ = nullptr;
   QImage terrainImage_;
   QLineSeries* marker_ = nullptr;
+  QScatterSeries* bridged_ = nullptr;
   QSlider* positionSlider_ = nullptr;
   QPushButton* playButton_ = nullptr;
   QDoubleSpinBox* speed_ = nullptr;

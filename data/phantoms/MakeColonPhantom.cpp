@@ -12,7 +12,8 @@
 // of the three factors, so loops keep their tissue between them): 512x512x400 is a full-size CT with a
 // colon about 1 m long. --collapse N removes the air over N stretches of --gap MM (default 10) along the
 // axis, evenly spaced, as a collapsed or fluid-filled segment does; their arc lengths go to
-// OUTPUT_DIR/gaps.txt. The true axis
+// OUTPUT_DIR/gaps.txt; with --fluid they hold contrast-tagged fluid (+300 HU) instead of tissue. The true
+// axis
 // goes to OUTPUT_DIR/axis.txt ("x y z radius" in mm per line) and the polyps to OUTPUT_DIR/polyps.txt
 // ("x y z radius"), so that tests can measure a centerline and find the polyps on the unfolded wall.
 // Threshold -1024..-600 HU with the border air dropped gives the colon alone (as in the TSK paper's CT data).
@@ -40,6 +41,7 @@ using Point = std::array<double, 3>;
 constexpr int kDefaultSize[3] = {206, 165, 187};
 int kSize[3] = {206, 165, 187};  // --size
 constexpr double kSpacing[3] = {0.7, 0.7, 1.0};
+constexpr double kFluidHu = 300.0;  // contrast-tagged fluid in the collapsed stretches with --fluid
 
 // Control points of the colon's axis in mm, rectum first. Non-adjacent loops keep >= 13 mm of tissue
 // between their walls, so that the air forms one tube, and the axis bends with a radius of curvature of at
@@ -100,12 +102,13 @@ struct Options {
   std::string volume;  // also written as one file when named
   int collapse = 0;
   double gap = 10.0;  // mm
+  bool fluid = false;  // the collapsed stretches hold contrast-tagged fluid instead of tissue
   bool dicom = true;
 };
 
 const char kUsage[] =
     "usage: medial-make-colon-phantom OUTPUT_DIR [VOLUME.nii.gz|.mha|.nrrd] [--size WxHxD] [--collapse N]\n"
-    "                                 [--gap MM] [--no-dicom]\n";
+    "                                 [--gap MM] [--fluid] [--no-dicom]\n";
 
 // Parses the command line into `options`; false (after a message) on a usage error.
 bool parse(int argc, char** argv, Options& options) {
@@ -133,6 +136,8 @@ bool parse(int argc, char** argv, Options& options) {
         std::fprintf(stderr, "medial-make-colon-phantom: --gap expects 0..200 mm\n");
         return false;
       }
+    } else if (arg == "--fluid") {
+      options.fluid = true;
     } else if (arg == "--no-dicom") {
       options.dicom = false;
     } else if (arg.rfind("-", 0) == 0) {
@@ -174,10 +179,11 @@ int main(int argc, char** argv) {
   }
   std::vector<unsigned char> colon(size_t(kSize[0]) * kSize[1] * kSize[2], 0);
   for (const AxisPoint& a : axis) {
-    if (std::any_of(gaps.begin(), gaps.end(), [&](const std::pair<double, double>& g) {
-          return a.arc + a.radius > g.first && a.arc - a.radius < g.second;
-        }))
-      continue;
+    const bool inGap = std::any_of(gaps.begin(), gaps.end(), [&](const std::pair<double, double>& g) {
+      return a.arc + a.radius > g.first && a.arc - a.radius < g.second;
+    });
+    if (inGap && !options.fluid) continue;
+    const unsigned char content = inGap ? 2 : 1;  // 2: tagged fluid
     int lo[3], hi[3];
     for (int c = 0; c < 3; ++c) {
       lo[c] = std::max(0, static_cast<int>(std::floor((a.p[c] - a.radius) / kSpacing[c])));
@@ -188,8 +194,8 @@ int main(int argc, char** argv) {
         for (int x = lo[0]; x <= hi[0]; ++x) {
           const double dx = x * kSpacing[0] - a.p[0], dy = y * kSpacing[1] - a.p[1],
                        dz = z * kSpacing[2] - a.p[2];
-          if (dx * dx + dy * dy + dz * dz <= a.radius * a.radius)
-            colon[(size_t(z) * kSize[1] + y) * kSize[0] + x] = 1;
+          unsigned char& voxel = colon[(size_t(z) * kSize[1] + y) * kSize[0] + x];
+          if (dx * dx + dy * dy + dz * dz <= a.radius * a.radius && voxel != 1) voxel = content;
         }
   }
 
@@ -240,7 +246,8 @@ int main(int argc, char** argv) {
         const double u = (x * kSpacing[0] - cx) / ax, v = (y * kSpacing[1] - cy) / ay;
         const double rho = std::sqrt(u * u + v * v);  // 1 on the skin
         double hu = rho > 1.0 ? -1000.0 : rho > 1.0 - 10.0 / ay ? -100.0 : 40.0;
-        if (colon[(size_t(z) * kSize[1] + y) * kSize[0] + x]) hu = -1000.0;
+        const unsigned char inColon = colon[(size_t(z) * kSize[1] + y) * kSize[0] + x];
+        if (inColon) hu = inColon == 2 ? kFluidHu : -1000.0;
         hu = std::clamp(hu + noise(random), -1024.0, 3071.0);
         volume->SetPixel({x, y, z}, static_cast<int16_t>(std::lround(hu)));
       }

@@ -111,6 +111,8 @@ std::vector<float> distanceAtVoxels(const BinaryVolume& v, const std::vector<int
   return distance;
 }
 
+}  // namespace
+
 // The distance to the outside at each point (trilinear between the voxels around it), as
 // trilinear(distanceToOutside(volume)) gives it, but with the transform run in small boxes only: for a run
 // of consecutive points, the box around their voxels grown by a bound of those voxels' distances (the
@@ -171,7 +173,6 @@ std::vector<double> distanceAtPoints(const BinaryVolume& volume, const std::vect
   return out;
 }
 
-}  // namespace
 
 std::vector<float> distanceToOutside(const BinaryVolume& volume) {
   const int64_t count = volume.voxelCount();

@@ -22,6 +22,7 @@
 #include "centerline/BinaryVolume.h"
 #include "centerline/TubularClusters.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace medial {
@@ -38,6 +39,7 @@ struct Centerline {
   std::vector<Eigen::Vector3d> points;  // physical (mm)
   std::vector<double> radius;           // mm
   std::vector<double> arcLength;        // mm from the first point
+  std::vector<uint8_t> bridged;         // per point, 1 on a bridge across a gap (GapBridges.h); empty: none
   double length() const { return arcLength.empty() ? 0 : arcLength.back(); }
 };
 
@@ -47,5 +49,9 @@ Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters,
 // Euclidean distance (mm) from every voxel centre to the nearest voxel centre outside the structure (0
 // outside), exact, separable (Felzenszwalb and Huttenlocher), anisotropic spacing honoured.
 std::vector<float> distanceToOutside(const BinaryVolume& volume);
+
+// The distance to the outside (mm) at each point, trilinear between the voxels around it, computed in small
+// boxes around the points only.
+std::vector<double> distanceAtPoints(const BinaryVolume& volume, const std::vector<Eigen::Vector3d>& points);
 
 }  // namespace medial

@@ -1,6 +1,7 @@
 #include "centerline/TskCenterline.h"
 
 #include "centerline/Branches.h"
+#include "centerline/GapBridges.h"
 #include "centerline/StructureRuns.h"
 #include "centerline/TubularClusters.h"
 #include "common/Stopwatch.h"
@@ -46,46 +47,61 @@ std::vector<VoxelRun> runsOf(const T* values, int components, const std::array<i
   }
 }
 
+// Calls f(values) with the volume's voxels as their C++ type.
+template <class F>
+void withVoxels(const ScalarVolume& volume, F&& f) {
+  using Type = ScalarVolume::Type;
+  switch (volume.type) {
+    case Type::Int8: return f(static_cast<const int8_t*>(volume.voxels));
+    case Type::UInt8: return f(static_cast<const uint8_t*>(volume.voxels));
+    case Type::Int16: return f(static_cast<const int16_t*>(volume.voxels));
+    case Type::UInt16: return f(static_cast<const uint16_t*>(volume.voxels));
+    case Type::Int32: return f(static_cast<const int32_t*>(volume.voxels));
+    case Type::UInt32: return f(static_cast<const uint32_t*>(volume.voxels));
+    case Type::Int64: return f(static_cast<const int64_t*>(volume.voxels));
+    case Type::UInt64: return f(static_cast<const uint64_t*>(volume.voxels));
+    case Type::Float32: return f(static_cast<const float*>(volume.voxels));
+    case Type::Float64: return f(static_cast<const double*>(volume.voxels));
+  }
+}
+
 std::vector<VoxelRun> selectedRuns(const ScalarVolume& volume, const TskCenterlineParameters& p,
                                    int64_t& selected) {
   const int c = std::max(1, volume.components);
   std::vector<VoxelRun> runs;
-  using Type = ScalarVolume::Type;
-  switch (volume.type) {
-    case Type::Int8:
-      runs = runsOf(static_cast<const int8_t*>(volume.voxels), c, volume.size, p);
-      break;
-    case Type::UInt8:
-      runs = runsOf(static_cast<const uint8_t*>(volume.voxels), c, volume.size, p);
-      break;
-    case Type::Int16:
-      runs = runsOf(static_cast<const int16_t*>(volume.voxels), c, volume.size, p);
-      break;
-    case Type::UInt16:
-      runs = runsOf(static_cast<const uint16_t*>(volume.voxels), c, volume.size, p);
-      break;
-    case Type::Int32:
-      runs = runsOf(static_cast<const int32_t*>(volume.voxels), c, volume.size, p);
-      break;
-    case Type::UInt32:
-      runs = runsOf(static_cast<const uint32_t*>(volume.voxels), c, volume.size, p);
-      break;
-    case Type::Int64:
-      runs = runsOf(static_cast<const int64_t*>(volume.voxels), c, volume.size, p);
-      break;
-    case Type::UInt64:
-      runs = runsOf(static_cast<const uint64_t*>(volume.voxels), c, volume.size, p);
-      break;
-    case Type::Float32:
-      runs = runsOf(static_cast<const float*>(volume.voxels), c, volume.size, p);
-      break;
-    case Type::Float64:
-      runs = runsOf(static_cast<const double*>(volume.voxels), c, volume.size, p);
-      break;
-  }
+  withVoxels(volume, [&](const auto* values) { runs = runsOf(values, c, volume.size, p); });
   selected = 0;
   for (const VoxelRun& r : runs) selected += r.x1 - r.x0 + 1;
   return runs;
+}
+
+// The cost per mm of a bridge through the voxels of box lo..hi (GapBridges.h): 1 in the selection, and
+// for a threshold window growing by 1 per 250 above it (fat 3, soft tissue 3.6, contrast or bone 5 at
+// most with the colon-air window), so that a bridge keeps to low densities; 2 outside a label.
+CostBox costBox(const ScalarVolume& volume, const TskCenterlineParameters& p, const std::array<int, 3>& lo,
+                const std::array<int, 3>& hi) {
+  CostBox box;
+  box.first = lo;
+  for (size_t a = 0; a < 3; ++a) box.size[a] = hi[a] - lo[a] + 1;
+  box.cost.resize(size_t(box.size[0]) * box.size[1] * box.size[2]);
+  const int c = std::max(1, volume.components);
+  withVoxels(volume, [&](const auto* values) {
+    size_t out = 0;
+    for (int z = lo[2]; z <= hi[2]; ++z)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int x = lo[0]; x <= hi[0]; ++x) {
+          const double v = double(values[c * (x + int64_t(volume.size[0]) * (y + int64_t(volume.size[1]) * z))]);
+          float cost = 1;
+          if (p.selection == VoxelSelection::Threshold)
+            cost = v <= p.thresholdHigh ? 1.0f : float(1.0 + std::min(v - p.thresholdHigh, 1000.0) / 250.0);
+          else if (p.selection == VoxelSelection::Label)
+            cost = v == p.label ? 1.0f : 2.0f;
+          else
+            cost = v != 0 ? 1.0f : 2.0f;
+          box.cost[out++] = cost;
+        }
+  });
+  return box;
 }
 
 bool dropsBorderParts(const TskCenterlineParameters& p) {
@@ -165,6 +181,133 @@ std::vector<int> junctionPoints(const std::vector<Centerline>& branches, const s
   return junction;
 }
 
+
+// A bridge from `from` to `to` (physical): the least-cost path through the volume in the box around the
+// two ends grown by half their distance (at least 5 mm), smoothed and resampled at `spacing`; its gap is
+// the length of the path's steps outside the selection (cost above 1).
+Bridge bridgeThroughVolume(const ScalarVolume& input, const TskCenterlineParameters& p, const BinaryVolume& frame,
+                           const Eigen::Vector3d& from, const Eigen::Vector3d& to, double spacing) {
+  auto voxelOf = [&](const Eigen::Vector3d& point) {
+    const Eigen::Vector3d c = frame.continuousIndex(point);
+    std::array<int, 3> v{};
+    for (int a = 0; a < 3; ++a) v[size_t(a)] = std::clamp(int(std::lround(c[a])), 0, frame.size[size_t(a)] - 1);
+    return v;
+  };
+  const std::array<int, 3> a = voxelOf(from), b = voxelOf(to);
+  const double margin = std::max(5.0, 0.5 * (to - from).norm());
+  std::array<int, 3> lo{}, hi{};
+  for (size_t k = 0; k < 3; ++k) {
+    const int grow = int(std::ceil(margin / frame.spacing[int(k)]));
+    lo[k] = std::max(0, std::min(a[k], b[k]) - grow);
+    hi[k] = std::min(frame.size[k] - 1, std::max(a[k], b[k]) + grow);
+  }
+  const CostBox box = costBox(input, p, lo, hi);
+  const std::vector<std::array<int, 3>> path = leastCostPath(box, frame.spacing, a, b);
+  Bridge bridge;
+  if (path.empty()) return bridge;
+  auto outside = [&](const std::array<int, 3>& v) {
+    const int64_t i = (v[0] - lo[0]) + int64_t(box.size[0]) * ((v[1] - lo[1]) + int64_t(box.size[1]) * (v[2] - lo[2]));
+    return box.cost[size_t(i)] > 1.0f ? 0.5 : 0.0;
+  };
+  bridge.gap = 0;
+  std::vector<Eigen::Vector3d> points;
+  for (size_t k = 0; k < path.size(); ++k) {
+    const auto& v = path[k];
+    points.push_back(frame.physical(Eigen::Vector3d(v[0], v[1], v[2])));
+    if (k > 0) bridge.gap += (points[k] - points[k - 1]).norm() * (outside(path[k - 1]) + outside(v));
+  }
+  bridge.points = bridgePoints(from, to, points, spacing);
+  return bridge;
+}
+
+// Every part in `kept` followed in its own box (phases I and II) and the parts chained across their gaps
+// (GapBridges.h): one polyline per chain. `seed`: a voxel of the whole volume, or -1.
+bool followParts(const ScalarVolume& input, const TskCenterlineParameters& p, const BinaryVolume& frame,
+                 const std::vector<VoxelRun>& runs, const StructureParts& parts, const std::vector<int>& kept,
+                 const std::array<int, 3>* seed, const std::function<bool(double)>& progress,
+                 TskCenterlineResult& result) {
+  int64_t total = 0, done = 0;
+  for (int k : kept) total += parts.parts[size_t(k)].voxels;
+  const int seedPart = seed ? parts.partAt(runs, (*seed)[0], (*seed)[1], (*seed)[2]) : -1;
+  std::vector<Centerline> lines;
+  int startLine = -1;
+  int tooSmall = 0;
+  for (int k : kept) {
+    std::array<int, 3> first{};
+    BinaryVolume box = partsInBox(frame, runs, parts, {k}, 1, &first);
+    if (p.fillHoles) fillHoles(box);
+    const int64_t localSeed =
+        k == seedPart ? box.index((*seed)[0] - first[0], (*seed)[1] - first[1], (*seed)[2] - first[2]) : -1;
+    const int64_t voxels = parts.parts[size_t(k)].voxels;
+    TskCenterlineResult one;
+    const bool followed = followTube(
+        box, localSeed, p.tsk,
+        [&](double f) { return progress((double(done) + f * double(voxels)) / double(total)); }, one);
+    done += voxels;
+    if (!followed && one.error == "aborted") {
+      result.error = one.error;
+      return false;
+    }
+    if (!followed || one.branches.front().points.size() < 2) {
+      if (k == seedPart) {
+        result.error = "the part of the structure holding the seed is too small for a centerline";
+        return false;
+      }
+      ++tooSmall;
+      continue;
+    }
+    if (k == seedPart) startLine = int(lines.size());
+    result.primitiveCenterlinePoints += one.primitiveCenterlinePoints;
+    lines.push_back(std::move(one.branches.front()));
+  }
+  if (lines.empty()) return false;
+  result.partsFollowed = int(lines.size());
+  if (tooSmall > 0)
+    result.notes.push_back(std::to_string(tooSmall) + " part(s) too small for a centerline were left out");
+
+  const double spacing = p.tsk.sampleSpacing > 0 ? p.tsk.sampleSpacing : frame.spacing.minCoeff();
+  const PartChains chains =
+      chainParts(lines, startLine, p.maxGap, [&](const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+        return bridgeThroughVolume(input, p, frame, from, to, spacing);
+      });
+  for (const auto& chain : chains.chains) {
+    for (size_t k = 1; k < chain.size(); ++k) result.bridgedGaps.push_back(chain[k].bridge.gap);
+    result.branches.push_back(joinChain(lines, chain));
+    result.parent.push_back(-1);
+  }
+  if (!result.bridgedGaps.empty()) {
+    std::ostringstream note;
+    note << lines.size() << " parts of the structure joined across " << result.bridgedGaps.size()
+         << " gap(s) of";
+    for (double gap : result.bridgedGaps) note << ' ' << std::lround(gap);
+    note << " mm (point data Bridged = 1 there)";
+    result.notes.push_back(note.str());
+  }
+  for (double gap : chains.brokenGaps)
+    result.notes.push_back("a gap of " + std::to_string(std::lround(gap)) + " mm is longer than the maximum gap (" +
+                           format(p.maxGap) + " mm): the centerline is split there into another polyline");
+  return true;
+}
+
+// Sections that lie on a bridge have no lumen: they are marked and their walls and measures set to NaN.
+void markBridgedSections(const Centerline& line, TubeSections& sections) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  sections.bridged.assign(sections.arcLength.size(), 0);
+  if (line.bridged.empty()) return;
+  size_t k = 0;
+  for (size_t s = 0; s < sections.arcLength.size(); ++s) {
+    while (k + 1 < line.arcLength.size() && line.arcLength[k + 1] < sections.arcLength[s]) ++k;
+    const size_t nearest = k + 1 < line.arcLength.size() && line.arcLength[k + 1] - sections.arcLength[s] <
+                                                                   sections.arcLength[s] - line.arcLength[k]
+                               ? k + 1
+                               : k;
+    if (!line.bridged[nearest]) continue;
+    sections.bridged[s] = 1;
+    std::fill(sections.wall[s].begin(), sections.wall[s].end(), nan);
+    sections.minDiameter[s] = sections.maxDiameter[s] = sections.perimeter[s] = sections.area[s] = nan;
+  }
+}
+
 }  // namespace
 
 TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterlineParameters& parameters,
@@ -197,10 +340,34 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
   frame.origin = input.origin;
   frame.spacing = input.spacing;
   frame.direction = input.direction;
-  ChosenPart part = largestPart(frame, runs, dropBorder, 1);
-  BinaryVolume volume = std::move(part.volume);
-  if (parameters.fillHoles && part.voxels > 0) part.voxels += fillHoles(volume);
-  result.structureVoxels = part.voxels;
+  const StructureParts parts = labelParts(size, runs);
+  // The parts kept: the largest one left after the border rule, and with gaps bridged every other one of
+  // at least the minimum volume.
+  std::vector<int> kept;
+  const bool bridging = !parameters.detectBranches && parameters.maxGap > 0;
+  const double voxelVolume = frame.spacing.prod();
+  int smaller = 0;
+  for (size_t k = 0; k < parts.parts.size(); ++k) {
+    const StructureParts::Part& part = parts.parts[k];
+    if (dropBorder && part.border) continue;
+    if (kept.empty() || (bridging && double(part.voxels) * voxelVolume >= parameters.minimumPartVolume))
+      kept.push_back(int(k));
+    else if (bridging)
+      ++smaller;
+  }
+  constexpr size_t kMostParts = 64;  // the largest; more would be noise, not a colon's segments
+  if (kept.size() > kMostParts) {
+    smaller += int(kept.size() - kMostParts);
+    kept.resize(kMostParts);
+  }
+  if (smaller > 0 && kept.size() > 1)
+    result.notes.push_back(std::to_string(smaller) + " smaller part(s) of the structure were left out (under " +
+                           format(parameters.minimumPartVolume) + " mm^3, or beyond the " +
+                           std::to_string(kMostParts) + " largest)");
+  BinaryVolume volume = partsInBox(frame, runs, parts, kept, 1);
+  result.structureVoxels = 0;
+  for (int k : kept) result.structureVoxels += parts.parts[size_t(k)].voxels;
+  if (parameters.fillHoles && !kept.empty()) result.structureVoxels += fillHoles(volume);
   lap("cleanup");
   if (result.structureVoxels < 8) {
     result.error = "nothing is left to follow: " + std::to_string(result.structureVoxels) +
@@ -214,6 +381,7 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
   }
 
   int64_t seed = -1;
+  std::array<int, 3> seedVoxel{};
   if (parameters.seed) {
     const Eigen::Vector3d& s = *parameters.seed;
     const Eigen::Vector3d index = volume.continuousIndex(s);
@@ -225,22 +393,35 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
       return result;
     }
     seed = volume.index(i, j, k);
+    const Eigen::Vector3d whole = frame.continuousIndex(s);
+    seedVoxel = {int(std::lround(whole.x())), int(std::lround(whole.y())), int(std::lround(whole.z()))};
   }
 
-  const bool followed =
-      parameters.detectBranches
-          ? followBranches(
-                volume, seed, parameters.tsk, parameters.minimumBranchLength,
-                [&report](double f) { return report(0.1 + 0.8 * f); }, result)
-          : followTube(
-                volume, seed, parameters.tsk, [&report](double f) { return report(0.1 + 0.7 * f); }, result);
+  bool followed = false;
+  if (parameters.detectBranches)
+    followed = followBranches(
+        volume, seed, parameters.tsk, parameters.minimumBranchLength,
+        [&report](double f) { return report(0.1 + 0.8 * f); }, result);
+  else if (kept.size() == 1)
+    followed = followTube(
+        volume, seed, parameters.tsk, [&report](double f) { return report(0.1 + 0.7 * f); }, result);
+  else
+    followed = followParts(
+        input, parameters, frame, runs, parts, kept, parameters.seed ? &seedVoxel : nullptr,
+        [&report](double f) { return report(0.1 + 0.7 * f); }, result);
+  if (followed && result.partsFollowed == 0) result.partsFollowed = 1;
   lap("axis");
-  if (!followed) return result;
+  if (!followed) {
+    if (result.error.empty()) result.error = "the structure is too small for a centerline";
+    return result;
+  }
   if (result.branches.empty() || result.branches.front().points.size() < 2) {
     result.error = "the structure is too small for a centerline";
     return result;
   }
   result.junction = junctionPoints(result.branches, result.parent);
+  if (result.partsFollowed > 1)
+    for (Centerline& line : result.branches) refineBridges(volume, line);
 
   if (parameters.computeSections) {
     result.sections = tubeSections(volume, result.branches.front().points, parameters.sections,
@@ -249,6 +430,7 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
       result.error = report(1.0) ? "no section could be computed along the centerline" : "aborted";
       return result;
     }
+    markBridgedSections(result.branches.front(), result.sections);
     lap("sections");
   }
   report(1.0);

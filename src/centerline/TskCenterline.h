@@ -1,7 +1,8 @@
 // TskCenterline: the whole TSK centerline of a tubular structure in a volume (WSCG 2008), from the voxels
 // to the finished polylines: the structure selected (a label, a threshold window or the non-zero voxels),
-// cleaned (parts touching the volume's border dropped, the largest 26-component kept, holes filled on
-// request) and cropped to its box; then phase I (TubularClusters) and phase II (TskAxis) along one tube,
+// cleaned (parts touching the volume's border dropped, the largest 26-component kept - or every part above
+// a volume, chained across the gaps between them by GapBridges - holes filled on request) and cropped to
+// its box; then phase I (TubularClusters) and phase II (TskAxis) along one tube,
 // or along every branch of a tree (Branches, beyond the paper); and on request the perpendicular sections
 // of paper §4 (TubeSections) along the first polyline.
 #pragma once
@@ -49,7 +50,12 @@ struct TskCenterlineParameters {
   bool fillHoles = false;               // cavities of the structure filled before phase I
   std::optional<Eigen::Vector3d> seed;  // P0 in physical coordinates; else the lowest end
   TskParameters tsk;                    // phase II and the centring passes
-  bool detectBranches = false;          // one polyline per branch (Branches.h)
+  // A structure in several parts (a colon split by collapsed or fluid-filled segments): parts of at least
+  // `minimumPartVolume` mm^3 are followed and chained across gaps of up to `maxGap` mm (GapBridges.h);
+  // a longer gap starts another polyline. maxGap 0: the largest part only (the paper's input).
+  double maxGap = 40;
+  double minimumPartVolume = 1000;
+  bool detectBranches = false;          // one polyline per branch (Branches.h; the largest part only)
   double minimumBranchLength = 0;       // mm; 0: twice the largest inscribed radius
   bool computeSections = false;         // sections along the first polyline (TubeSections.h)
   SectionParameters sections;
@@ -62,6 +68,9 @@ struct TskCenterlineResult {
   TubeSections sections;              // with computeSections
   int64_t structureVoxels = 0;        // after selection and clean-up
   int primitiveCenterlinePoints = 0;  // phase I's chosen points, over all branches
+  int partsFollowed = 0;              // parts of the structure followed (more than 1: gaps bridged)
+  std::vector<double> bridgedGaps;    // mm, the length of each bridge outside the structure
+  std::vector<std::string> notes;     // what a user should know: parts left out, gaps too long
   // Seconds of each stage, in order: selection (runs of selected voxels), cleanup (the part to follow in
   // its box, holes), axis (phases I and II, and the branches), sections.
   std::vector<std::pair<std::string, double>> stageSeconds;

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -29,6 +30,7 @@ struct TubeSections {
   std::vector<Eigen::Vector3d> normal;    // unit, angle 0 of the rays (transported along the axis)
   std::vector<std::vector<double>> wall;  // per section, per ray: distance axis-wall (mm); NaN: none
   std::vector<double> minDiameter, maxDiameter, perimeter, area;  // mm, mm, mm, mm^2 (NaN if a ray failed)
+  std::vector<uint8_t> bridged;  // per section: 1 on a bridge across a gap (walls NaN: no lumen there)
 };
 
 // Sections of `volume`'s structure along the polyline `axis` (physical mm, at least two distinct points).

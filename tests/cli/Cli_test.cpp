@@ -306,7 +306,7 @@ TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
   std::ifstream csv(dir + "/profile.csv");
   std::string header, row;
   std::getline(csv, header);
-  EXPECT_EQ(header, "arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2");
+  EXPECT_EQ(header, "arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2,bridged");
   int rows = 0, plausible = 0;
   std::vector<double> arcs, minima;
   while (std::getline(csv, row)) {
