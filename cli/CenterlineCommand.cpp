@@ -24,11 +24,11 @@
 namespace medial::cli {
 
 int runCenterline(const std::vector<std::string>& args) {
-  const ParsedArgs parsed =
-      parseArgs(args, {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain",
-                        "--section-spacing", "--section-rays", "--antecedent-width", "--centering", "--max-gap",
-                        "--min-part-volume"},
-                       {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}});
+  const ParsedArgs parsed = parseArgs(
+      args,
+      {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain", "--section-spacing",
+        "--section-rays", "--antecedent-width", "--centering", "--max-gap", "--min-part-volume"},
+       {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1)
     throw UsageError("centerline needs exactly one VOLUME (file or DICOM folder)");
   const std::string input = parsed.positional[0];
@@ -91,7 +91,8 @@ int runCenterline(const std::vector<std::string>& args) {
   if (!terrain.empty()) writeTerrainPng(vtkImageData::SafeDownCast(filter->GetOutputDataObject(2)), terrain);
   timings.stop();
   for (const std::string& stage : vtkMedialTskCenterline::GetStageNames())
-    if (filter->GetStageSeconds(stage) > 0) timings.detail("centerline", stage, filter->GetStageSeconds(stage));
+    if (filter->GetStageSeconds(stage) > 0)
+      timings.detail("centerline", stage, filter->GetStageSeconds(stage));
   if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
   return kSuccess;
 }

@@ -9,7 +9,8 @@ class vtkTable;
 namespace medial::cli {
 
 // CSV with a header (arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2,bridged), one row
-// per section (bridged 1: on a bridge across a gap, measures NaN), atomically; throws Failure when it cannot be written.
+// per section (bridged 1: on a bridge across a gap, measures NaN), atomically; throws Failure when it cannot
+// be written.
 void writeProfileCsv(vtkTable* profile, const std::string& path);
 
 // The `WallDistance` image as an RGB PNG: grey levels (medial::terrainGrey), the rows of bridged sections

@@ -27,7 +27,8 @@ TerrainGrey terrainGrey(vtkImageData* terrain) {
   grey.pixels.resize(size_t(dims[0]) * dims[1]);
   grey.bridged.assign(size_t(dims[1]), 0);
   if (vtkDataArray* bridged = terrain->GetPointData()->GetArray("Bridged"))
-    for (int y = 0; y < dims[1]; ++y) grey.bridged[size_t(y)] = bridged->GetComponent(vtkIdType(y) * dims[0], 0) != 0;
+    for (int y = 0; y < dims[1]; ++y)
+      grey.bridged[size_t(y)] = bridged->GetComponent(vtkIdType(y) * dims[0], 0) != 0;
   for (int y = 0; y < dims[1]; ++y)
     for (int x = 0; x < dims[0]; ++x) {
       const double d = distance->GetComponent(vtkIdType(y) * dims[0] + x, 0);

@@ -10,8 +10,8 @@ class vtkImageData;
 namespace medial {
 
 struct TerrainGrey {
-  int width = 0, height = 0;    // angles x sections
-  std::vector<uint8_t> pixels;  // row-major, the first section on the top row
+  int width = 0, height = 0;     // angles x sections
+  std::vector<uint8_t> pixels;   // row-major, the first section on the top row
   std::vector<uint8_t> bridged;  // per section (row): 1 on a bridge across a gap, where there is no lumen
 };
 

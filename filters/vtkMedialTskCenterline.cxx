@@ -85,7 +85,8 @@ void writeSections(const medial::TubeSections& sections, double spacing, vtkTabl
   bridgedRows->SetNumberOfValues(vtkIdType(rays) * count);
   for (int y = 0; y < count; ++y)
     for (int x = 0; x < rays; ++x)
-      bridgedRows->SetValue(vtkIdType(y) * rays + x, size_t(y) < sections.bridged.size() ? sections.bridged[size_t(y)] : 0);
+      bridgedRows->SetValue(vtkIdType(y) * rays + x,
+                            size_t(y) < sections.bridged.size() ? sections.bridged[size_t(y)] : 0);
   terrain->GetPointData()->AddArray(bridgedRows);
 }
 

@@ -57,9 +57,10 @@ std::vector<Parameter> centerlineParameters() {
                "body) and keeps them otherwise"),
       MEDIAL_TOGGLE_PARAMETER(f, FillHoles, "Fill holes",
                               "Fill cavities of the structure before the distance field"),
-      MEDIAL_REAL_PARAMETER(f, MaxGap, "Max gap (mm)", 1,
-                            "Parts of the structure (a colon split by collapsed or fluid-filled segments) are "
-                            "joined across gaps up to this long, bridged through the CT; 0: the largest part only"),
+      MEDIAL_REAL_PARAMETER(
+          f, MaxGap, "Max gap (mm)", 1,
+          "Parts of the structure (a colon split by collapsed or fluid-filled segments) are "
+          "joined across gaps up to this long, bridged through the CT; 0: the largest part only"),
       MEDIAL_REAL_PARAMETER(f, MinimumPartVolume, "Min part volume (mm³)", 0,
                             "Smaller parts of the structure are left out (noise, small-bowel gas)"),
       MEDIAL_REAL_PARAMETER(

@@ -101,7 +101,7 @@ struct Options {
   std::filesystem::path out;
   std::string volume;  // also written as one file when named
   int collapse = 0;
-  double gap = 10.0;  // mm
+  double gap = 10.0;   // mm
   bool fluid = false;  // the collapsed stretches hold contrast-tagged fluid instead of tissue
   bool dicom = true;
 };

@@ -154,7 +154,8 @@ std::vector<Eigen::Vector3d> bridgePoints(const Eigen::Vector3d& from, const Eig
   path.back() = to;
   for (int pass = 0; pass < 20; ++pass) {
     std::vector<Eigen::Vector3d> next = path;
-    for (size_t k = 1; k + 1 < path.size(); ++k) next[k] = 0.25 * path[k - 1] + 0.5 * path[k] + 0.25 * path[k + 1];
+    for (size_t k = 1; k + 1 < path.size(); ++k)
+      next[k] = 0.25 * path[k - 1] + 0.5 * path[k] + 0.25 * path[k + 1];
     path.swap(next);
   }
   std::vector<double> arc(path.size(), 0);
@@ -210,7 +211,8 @@ void refineBridges(const BinaryVolume& volume, Centerline& line) {
     const size_t from = begin >= 3 ? begin - 3 : 0, to = std::min(n, end + 3);
     std::vector<Eigen::Vector3d> stretch(line.points.begin() + long(from), line.points.begin() + long(to));
     stretch = centerInSections(volume, stretch, 36, 2);
-    const std::vector<Eigen::Vector3d> moved(stretch.begin() + long(begin - from), stretch.begin() + long(end - from));
+    const std::vector<Eigen::Vector3d> moved(stretch.begin() + long(begin - from),
+                                             stretch.begin() + long(end - from));
     const std::vector<double> distance = distanceAtPoints(volume, moved);
     for (size_t k = begin; k < end; ++k) {
       const Eigen::Vector3d c = volume.continuousIndex(moved[k - begin]);
@@ -222,7 +224,8 @@ void refineBridges(const BinaryVolume& volume, Centerline& line) {
     }
     begin = end;
   }
-  for (size_t k = 1; k < n; ++k) line.arcLength[k] = line.arcLength[k - 1] + (line.points[k] - line.points[k - 1]).norm();
+  for (size_t k = 1; k < n; ++k)
+    line.arcLength[k] = line.arcLength[k - 1] + (line.points[k] - line.points[k - 1]).norm();
 }
 
 }  // namespace medial

@@ -51,7 +51,7 @@ struct ChainLink {
 
 struct PartChains {
   std::vector<std::vector<ChainLink>> chains;  // the first starts at `start` (or the lowest end)
-  std::vector<double> brokenGaps;              // mm: per chain after the first, the gap that ended the one before
+  std::vector<double> brokenGaps;  // mm: per chain after the first, the gap that ended the one before
 };
 
 /// Orders the parts' centerlines into chains (see the header). `startPart` >= 0: the first chain starts at

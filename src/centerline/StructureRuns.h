@@ -2,8 +2,9 @@
 // once into runs along x (two threads, one per half of the slices); runs join into 26-connected parts by
 // union-find with the runs of the neighbouring rows; the part to follow (the largest, leaving out parts that
 // touch the volume's border when asked: the air around a body) - or several parts, for a colon split by
-// collapsed segments - is written straight into its bounding box grown by a margin. On a 512 x 512 x 400 CT this replaces a full-size mask, a flood fill of the air
-// outside and a full-size label volume (1.5 s and 0.5 GB) by a pass that reads each voxel once.
+// collapsed segments - is written straight into its bounding box grown by a margin. On a 512 x 512 x 400 CT
+// this replaces a full-size mask, a flood fill of the air outside and a full-size label volume (1.5 s and 0.5
+// GB) by a pass that reads each voxel once.
 #pragma once
 
 #include "centerline/BinaryVolume.h"
@@ -27,12 +28,12 @@ std::vector<VoxelRun> selectedRuns(const std::array<int, 3>& size, const Selecte
 struct StructureParts {
   struct Part {
     int64_t voxels = 0;
-    bool border = false;  // touches the volume's border
+    bool border = false;            // touches the volume's border
     std::array<int, 3> lo{}, hi{};  // bounding box (voxel indices, inclusive)
   };
-  std::vector<Part> parts;         // largest first
-  std::vector<int> partOfRun;      // per run: its part
-  std::vector<int64_t> rowStart;   // the runs of row y + ny * z: rowStart[row] .. rowStart[row + 1]
+  std::vector<Part> parts;        // largest first
+  std::vector<int> partOfRun;     // per run: its part
+  std::vector<int64_t> rowStart;  // the runs of row y + ny * z: rowStart[row] .. rowStart[row + 1]
   std::array<int, 3> size{};
   /// The part holding voxel (x, y, z), or -1 when it is not selected.
   int partAt(const std::vector<VoxelRun>& runs, int x, int y, int z) const;

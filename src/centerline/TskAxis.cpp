@@ -173,7 +173,6 @@ std::vector<double> distanceAtPoints(const BinaryVolume& volume, const std::vect
   return out;
 }
 
-
 std::vector<float> distanceToOutside(const BinaryVolume& volume) {
   const int64_t count = volume.voxelCount();
   std::vector<double> squared(static_cast<size_t>(count));

@@ -52,16 +52,26 @@ template <class F>
 void withVoxels(const ScalarVolume& volume, F&& f) {
   using Type = ScalarVolume::Type;
   switch (volume.type) {
-    case Type::Int8: return f(static_cast<const int8_t*>(volume.voxels));
-    case Type::UInt8: return f(static_cast<const uint8_t*>(volume.voxels));
-    case Type::Int16: return f(static_cast<const int16_t*>(volume.voxels));
-    case Type::UInt16: return f(static_cast<const uint16_t*>(volume.voxels));
-    case Type::Int32: return f(static_cast<const int32_t*>(volume.voxels));
-    case Type::UInt32: return f(static_cast<const uint32_t*>(volume.voxels));
-    case Type::Int64: return f(static_cast<const int64_t*>(volume.voxels));
-    case Type::UInt64: return f(static_cast<const uint64_t*>(volume.voxels));
-    case Type::Float32: return f(static_cast<const float*>(volume.voxels));
-    case Type::Float64: return f(static_cast<const double*>(volume.voxels));
+    case Type::Int8:
+      return f(static_cast<const int8_t*>(volume.voxels));
+    case Type::UInt8:
+      return f(static_cast<const uint8_t*>(volume.voxels));
+    case Type::Int16:
+      return f(static_cast<const int16_t*>(volume.voxels));
+    case Type::UInt16:
+      return f(static_cast<const uint16_t*>(volume.voxels));
+    case Type::Int32:
+      return f(static_cast<const int32_t*>(volume.voxels));
+    case Type::UInt32:
+      return f(static_cast<const uint32_t*>(volume.voxels));
+    case Type::Int64:
+      return f(static_cast<const int64_t*>(volume.voxels));
+    case Type::UInt64:
+      return f(static_cast<const uint64_t*>(volume.voxels));
+    case Type::Float32:
+      return f(static_cast<const float*>(volume.voxels));
+    case Type::Float64:
+      return f(static_cast<const double*>(volume.voxels));
   }
 }
 
@@ -90,7 +100,8 @@ CostBox costBox(const ScalarVolume& volume, const TskCenterlineParameters& p, co
     for (int z = lo[2]; z <= hi[2]; ++z)
       for (int y = lo[1]; y <= hi[1]; ++y)
         for (int x = lo[0]; x <= hi[0]; ++x) {
-          const double v = double(values[c * (x + int64_t(volume.size[0]) * (y + int64_t(volume.size[1]) * z))]);
+          const double v =
+              double(values[c * (x + int64_t(volume.size[0]) * (y + int64_t(volume.size[1]) * z))]);
           float cost = 1;
           if (p.selection == VoxelSelection::Threshold)
             cost = v <= p.thresholdHigh ? 1.0f : float(1.0 + std::min(v - p.thresholdHigh, 1000.0) / 250.0);
@@ -181,16 +192,17 @@ std::vector<int> junctionPoints(const std::vector<Centerline>& branches, const s
   return junction;
 }
 
-
 // A bridge from `from` to `to` (physical): the least-cost path through the volume in the box around the
 // two ends grown by half their distance (at least 5 mm), smoothed and resampled at `spacing`; its gap is
 // the length of the path's steps outside the selection (cost above 1).
-Bridge bridgeThroughVolume(const ScalarVolume& input, const TskCenterlineParameters& p, const BinaryVolume& frame,
-                           const Eigen::Vector3d& from, const Eigen::Vector3d& to, double spacing) {
+Bridge bridgeThroughVolume(const ScalarVolume& input, const TskCenterlineParameters& p,
+                           const BinaryVolume& frame, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                           double spacing) {
   auto voxelOf = [&](const Eigen::Vector3d& point) {
     const Eigen::Vector3d c = frame.continuousIndex(point);
     std::array<int, 3> v{};
-    for (int a = 0; a < 3; ++a) v[size_t(a)] = std::clamp(int(std::lround(c[a])), 0, frame.size[size_t(a)] - 1);
+    for (int a = 0; a < 3; ++a)
+      v[size_t(a)] = std::clamp(int(std::lround(c[a])), 0, frame.size[size_t(a)] - 1);
     return v;
   };
   const std::array<int, 3> a = voxelOf(from), b = voxelOf(to);
@@ -206,7 +218,8 @@ Bridge bridgeThroughVolume(const ScalarVolume& input, const TskCenterlineParamet
   Bridge bridge;
   if (path.empty()) return bridge;
   auto outside = [&](const std::array<int, 3>& v) {
-    const int64_t i = (v[0] - lo[0]) + int64_t(box.size[0]) * ((v[1] - lo[1]) + int64_t(box.size[1]) * (v[2] - lo[2]));
+    const int64_t i =
+        (v[0] - lo[0]) + int64_t(box.size[0]) * ((v[1] - lo[1]) + int64_t(box.size[1]) * (v[2] - lo[2]));
     return box.cost[size_t(i)] > 1.0f ? 0.5 : 0.0;
   };
   bridge.gap = 0;
@@ -284,8 +297,9 @@ bool followParts(const ScalarVolume& input, const TskCenterlineParameters& p, co
     result.notes.push_back(note.str());
   }
   for (double gap : chains.brokenGaps)
-    result.notes.push_back("a gap of " + std::to_string(std::lround(gap)) + " mm is longer than the maximum gap (" +
-                           format(p.maxGap) + " mm): the centerline is split there into another polyline");
+    result.notes.push_back("a gap of " + std::to_string(std::lround(gap)) +
+                           " mm is longer than the maximum gap (" + format(p.maxGap) +
+                           " mm): the centerline is split there into another polyline");
   return true;
 }
 
@@ -298,7 +312,7 @@ void markBridgedSections(const Centerline& line, TubeSections& sections) {
   for (size_t s = 0; s < sections.arcLength.size(); ++s) {
     while (k + 1 < line.arcLength.size() && line.arcLength[k + 1] < sections.arcLength[s]) ++k;
     const size_t nearest = k + 1 < line.arcLength.size() && line.arcLength[k + 1] - sections.arcLength[s] <
-                                                                   sections.arcLength[s] - line.arcLength[k]
+                                                                sections.arcLength[s] - line.arcLength[k]
                                ? k + 1
                                : k;
     if (!line.bridged[nearest]) continue;
@@ -361,7 +375,8 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
     kept.resize(kMostParts);
   }
   if (smaller > 0 && kept.size() > 1)
-    result.notes.push_back(std::to_string(smaller) + " smaller part(s) of the structure were left out (under " +
+    result.notes.push_back(std::to_string(smaller) +
+                           " smaller part(s) of the structure were left out (under " +
                            format(parameters.minimumPartVolume) + " mm^3, or beyond the " +
                            std::to_string(kMostParts) + " largest)");
   BinaryVolume volume = partsInBox(frame, runs, parts, kept, 1);

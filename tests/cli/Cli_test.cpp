@@ -734,3 +734,37 @@ TEST(Cli, ColonPhantomCollapsedSegmentsAndSize) {
   EXPECT_EQ(runCommand(phantom + dir + "/x --size 10").exitCode, 2);
   EXPECT_EQ(runCommand(phantom + dir + "/x --frobnicate").exitCode, 2);
 }
+
+// A colon with a collapsed segment longer than --max-gap: two polylines and a note on stderr; a larger
+// --max-gap bridges it (note, Bridged rows in the profile); bad values are usage errors.
+TEST(Cli, CenterlineNotesGapsAndBridgesThem) {
+  const std::string dir = scratchDir("cli-centerline-gaps");
+  ASSERT_EQ(std::system((binaryDir() + "/bin/medial-make-colon-phantom " + dir + "/ct " + dir +
+                         "/ct.mha --collapse 1 --gap 50 --no-dicom > /dev/null")
+                            .c_str()),
+            0);
+  const std::string base = "centerline " + dir + "/ct.mha --threshold -1024:-600 --quiet -o " + dir;
+  auto split = runCommand(medialCommand(base + "/split.vtp"));
+  ASSERT_EQ(split.exitCode, 0) << split.err;
+  EXPECT_NE(split.err.find("note: a gap of"), std::string::npos) << split.err;
+  auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  reader->SetFileName((dir + "/split.vtp").c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), 2);
+
+  auto joined = runCommand(medialCommand(base + "/joined.vtp --max-gap 70 --profile " + dir + "/p.csv"));
+  ASSERT_EQ(joined.exitCode, 0) << joined.err;
+  EXPECT_NE(joined.err.find("note: 2 parts of the structure joined across 1 gap"), std::string::npos)
+      << joined.err;
+  std::ifstream csv(dir + "/p.csv");
+  std::string row;
+  int bridgedRows = 0;
+  std::getline(csv, row);
+  while (std::getline(csv, row)) bridgedRows += row.size() > 2 && row.substr(row.size() - 2) == ",1";
+  EXPECT_GE(bridgedRows, 20) << "50 mm without lumen, a section every mm";
+
+  for (const char* bad : {"--max-gap -5", "--max-gap x", "--min-part-volume -1"}) {
+    auto usage = runCommand(medialCommand(base + "/bad.vtp " + bad));
+    EXPECT_EQ(usage.exitCode, 2) << bad << ": " << usage.err;
+  }
+}

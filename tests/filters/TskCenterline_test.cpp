@@ -12,6 +12,7 @@
 #include <vtkIdList.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkTable.h>
@@ -20,7 +21,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
+#include <cstdlib>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <vector>
 
 namespace {
@@ -259,4 +264,170 @@ TEST(TskCenterlineFilter, BranchingTreeGivesOnePolylinePerBranch) {
   filter->DetectBranchesOff();
   filter->Update();
   EXPECT_EQ(filter->GetOutput()->GetNumberOfLines(), 1);
+}
+
+// Collapsed and fluid-filled segments (medial-make-colon-phantom --collapse N --gap MM [--fluid]): the colon
+// air falls into N + 1 parts; the centerline is still one polyline over the whole colon, bridged across
+// each gap: every point of the true axis lies near it, the parts' points stay on the axis, and the points
+// marked Bridged lie in the gaps (and in every gap).
+struct Collapse {
+  int count;
+  double gap;  // mm along the axis
+  bool fluid;
+};
+
+std::ostream& operator<<(std::ostream& os, const Collapse& c) {
+  return os << c.count << " x " << c.gap << " mm" << (c.fluid ? " fluid" : "");
+}
+
+class CollapsedColon : public ::testing::TestWithParam<Collapse> {};
+
+// The true axis ("x y z radius" lines with the arc length added) of a phantom.
+std::vector<std::array<double, 5>> readAxis(const std::string& path) {
+  std::ifstream file(path);
+  std::string row;
+  std::vector<std::array<double, 5>> axis;
+  while (std::getline(file, row)) {
+    if (row.empty() || row[0] == '#') continue;
+    std::array<double, 5> a{};
+    std::istringstream(row) >> a[0] >> a[1] >> a[2] >> a[3];
+    if (!axis.empty())
+      a[4] = axis.back()[4] + std::hypot(a[0] - axis.back()[0], a[1] - axis.back()[1], a[2] - axis.back()[2]);
+    axis.push_back(a);
+  }
+  return axis;
+}
+
+TEST_P(CollapsedColon, OneCenterlineBridgesEveryGap) {
+  const Collapse c = GetParam();
+  const std::string dir = medial::test::scratchDir("collapsed-" + std::to_string(c.count) + "-" +
+                                                   std::to_string(int(c.gap)) + (c.fluid ? "-fluid" : ""));
+  ASSERT_EQ(std::system((medial::test::binaryDir() + "/bin/medial-make-colon-phantom " + dir + " " + dir +
+                         "/ct.mha --no-dicom --collapse " + std::to_string(c.count) + " --gap " +
+                         std::to_string(c.gap) + (c.fluid ? " --fluid" : "") + " > /dev/null")
+                            .c_str()),
+            0);
+  auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  filter->SetInputData(read(dir + "/ct.mha"));
+  filter->SetThreshold(-1024, -600);
+  filter->ComputeSectionsOn();
+  filter->SetSectionSpacing(2);
+  filter->Update();
+  vtkPolyData* line = filter->GetOutput();
+  ASSERT_EQ(line->GetNumberOfCells(), 1) << "one polyline";
+  EXPECT_EQ(filter->GetPartsFollowed(), c.count + 1);
+  ASSERT_EQ(filter->GetNumberOfBridgedGaps(), c.count);
+  for (int i = 0; i < c.count; ++i)
+    EXPECT_NEAR(filter->GetBridgedGap(i), c.gap, 0.25 * c.gap + 2.5) << "gap " << i;
+  ASSERT_GT(filter->GetNumberOfNotes(), 0);
+  EXPECT_NE(std::string(filter->GetNote(0)).find("joined across"), std::string::npos) << filter->GetNote(0);
+
+  // Gaps along the true axis, then the axis' points: each near the centerline (the whole length covered).
+  std::vector<std::pair<double, double>> gaps;
+  std::ifstream gapFile(dir + "/gaps.txt");
+  std::string row;
+  while (std::getline(gapFile, row))
+    if (!row.empty() && row[0] != '#') {
+      double start = 0, end = 0;
+      std::istringstream(row) >> start >> end;
+      gaps.push_back({start, end});
+    }
+  ASSERT_EQ(int(gaps.size()), c.count);
+  const auto axis = readAxis(dir + "/axis.txt");
+  auto axisLine = vtkSmartPointer<vtkPolyData>::New();
+  {
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    cells->InsertNextCell(vtkIdType(axis.size()));
+    for (const auto& a : axis) cells->InsertCellPoint(points->InsertNextPoint(a[0], a[1], a[2]));
+    axisLine->SetPoints(points);
+    axisLine->SetLines(cells);
+  }
+  double farthest = 0;
+  for (const auto& a : axis) {
+    const double p[3] = {a[0], a[1], a[2]};
+    // The ends: a TSK line stops about a radius short of the caps.
+    if (a[4] < 15 || a[4] > axis.back()[4] - 15) continue;
+    farthest = std::max(farthest, distanceToLine(p, line));
+  }
+  EXPECT_LT(farthest, 8.0) << "mm from the true axis to the centerline (the bridges cut the bends' corners)";
+
+  vtkDataArray* bridged = line->GetPointData()->GetArray("Bridged");
+  ASSERT_NE(bridged, nullptr);
+  std::vector<int> bridgedInGap(gaps.size(), 0);
+  double onParts = 0;
+  int partPoints = 0;
+  for (vtkIdType i = 0; i < line->GetNumberOfPoints(); ++i) {
+    double p[3];
+    line->GetPoint(i, p);
+    if (bridged->GetComponent(i, 0) == 0) {
+      onParts += distanceToLine(p, axisLine);
+      ++partPoints;
+      continue;
+    }
+    // A bridged point: its nearest axis point lies in a gap (within 3 mm of its ends).
+    size_t nearest = 0;
+    for (size_t k = 1; k < axis.size(); ++k)
+      if (std::hypot(axis[k][0] - p[0], axis[k][1] - p[1], axis[k][2] - p[2]) <
+          std::hypot(axis[nearest][0] - p[0], axis[nearest][1] - p[1], axis[nearest][2] - p[2]))
+        nearest = k;
+    bool inGap = false;
+    for (size_t g = 0; g < gaps.size(); ++g)
+      if (axis[nearest][4] > gaps[g].first - 3 && axis[nearest][4] < gaps[g].second + 3) {
+        inGap = true;
+        ++bridgedInGap[g];
+      }
+    EXPECT_TRUE(inGap) << "a bridged point at arc " << axis[nearest][4] << " mm of the axis";
+  }
+  for (size_t g = 0; g < gaps.size(); ++g) EXPECT_GT(bridgedInGap[g], 0) << "gap " << g << " is not bridged";
+  EXPECT_LT(onParts / partPoints, 0.6) << "mean mm from the axis of the points in the colon's lumen";
+
+  // The profile marks the bridged sections, and has no measure there.
+  vtkTable* profile = vtkTable::SafeDownCast(filter->GetOutputDataObject(1));
+  vtkDataArray* rows = vtkDataArray::SafeDownCast(profile->GetColumnByName("Bridged"));
+  vtkDataArray* diameter = vtkDataArray::SafeDownCast(profile->GetColumnByName("MaxDiameter"));
+  ASSERT_TRUE(rows && diameter);
+  int bridgedRows = 0;
+  for (vtkIdType r = 0; r < rows->GetNumberOfTuples(); ++r)
+    if (rows->GetComponent(r, 0) != 0) {
+      ++bridgedRows;
+      EXPECT_TRUE(std::isnan(diameter->GetComponent(r, 0)));
+    }
+  EXPECT_GE(bridgedRows, c.count);
+}
+
+INSTANTIATE_TEST_SUITE_P(TskCenterlineFilter, CollapsedColon,
+                         ::testing::Values(Collapse{1, 3, false}, Collapse{1, 20, false},
+                                           Collapse{2, 12, false}, Collapse{3, 8, false},
+                                           Collapse{2, 12, true}));
+
+// A gap longer than MaxGap: two polylines and a note; MaxGap 0: the largest part only (the paper's input).
+TEST(TskCenterlineFilter, AGapLongerThanTheMaximumSplitsTheCenterline) {
+  const std::string dir = medial::test::scratchDir("collapsed-long");
+  ASSERT_EQ(std::system((medial::test::binaryDir() + "/bin/medial-make-colon-phantom " + dir + " " + dir +
+                         "/ct.mha --no-dicom --collapse 1 --gap 60 > /dev/null")
+                            .c_str()),
+            0);
+  auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  filter->SetInputData(read(dir + "/ct.mha"));
+  filter->SetThreshold(-1024, -600);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 2);
+  EXPECT_EQ(filter->GetNumberOfBridgedGaps(), 0);
+  bool noted = false;
+  for (int i = 0; i < filter->GetNumberOfNotes(); ++i)
+    noted = noted || std::string(filter->GetNote(i)).find("longer than the maximum gap") != std::string::npos;
+  EXPECT_TRUE(noted);
+  const vtkIdType bothParts = filter->GetOutput()->GetNumberOfPoints();
+
+  filter->SetMaxGap(80);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 1);
+  EXPECT_EQ(filter->GetNumberOfBridgedGaps(), 1);
+
+  filter->SetMaxGap(0);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 1);
+  EXPECT_EQ(filter->GetPartsFollowed(), 1);
+  EXPECT_LT(filter->GetOutput()->GetNumberOfPoints(), 0.8 * bothParts) << "the largest part only";
 }
