@@ -38,9 +38,11 @@
 #include <QTest>
 #include <QTimer>
 
+#include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkIdList.h>
+#include <vtkMapper.h>
 #include <vtkMath.h>
 #include <vtkRendererCollection.h>
 #include <vtkCellArray.h>
@@ -548,6 +550,44 @@ TEST_F(GuiWorkflow, ColonPhantomDicomThresholdSeedCenterlineFlyThrough) {
   EXPECT_GT(screenshot("colon-inside"), 0.1) << "inside the colon its wall fills the view";
   EXPECT_FALSE(panel->terrainImage().isNull());
   window->grab().save(QString::fromStdString(dir + "/colon-window.png"));  // the whole window, to look at
+  EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
+}
+
+// A colon with two collapsed segments: one centerline through the GUI, its bridges orange in the 3-D view,
+// marked on the profile and as orange rows of the unfolded wall, and the note in the log.
+TEST_F(GuiWorkflow, CollapsedColonIsBridgedAndTheBridgesShow) {
+  const std::string volume = dir + "/collapsed.mha";
+  ASSERT_EQ(std::system((medial::test::binaryDir() + "/bin/medial-make-colon-phantom " + dir + "/collapsed " +
+                         volume + " --collapse 2 --gap 12 --no-dicom > /dev/null")
+                            .c_str()),
+            0);
+  open(volume);
+  CenterlinePanel* panel = window->centerlinePanel();
+  window->filterTabs()->setCurrentIndex(2);
+  panel->form()->setValue("Selection", 1);
+  ASSERT_TRUE(runThroughUi(panel)) << errors.join("\n").toStdString();
+  SceneObject* line = object("collapsed.mha centerline");
+  ASSERT_NE(line, nullptr);
+  EXPECT_EQ(line->polyData()->GetNumberOfCells(), 1);
+  EXPECT_GT(panel->flyThrough().length(), 380.0) << "the colon's 422 mm, less the ends, in one line";
+  EXPECT_GT(panel->bridgedProfilePoints(), 10) << "two gaps of 12 mm, a section every 2 mm";
+  EXPECT_TRUE(window->logText().contains("3 parts of the structure joined across 2 gap(s)"))
+      << window->logText().toStdString();
+
+  auto* actor = vtkActor::SafeDownCast(line->prop);
+  ASSERT_NE(actor, nullptr);
+  EXPECT_TRUE(actor->GetMapper()->GetScalarVisibility());
+  EXPECT_STREQ(actor->GetMapper()->GetArrayName(), "Bridged");
+
+  const QImage& terrain = panel->terrainImage();
+  ASSERT_FALSE(terrain.isNull());
+  int orangeColumns = 0;  // sections run across the picture
+  for (int x = 0; x < terrain.width(); ++x)
+    orangeColumns += terrain.pixel(x, 0) == qRgb(255, 140, 0);
+  EXPECT_GT(orangeColumns, 10);
+  window->resetCamera();
+  EXPECT_GT(screenshot("collapsed-colon"), 0.05);
+  window->grab().save(QString::fromStdString(dir + "/collapsed-window.png"));  // to look at
   EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
 }
 
