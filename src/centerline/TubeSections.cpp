@@ -41,16 +41,31 @@ double maskAt(const BinaryVolume& volume, const Eigen::Matrix3d& toIndex, const 
   return value;
 }
 
-// Distance from `start` along `direction` to where the mask falls below 1/2 (linear between the two
-// samples around the crossing), or NaN when it does not within `limit`.
+// Distance from `start` along `direction` to where the mask falls below 1/2, or NaN when it does not within
+// `limit`. The ray advances by `step` (half the smallest voxel spacing: a background voxel's dip below 1/2
+// is a voxel wide, so no wall is stepped over); the step that crosses is halved twice (an interval of an
+// eighth of a voxel) and the crossing interpolated linearly in it. The mask is read about 2.5 times less
+// often than with fixed fifth-of-a-voxel steps, for the same precision.
 double wallDistance(const BinaryVolume& volume, const Eigen::Matrix3d& toIndex, const Eigen::Vector3d& start,
                     const Eigen::Vector3d& direction, double step, double limit) {
   double previous = maskAt(volume, toIndex, start);
   if (previous < 0.5) return 0.0;  // the axis point itself lies on or outside the wall
-  for (double t = step; t <= limit; t += step) {
+  for (double t = step; t <= limit + 1e-12; t += step) {
     const double value = maskAt(volume, toIndex, start + t * direction);
-    if (value < 0.5) return t - step + step * (previous - 0.5) / (previous - value);
-    previous = value;
+    if (value >= 0.5) {
+      previous = value;
+      continue;
+    }
+    double inside = t - step, outside = t, insideValue = previous, outsideValue = value;
+    for (int halving = 0; halving < 2; ++halving) {
+      const double middle = 0.5 * (inside + outside);
+      const double m = maskAt(volume, toIndex, start + middle * direction);
+      if (m >= 0.5)
+        inside = middle, insideValue = m;
+      else
+        outside = middle, outsideValue = m;
+    }
+    return inside + (outside - inside) * (insideValue - 0.5) / (insideValue - outsideValue);
   }
   return kNaN;
 }
@@ -61,7 +76,7 @@ struct SectionRays {
   SectionRays(const BinaryVolume& volume, double maxRadius)
       : volume(volume),
         toIndex(volume.spacing.cwiseInverse().asDiagonal() * volume.direction.inverse()),
-        step(0.2 * volume.spacing.minCoeff()),
+        step(0.5 * volume.spacing.minCoeff()),
         limit(maxRadius > 0 ? maxRadius : 100.0 * volume.spacing.minCoeff()) {}
 
   std::vector<double> walls(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal,

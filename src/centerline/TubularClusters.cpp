@@ -1,6 +1,7 @@
 #include "centerline/TubularClusters.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -131,16 +132,33 @@ int64_t farEnd(const BinaryVolume& v, int64_t from, int& distance) {
 }  // namespace
 
 int64_t lowestVoxel(const BinaryVolume& v) {
+  // Physical z is linear in the index: z = z0 + a i + b j + c k. With a = b = 0 (axial slices, the usual
+  // case) every voxel of a slice has the same z, so the lowest slice holding a voxel holds the answer.
+  const Eigen::RowVector3d zRow = v.direction.row(2).cwiseProduct(v.spacing.transpose());
+  const double a = zRow[0], b = zRow[1], c = zRow[2];
+  const int64_t sliceSize = int64_t(v.size[0]) * v.size[1];
+  if (a == 0 && b == 0) {
+    for (int step = 0; step < v.size[2]; ++step) {
+      const int k = c >= 0 ? step : v.size[2] - 1 - step;
+      const auto begin = v.inside.begin() + long(k * sliceSize);
+      const auto found = std::find(begin, begin + long(sliceSize), uint8_t(1));
+      if (found != begin + long(sliceSize)) return k * sliceSize + (found - begin);
+    }
+    return -1;
+  }
   int64_t best = -1;
   double bestZ = INFINITY;
-  for (int64_t i = 0; i < v.voxelCount(); ++i)
-    if (v.inside[size_t(i)]) {
-      const double z = v.physical(i).z();
-      if (z < bestZ - 1e-9) {
-        bestZ = z;
-        best = i;
-      }
-    }
+  int64_t i = 0;
+  for (int k = 0; k < v.size[2]; ++k)
+    for (int y = 0; y < v.size[1]; ++y)
+      for (int x = 0; x < v.size[0]; ++x, ++i)
+        if (v.inside[size_t(i)]) {
+          const double z = a * x + b * y + c * k;
+          if (z < bestZ - 1e-9) {
+            bestZ = z;
+            best = i;
+          }
+        }
   return best;
 }
 
@@ -276,29 +294,42 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
   std::vector<std::vector<int64_t>>().swap(layers);
   if (aborted(0.8)) return r;
 
-  // Step 5: the total order: by cluster (a counting sort), then by relative position within each (stable).
+  // Step 5: the total order: by cluster (a counting sort), then by relative position within each, stable
+  // (ties keep the layer order): each cluster sorts 64-bit keys, the position's float bits made
+  // order-preserving above the member's rank in the cluster.
   {
     std::vector<size_t> start(size_t(n) + 1, 0);
     for (const Member& m : members) ++start[size_t(m.cluster) + 1];
     for (int j = 0; j < n; ++j) start[size_t(j) + 1] += start[size_t(j)];
-    std::vector<Member> sorted(members.size());
+    std::vector<uint64_t> keys(members.size());
     std::vector<size_t> at(start.begin(), start.end() - 1);
-    for (const Member& m : members) sorted[at[size_t(m.cluster)]++] = m;
+    for (size_t i = 0; i < members.size(); ++i) {
+      const size_t slot = at[size_t(members[i].cluster)]++;
+      uint32_t bits;
+      const float relative = float(members[i].relative);
+      std::memcpy(&bits, &relative, sizeof bits);
+      bits = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);  // float order as unsigned order
+      keys[slot] = (uint64_t(bits) << 32) | uint64_t(slot - start[size_t(members[i].cluster)]);
+    }
+    // The member of each key: members of a cluster in their original (layer) order.
+    std::vector<size_t> memberAt(members.size());
+    std::copy(start.begin(), start.end() - 1, at.begin());
+    for (size_t i = 0; i < members.size(); ++i) memberAt[at[size_t(members[i].cluster)]++] = i;
     const auto sortClusters = [&](int from, int to) {
       for (int j = from; j < to; ++j)
-        std::stable_sort(sorted.begin() + long(start[size_t(j)]), sorted.begin() + long(start[size_t(j) + 1]),
-                         [](const Member& a, const Member& b) { return a.relative < b.relative; });
+        std::sort(keys.begin() + long(start[size_t(j)]), keys.begin() + long(start[size_t(j) + 1]));
     };
     std::thread secondHalf(sortClusters, n / 2, n);
     sortClusters(0, n / 2);
     secondHalf.join();
-    members = std::move(sorted);
-  }
-  r.orderedVoxels.reserve(members.size());
-  r.orderedCluster.reserve(members.size());
-  for (const auto& m : members) {
-    r.orderedVoxels.push_back(m.voxel);
-    r.orderedCluster.push_back(m.cluster);
+    r.orderedVoxels.resize(members.size());
+    r.orderedCluster.resize(members.size());
+    for (int j = 0; j < n; ++j)
+      for (size_t s = start[size_t(j)]; s < start[size_t(j) + 1]; ++s) {
+        const Member& m = members[memberAt[start[size_t(j)] + size_t(keys[s] & 0xffffffffu)]];
+        r.orderedVoxels[s] = m.voxel;
+        r.orderedCluster[s] = j;
+      }
   }
   aborted(1.0);
   return r;
