@@ -112,6 +112,8 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
   const Eigen::MatrixX3d cotangents = faceCotangents(mesh.vertices, mesh.faces, minAngle).cwiseMax(0.0);
   Eigen::SparseMatrix<double> matrix = -laplacianFromCotangents(mesh.faces, cotangents, n);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, bones);
+  // A vertex on a bone (d = 0) would make H infinite: d is bounded below by a millionth of the mesh size.
+  const double smallest = 1e-6 * boundingBoxDiagonal(mesh.vertices);
   for (Eigen::Index j = 0; j < n; ++j) {
     const NearestBones& near = nearest[size_t(j)];
     const double share = 1.0 / double(near.bones.size());
@@ -121,8 +123,7 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
       continue;
     }
     if (!visible[size_t(j)]) continue;
-    // A vertex on a bone (d = 0) would make H infinite: bound d below by a millionth of the mesh size.
-    const double d = std::max(near.distance, 1e-6 * boundingBoxDiagonal(mesh.vertices));
+    const double d = std::max(near.distance, smallest);
     const double heat = mass[j] * p.heatConstant / (d * d);
     matrix.coeffRef(j, j) += heat;
     for (int bone : near.bones) rhs(j, bone) = heat * share;
