@@ -124,7 +124,8 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
     }
     if (!visible[size_t(j)]) continue;
     const double d = std::max(near.distance, smallest);
-    const double heat = mass[j] * p.heatConstant / (d * d);
+    const double ties = double(near.bones.size());  // H_jj = k c / d^2 for k equidistant bones
+    const double heat = ties * mass[j] * p.heatConstant / (d * d);
     matrix.coeffRef(j, j) += heat;
     for (int bone : near.bones) rhs(j, bone) = heat * share;
   }

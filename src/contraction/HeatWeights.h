@@ -6,8 +6,10 @@
 // and the lumped mass matrix M (a third of each vertex's one-ring area) as the symmetric system
 //     (-L_c + M H) w_i = M H p_i                                                            (14)
 // where d(j) is the distance from vertex j to its nearest bone, p_j^i = 1 when bone i is that bone (shared
-// equally among bones tied within 1e-6 of the distance), and H_jj = c / d(j)^2 when the segment from j to
-// the nearest point of that bone lies inside the mesh (the bone "sees" the vertex), 0 otherwise.
+// equally among bones tied within 1e-6 of the distance: 1/k each for k tied bones), and H_jj = k c / d(j)^2
+// (k = 1 without a tie, as Baran and Popović say for equidistant bones: a joint's vertex is held k times as
+// firmly) when the segment from j to the nearest point of that bone lies inside the mesh (the bone "sees"
+// the vertex), 0 otherwise.
 // The cotangents enter with negative values clamped to 0. Clamped angles (needed for the degenerate
 // triangles of real meshes) can make the true cotangent matrix indefinite (a 0.5/0.5/179 degree triangle
 // clamped to 1/1/179 degrees has weights 57, 57, -57: CHOLMOD refused man.off), while non-negative weights
