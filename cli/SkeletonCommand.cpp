@@ -13,6 +13,8 @@
 #include "vtkMedialContractionSkeleton.h"
 #include "vtkMedialRigWriter.h"
 
+#include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
@@ -20,10 +22,27 @@
 
 namespace medial::cli {
 
+namespace {
+
+// The contracted mesh (paper Fig. 5): the triangulated input with its points where the contraction took
+// them (the segmentation's ContractedPosition), its point data kept.
+vtkSmartPointer<vtkPolyData> contractedMesh(vtkPolyData* segmentation) {
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(segmentation);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetData(segmentation->GetPointData()->GetArray("ContractedPosition"));
+  mesh->SetPoints(points);
+  return mesh;
+}
+
+}  // namespace
+
 int runSkeleton(const std::vector<std::string>& args) {
   const ParsedArgs parsed =
       parseArgs(args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations",
-                        "--contraction-vertices"},
+                        "--contraction-vertices", "--wl0", "--sl", "--wh0", "--max-wl", "--max-wh",
+                        "--shape-weight", "--sampling-weight", "--collapse-length", "--heat", "--contracted"},
                        {"--no-refine", "--no-cycle-repair", "--weights", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("skeleton needs exactly one MESH file");
   const std::string input = parsed.positional[0];
@@ -32,6 +51,8 @@ int runSkeleton(const std::vector<std::string>& args) {
   requireWritableExtension(output, "-o");
   const std::string segmentation = parsed.value("--segmentation");
   if (!segmentation.empty()) requireWritableExtension(segmentation, "--segmentation");
+  const std::string contracted = parsed.value("--contracted");
+  if (parsed.has("--contracted")) requireWritableExtension(contracted, "--contracted");
   const std::string rig = parsed.value("--rig");
   if (parsed.has("--rig") && !vtkMedialRigWriter::CanWriteFile(rig.c_str()))
     throw UsageError(std::string("--rig must end in one of ") + vtkMedialRigWriter::GetExtensions() + ": " +
@@ -41,6 +62,16 @@ int runSkeleton(const std::vector<std::string>& args) {
   MEDIAL_OPTION(parsed, "--nodes", filter, TargetNodes);
   MEDIAL_OPTION(parsed, "--contraction-vertices", filter, ContractionVertices);
   MEDIAL_OPTION(parsed, "--iterations", filter, MaxIterations);
+  // The paper's constants (§III): W_L0 factor, s_L, W_H0, the W_L and W_H caps, w_a, w_b, delta, heat c.
+  MEDIAL_OPTION(parsed, "--wl0", filter, InitialContractionFactor);
+  MEDIAL_OPTION(parsed, "--sl", filter, ContractionScale);
+  MEDIAL_OPTION(parsed, "--wh0", filter, InitialAttractionWeight);
+  MEDIAL_OPTION(parsed, "--max-wl", filter, MaxContractionWeight);
+  MEDIAL_OPTION(parsed, "--max-wh", filter, MaxAttractionWeight);
+  MEDIAL_OPTION(parsed, "--shape-weight", filter, ShapeWeight);
+  MEDIAL_OPTION(parsed, "--sampling-weight", filter, SamplingWeight);
+  MEDIAL_OPTION(parsed, "--collapse-length", filter, CollapseLengthFraction);
+  MEDIAL_OPTION(parsed, "--heat", filter, HeatConstant);
   setNameFromOption(parsed, "--solver", filter, [&](const std::string& name) { filter->SetSolver(name); });
   if (parsed.has("--no-refine")) filter->RefineEmbeddingOff();
   if (parsed.has("--no-cycle-repair")) filter->RestoreCyclesOff();
@@ -66,6 +97,7 @@ int runSkeleton(const std::vector<std::string>& args) {
   timings.start("write");
   writePolyData(filter->GetOutput(0), output);
   if (!segmentation.empty()) writePolyData(filter->GetOutput(1), segmentation);
+  if (!contracted.empty()) writePolyData(contractedMesh(filter->GetOutput(1)), contracted);
   if (!rig.empty()) {
     auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
     auto rigErrors = medial::ErrorCollector::Watch(writer);

@@ -73,6 +73,8 @@ const std::vector<Command>& commands() {
        "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig "
        "RIG.glb|RIG.fbx]\n"
        "                       [--weights] [--solver NAME] [--iterations N] [--contraction-vertices N]\n"
+       "                       [--wl0 F] [--sl S] [--wh0 W] [--max-wl W] [--max-wh W] [--shape-weight A]\n"
+       "                       [--sampling-weight B] [--collapse-length D] [--heat C] [--contracted MESH]\n"
        "                       [--no-refine] [--no-cycle-repair] [--quiet] [--timings]\n\n"
        "Contracts MESH (.off .obj .ply .stl .vtp .vtk; polygons are triangulated) by constrained Laplacian\n"
        "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, "
@@ -94,6 +96,26 @@ const std::vector<Command>& commands() {
            "                            vertex (default " +
            number(contraction->GetContractionVertices()) +
            "; 0 contracts the mesh as it is)\n"
+           "  --wl0 F, --sl S, --wh0 W  the paper's W_L0 = F sqrt(mean face area) (default " +
+           number(contraction->GetInitialContractionFactor()) + "), s_L (" +
+           number(contraction->GetContractionScale()) + "), W_H0 (" +
+           number(contraction->GetInitialAttractionWeight()) +
+           ")\n"
+           "  --max-wl W, --max-wh W    caps on W_L and W_H (defaults " +
+           number(contraction->GetMaxContractionWeight()) + ", " +
+           number(contraction->GetMaxAttractionWeight()) +
+           ")\n"
+           "  --shape-weight A          w_a and w_b of the surgery's cost (defaults " +
+           number(contraction->GetShapeWeight()) + ", " + number(contraction->GetSamplingWeight()) +
+           ")\n"
+           "  --sampling-weight B\n"
+           "  --collapse-length D       delta: edges shorter than D x the contracted mesh's size collapse\n"
+           "                            first (default " +
+           number(contraction->GetCollapseLengthFraction()) +
+           ")\n"
+           "  --heat C                  c of the heat weights' H = c / d^2 (default " +
+           number(contraction->GetHeatConstant()) +
+           ")\n"
            "  --no-refine               keep the nodes where the contraction put them (no III.C refinement)\n"
            "  --no-cycle-repair         leave out the cycles surgery lost (by default they are put back, so\n"
            "                            that the skeleton has as many cycles as the closed mesh has genus)\n"
@@ -131,7 +153,7 @@ const std::vector<Command>& commands() {
            "  --min-part-volume MM3     smaller parts are left out (default " +
            number(tsk->GetMinimumPartVolume()) +
            ")\n"
-       "  --antecedent-width W      TSK Gaussian width relative to a cluster (default " +
+           "  --antecedent-width W      TSK Gaussian width relative to a cluster (default " +
            number(tsk->GetAntecedentWidth()) +
            ")\n"
            "  --branches                a branching structure (vessels, airways): one polyline per branch,\n"
@@ -269,7 +291,8 @@ void printHelp(FILE* out) {
                "       medial --help | --version\n\ncommands:\n",
                MEDIAL_VERSION);
   for (const Command& c : commands()) std::fprintf(out, "  %-11s %s\n", c.name, c.summary);
-  std::fprintf(out, "  %-11s %s\n", "batch", "any of these commands over many files, locally or on a Dask cluster");
+  std::fprintf(out, "  %-11s %s\n", "batch",
+               "any of these commands over many files, locally or on a Dask cluster");
   std::fprintf(out, "\nExit status: 0 success, 1 failure (one line on stderr), 2 usage error.\n");
 }
 

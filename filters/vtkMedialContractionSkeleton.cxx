@@ -37,6 +37,8 @@ vtkMedialContractionSkeleton::vtkMedialContractionSkeleton() {
   this->MaxIterations = defaults.contraction.maxIterations;
   this->ShapeWeight = defaults.surgery.shapeWeight;
   this->SamplingWeight = defaults.surgery.samplingWeight;
+  this->CollapseLengthFraction = defaults.surgery.deltaFraction;
+  this->InitialAttractionWeight = defaults.contraction.initialAttraction;
   this->RefineEmbedding = defaults.refineEmbedding;
   this->RestoreCycles = defaults.restoreCycles;
   this->ComputeWeights = defaults.computeWeights;
@@ -55,6 +57,8 @@ medial::SkeletonByContractionParameters vtkMedialContractionSkeleton::MakeParame
   p.contraction.maxIterations = this->MaxIterations;
   p.surgery.shapeWeight = this->ShapeWeight;
   p.surgery.samplingWeight = this->SamplingWeight;
+  p.surgery.deltaFraction = this->CollapseLengthFraction;
+  p.contraction.initialAttraction = this->InitialAttractionWeight;
   p.refineEmbedding = this->RefineEmbedding;
   p.restoreCycles = this->RestoreCycles;
   p.computeWeights = this->ComputeWeights;
@@ -101,6 +105,8 @@ void vtkMedialContractionSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "MaxIterations: " << this->MaxIterations << "\n";
   os << indent << "ShapeWeight: " << this->ShapeWeight << "\n";
   os << indent << "SamplingWeight: " << this->SamplingWeight << "\n";
+  os << indent << "CollapseLengthFraction: " << this->CollapseLengthFraction << "\n";
+  os << indent << "InitialAttractionWeight: " << this->InitialAttractionWeight << "\n";
   os << indent << "RefineEmbedding: " << this->RefineEmbedding << "\n";
   os << indent << "RestoreCycles: " << this->RestoreCycles << "\n";
   os << indent << "ComputeWeights: " << this->ComputeWeights << "\n";
@@ -143,6 +149,14 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   skeletonOutput->ShallowCopy(medial::polyDataFromSkeleton(result.skeleton));
   meshOutput->ShallowCopy(triangles);
   meshOutput->GetPointData()->AddArray(medial::intArray("SkeletonNode", result.vertexToNode));
+  // Where the contraction took each vertex (paper Fig. 5: the contracted mesh, before the surgery).
+  auto contracted = vtkSmartPointer<vtkDoubleArray>::New();
+  contracted->SetName("ContractedPosition");
+  contracted->SetNumberOfComponents(3);
+  contracted->SetNumberOfTuples(result.contracted.rows());
+  for (Eigen::Index v = 0; v < result.contracted.rows(); ++v)
+    for (int c = 0; c < 3; ++c) contracted->SetTypedComponent(v, c, result.contracted(v, c));
+  meshOutput->GetPointData()->AddArray(contracted);
   if (this->ComputeWeights) {
     auto weights = vtkSmartPointer<vtkDoubleArray>::New();
     weights->SetName("SkinWeights");

@@ -5,7 +5,8 @@
  * Input: a polygonal mesh (polygons and strips are triangulated; lines and vertices are ignored).
  * Output port 0: the skeleton of docs/ARCHITECTURE.md §4 (nodes, 2-point lines, `Radius`, field data `Root`).
  * Output port 1: the triangulated input mesh with point data `SkeletonNode` (int: the node that absorbed
- * each vertex, -1 for vertices no face uses), the skeleton-mesh mapping and segmentation; with
+ * each vertex, -1 for vertices no face uses), the skeleton-mesh mapping and segmentation, and
+ * `ContractedPosition` (double x 3: where the contraction took the vertex, the paper's Fig. 5); with
  * ComputeWeights on, also `SkinWeights` (double, one component per bone: component i is the weight of the
  * bone on line cell i of port 0; each tuple sums to 1), the heat-diffusion weights of section III.E. A dense
  * array was chosen over a sparse pair: 30 bones cost 240 bytes per vertex, and VTK's colouring, probing and
@@ -48,6 +49,9 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   /// s_L, the growth of W_L per iteration (default 2).
   vtkSetClampMacro(ContractionScale, double, 1.01, 10.0);
   vtkGetMacro(ContractionScale, double);
+  /// W_H0, the initial attraction weight (default 1).
+  vtkSetClampMacro(InitialAttractionWeight, double, 1e-6, 1e6);
+  vtkGetMacro(InitialAttractionWeight, double);
   /// Upper bounds of W_L and W_H (defaults 2048 and 10000).
   vtkSetClampMacro(MaxContractionWeight, double, 1.0, 1e6);
   vtkGetMacro(MaxContractionWeight, double);
@@ -61,6 +65,10 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   vtkGetMacro(ShapeWeight, double);
   vtkSetClampMacro(SamplingWeight, double, 0.0, 100.0);
   vtkGetMacro(SamplingWeight, double);
+  /// delta of the surgery's pre-pass (edges shorter collapse first), as a fraction of the contracted
+  /// mesh's bounding-box diagonal (default 0.001).
+  vtkSetClampMacro(CollapseLengthFraction, double, 0.0, 0.5);
+  vtkGetMacro(CollapseLengthFraction, double);
   /// Move nodes to the centroid of their absorbed vertices where it lies inside (default on).
   vtkSetMacro(RefineEmbedding, bool);
   vtkGetMacro(RefineEmbedding, bool);
@@ -122,6 +130,8 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   int MaxIterations;
   double ShapeWeight;
   double SamplingWeight;
+  double CollapseLengthFraction;
+  double InitialAttractionWeight;
   bool RefineEmbedding;
   bool RestoreCycles;
   bool ComputeWeights;

@@ -37,6 +37,8 @@ std::vector<Parameter> contractionParameters() {
       MEDIAL_REAL_PARAMETER(f, InitialContractionFactor, "W_L0 factor", 6,
                             "W_L0 = factor · sqrt(mean face area) (§III.A, default 1e-3)"),
       MEDIAL_REAL_PARAMETER(f, ContractionScale, "s_L", 2, "Growth of W_L per iteration (§III.A, default 2)"),
+      MEDIAL_REAL_PARAMETER(f, InitialAttractionWeight, "W_H0", 3,
+                            "Initial attraction weight (§III.A, default 1)"),
       MEDIAL_REAL_PARAMETER(f, MaxContractionWeight, "W_L cap", 0,
                             "Upper bound of W_L (§III.A, default 2048)"),
       MEDIAL_REAL_PARAMETER(f, MaxAttractionWeight, "W_H cap", 0,
@@ -46,6 +48,10 @@ std::vector<Parameter> contractionParameters() {
                             "Shape cost weight of the surgery, eq. (10) (default 1)"),
       MEDIAL_REAL_PARAMETER(f, SamplingWeight, "w_b", 3,
                             "Sampling cost weight of the surgery, eq. (10) (default 0.1)"),
+      MEDIAL_REAL_PARAMETER(
+          f, CollapseLengthFraction, "δ (collapse length)", 4,
+          "Surgery pre-pass: edges shorter than this fraction of the contracted mesh's size "
+          "collapse first (§III.B, default 0.001)"),
       MEDIAL_TOGGLE_PARAMETER(f, RefineEmbedding, "Refine embedding",
                               "Move nodes to the centre of their vertices (§III.C)"),
       MEDIAL_TOGGLE_PARAMETER(
@@ -118,6 +124,8 @@ vtkSmartPointer<vtkAlgorithm> SkeletonPanel::makeFilter(SceneObject* input, QStr
   filter->SetMaxIterations(static_cast<int>(f->value("MaxIterations")));
   filter->SetShapeWeight(f->value("ShapeWeight"));
   filter->SetSamplingWeight(f->value("SamplingWeight"));
+  filter->SetInitialAttractionWeight(f->value("InitialAttractionWeight"));
+  filter->SetCollapseLengthFraction(f->value("CollapseLengthFraction"));
   filter->SetRefineEmbedding(f->isOn("RefineEmbedding"));
   filter->SetRestoreCycles(f->isOn("RestoreCycles"));
   filter->SetComputeWeights(f->isOn("ComputeWeights"));

@@ -53,8 +53,16 @@ struct CholmodBackend : EigenBackend<Eigen::CholmodSupernodalLLT<SpMat, Eigen::L
 // SparseQR needs a compressed column-major matrix and has no separate analysis of a symmetric input.
 struct QrBackend : EigenBackend<Eigen::SparseQR<SpMat, Eigen::COLAMDOrdering<int>>> {};
 
-struct CgBackend : EigenBackend<Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper>> {
-  CgBackend() { solver.setTolerance(1e-10); }
+// Conjugate gradients preconditioned by an incomplete Cholesky factorization (Eigen's, with its own
+// diagonal shift when a pivot would not be positive). Unpreconditioned CG stalled on the contraction's
+// normal equations once W_L had grown (the elephant at iteration 10): their condition number grows with it.
+struct CgBackend
+    : EigenBackend<
+          Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>>> {
+  CgBackend() {
+    solver.setTolerance(1e-8);
+    solver.setMaxIterations(100000);
+  }
 };
 
 std::unique_ptr<SparseSolver::Backend> makeBackend(SparseSolverKind kind) {

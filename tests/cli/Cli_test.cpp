@@ -146,6 +146,41 @@ TEST(Cli, SkeletonOfTorusWritesSkeletonAndSegmentation) {
   EXPECT_EQ(render.exitCode, 0) << render.err;
 }
 
+// The paper's constants from the command line, and the contracted mesh (Fig. 5): the input's faces at the
+// contracted positions, close to the skeleton (a torus of tube radius 0.5 contracts to its core circle).
+TEST(Cli, SkeletonTakesThePapersConstantsAndWritesTheContractedMesh) {
+  const std::string dir = scratchDir("cli-skeleton-constants");
+  const std::string contracted = dir + "/contracted.vtp";
+  auto r = runCommand(medialCommand(
+      "skeleton " + dataPath("meshes/torus.off") + " -o " + dir + "/s.vtp --contracted " + contracted +
+      " --wl0 0.002 --sl 2.5 --wh0 1.5 --max-wl 1000 --max-wh 5000 --shape-weight 1 "
+      "--sampling-weight 0.2 --collapse-length 0.002 --heat 2 --weights --quiet"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  reader->SetFileName(contracted.c_str());
+  reader->Update();
+  vtkPolyData* mesh = reader->GetOutput();
+  EXPECT_EQ(mesh->GetNumberOfPolys(), 1152) << "torus.off's faces";
+  EXPECT_EQ(mesh->GetNumberOfPoints(), 576);
+  // torus.off: R = 1, r = 0.35 about the z axis. Every input vertex lies 0.35 from the core circle; the
+  // contracted ones lie near it.
+  double farthest = 0, sum = 0;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i) {
+    double p[3];
+    mesh->GetPoint(i, p);
+    const double d = std::hypot(std::hypot(p[0], p[1]) - 1.0, p[2]);
+    farthest = std::max(farthest, d);
+    sum += d;
+  }
+  EXPECT_LT(sum / double(mesh->GetNumberOfPoints()), 0.1) << "mean distance to the core circle (input: 0.35)";
+  EXPECT_LT(farthest, 0.25);
+  for (const char* bad : {"--wl0 -1", "--sl 1", "--heat 0", "--collapse-length 2", "--wh0 x"}) {
+    auto usage = runCommand(
+        medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir + "/bad.vtp --quiet " + bad));
+    EXPECT_EQ(usage.exitCode, 2) << bad << ": " << usage.err;
+  }
+}
+
 // Independent cycles of a skeleton file: lines - points + components.
 long skeletonCycles(const std::string& path) {
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
