@@ -1,6 +1,7 @@
 #include "rig/RigExport.h"
 
 #include "rig/FbxRig.h"
+#include "rig/GltfRig.h"
 #include "rig/RigBones.h"
 
 #include <assimp/Exporter.hpp>
@@ -140,6 +141,9 @@ std::string exportRig(const Rig& rig, const std::string& path, const std::string
   if (std::string problem = checkRig(rig); !problem.empty()) return problem;
   const std::vector<RigBone> bones = buildRigBones(rig.skeleton);
   if (format == "fbx") return writeFbx(rig, bones, path, options);
+  if (format == "glb2" || format == "gltf2")  // TinyGLTF: Assimp's glTF exporter is quadratic in the vertices
+    return writeGltfRig(rig, bones, keptInfluences(rig, std::min(options.maxInfluences, 4)), options.meshName,
+                        path, format == "glb2");
 
   auto scene = std::make_unique<aiScene>();
   scene->mNumMaterials = 1;
