@@ -1,7 +1,7 @@
 /**
  * @class vtkMedialRigWriter
  * @brief Writes a skinned mesh and its skeleton as a rig (contraction paper, III.F): glTF 2.0 binary
- * (.glb) or FBX (.fbx), through Assimp, for Blender, Maya, 3ds Max or a game engine.
+ * (.glb, TinyGLTF) or FBX (.fbx, Medial's writer), for Blender, Maya, 3ds Max or a game engine.
  *
  * Input port 0: the mesh with point data `SkinWeights` (one component per bone), as port 1 of
  * vtkMedialContractionSkeleton gives it with ComputeWeights on; polygons are triangulated.

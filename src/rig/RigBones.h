@@ -1,4 +1,4 @@
-// RigBones: the joints of an exported rig, shared by the glTF (Assimp) and FBX writers.
+// RigBones: the joints of an exported rig, shared by the glTF and FBX writers.
 //
 // Chosen where the contraction paper (III.F) is silent, for what animation tools expect of a rig:
 // - One root joint, "Root", at the skeleton's root node (the node the contraction chose: the highest
