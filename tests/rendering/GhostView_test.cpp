@@ -97,7 +97,10 @@ std::array<double, 3> meanColorAtCentre(vtkImageData* image, int half) {
 
 vtkSmartPointer<vtkImageData> render(vtkMedialScene* scene, const std::string& name, double azimuth = 30) {
   const int width = 320, height = 240;
-  const std::string path = scratchDir("ghost-" + name) + "/" + name;
+  // One folder per test and picture: tests run in parallel and several render a picture of the same name
+  // (two of them once removed each other's folder between the write and the rename).
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string path = scratchDir("ghost-" + test + "-" + name) + "/" + name;
   scene->ResetCamera(static_cast<double>(width) / height, azimuth, 20);
   EXPECT_TRUE(scene->RenderToImage(path.c_str(), width, height));
   vtkSmartPointer<vtkImageData> image;
