@@ -118,7 +118,6 @@ std::string writeGltfRig(const Rig& rig, const std::vector<RigBone>& bones,
     for (double value : columnMajor(bones[b].global.inverse())) inverseBind.push_back(float(value));
   const int bind = addAccessor(model, inverseBind.data(), joints.size(), 64, TINYGLTF_COMPONENT_TYPE_FLOAT,
                                TINYGLTF_TYPE_MAT4, 0);
-  model.buffers[0].uri.clear();
 
   tinygltf::Material material;
   material.name = "Material";

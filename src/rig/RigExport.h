@@ -1,9 +1,9 @@
 // RigExport: section III.F of the contraction paper. Packs the skinned mesh and its skeleton into a rig
-// file that Blender, Maya or Unity open: glTF 2.0 (.glb binary, .gltf text) written with TinyGLTF (rig/GltfRig.h), binary FBX
-// 7.4 written by Medial (rig/FbxRig.h; Assimp's FBX exporter writes files Blender refuses). The joints,
-// their names, frames and hierarchy (one root) are rig/RigBones.h's. At most `maxInfluences` bones per
-// vertex (default 4: glTF's JOINTS_0/WEIGHTS_0 carry four, as do most game engines), the largest kept and
-// renormalized to sum 1.
+// file that Blender, Maya or Unity open: glTF 2.0 (.glb binary, .gltf text) written with TinyGLTF
+// (rig/GltfRig.h), binary FBX 7.4 written by Medial (rig/FbxRig.h; Assimp's FBX exporter writes files Blender
+// refuses). The joints, their names, frames and hierarchy (one root) are rig/RigBones.h's. At most
+// `maxInfluences` bones per vertex (default 4: glTF's JOINTS_0/WEIGHTS_0 carry four, as do most game
+// engines), the largest kept and renormalized to sum 1.
 #pragma once
 
 #include "mesh/TriangleMesh.h"
@@ -25,13 +25,11 @@ struct RigExportOptions {
   std::string meshName = "Mesh";
 };
 
-// The format for a file name: .glb -> glb2, .gltf -> gltf2 (Assimp's exporter ids), .fbx -> fbx (Medial's
-// writer); empty if unknown.
+// The format for a file name: .glb -> glb2, .gltf -> gltf2, .fbx -> fbx; empty if unknown.
 std::string rigFormatForFile(const std::string& path);
 
-// Writes the rig to `path` as `format`: fbx (Medial's binary FBX), glb2 or gltf2 (TinyGLTF), or another of
-// Assimp's exporter ids (collada...). Returns an empty string on success, else the problem (bad rig,
-// unknown format, I/O).
+// Writes the rig to `path` as `format`: fbx (Medial's binary FBX), glb2 or gltf2 (TinyGLTF). Returns an
+// empty string on success, else the problem (bad rig, unknown format, I/O).
 std::string exportRig(const Rig& rig, const std::string& path, const std::string& format,
                       const RigExportOptions& options = {});
 

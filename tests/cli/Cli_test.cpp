@@ -332,8 +332,7 @@ TEST(Cli, CenterlineOfAPhantomAndItsErrors) {
 TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
   // The DICOM colon phantom: sections every 2 mm as CSV, the unfolded wall as PNG.
   const std::string dir = scratchDir("cli-colon");
-  ASSERT_EQ(
-      std::system((binaryDir() + "/bin/medial-make-colon-phantom " + dir + "/dicom > /dev/null").c_str()), 0);
+  ASSERT_TRUE(medial::test::makeColonPhantom(dir + "/dicom"));
   auto r = runCommand(medialCommand(
       "centerline " + dir + "/dicom -o " + dir + "/colon.vtp --threshold -1024:-600 " + "--profile " + dir +
       "/profile.csv --terrain " + dir + "/terrain.png " + "--section-spacing 2 --quiet"));
@@ -638,9 +637,8 @@ TEST(Cli, AWriteThatFailsMidwayLeavesNoFileBehind) {
 // and the truncated slice (which GDCM reads as garbage without complaint) is an error naming it.
 TEST(Cli, DicomFolderWithAnotherSeriesAndATruncatedSlice) {
   const std::string dir = scratchDir("cli-dicom-mixed");
-  const std::string phantom = binaryDir() + "/bin/medial-make-colon-phantom ";
-  ASSERT_EQ(std::system((phantom + dir + "/first > /dev/null").c_str()), 0);
-  ASSERT_EQ(std::system((phantom + dir + "/second > /dev/null").c_str()), 0);  // new UIDs: another series
+  ASSERT_TRUE(medial::test::makeColonPhantom(dir + "/first"));
+  ASSERT_TRUE(medial::test::makeColonPhantom(dir + "/second"));  // new UIDs: another series
   for (const char* slice : {"slice001.dcm", "slice002.dcm", "slice003.dcm"})
     std::filesystem::copy_file(dir + "/second/" + slice, dir + "/first/other-" + slice);
   const std::string command =
@@ -774,10 +772,8 @@ TEST(Cli, ColonPhantomCollapsedSegmentsAndSize) {
 // --max-gap bridges it (note, Bridged rows in the profile); bad values are usage errors.
 TEST(Cli, CenterlineNotesGapsAndBridgesThem) {
   const std::string dir = scratchDir("cli-centerline-gaps");
-  ASSERT_EQ(std::system((binaryDir() + "/bin/medial-make-colon-phantom " + dir + "/ct " + dir +
-                         "/ct.mha --collapse 1 --gap 50 --no-dicom > /dev/null")
-                            .c_str()),
-            0);
+  ASSERT_TRUE(
+      medial::test::makeColonPhantom(dir + "/ct " + dir + "/ct.mha --collapse 1 --gap 50 --no-dicom"));
   const std::string base = "centerline " + dir + "/ct.mha --threshold -1024:-600 --quiet -o " + dir;
   auto split = runCommand(medialCommand(base + "/split.vtp"));
   ASSERT_EQ(split.exitCode, 0) << split.err;

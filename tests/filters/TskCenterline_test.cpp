@@ -302,11 +302,9 @@ TEST_P(CollapsedColon, OneCenterlineBridgesEveryGap) {
   const Collapse c = GetParam();
   const std::string dir = medial::test::scratchDir("collapsed-" + std::to_string(c.count) + "-" +
                                                    std::to_string(int(c.gap)) + (c.fluid ? "-fluid" : ""));
-  ASSERT_EQ(std::system((medial::test::binaryDir() + "/bin/medial-make-colon-phantom " + dir + " " + dir +
-                         "/ct.mha --no-dicom --collapse " + std::to_string(c.count) + " --gap " +
-                         std::to_string(c.gap) + (c.fluid ? " --fluid" : "") + " > /dev/null")
-                            .c_str()),
-            0);
+  ASSERT_TRUE(medial::test::makeColonPhantom(dir + " " + dir + "/ct.mha --no-dicom --collapse " +
+                                             std::to_string(c.count) + " --gap " + std::to_string(c.gap) +
+                                             (c.fluid ? " --fluid" : "")));
   auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
   filter->SetInputData(read(dir + "/ct.mha"));
   filter->SetThreshold(-1024, -600);
@@ -404,10 +402,7 @@ INSTANTIATE_TEST_SUITE_P(TskCenterlineFilter, CollapsedColon,
 // A gap longer than MaxGap: two polylines and a note; MaxGap 0: the largest part only (the paper's input).
 TEST(TskCenterlineFilter, AGapLongerThanTheMaximumSplitsTheCenterline) {
   const std::string dir = medial::test::scratchDir("collapsed-long");
-  ASSERT_EQ(std::system((medial::test::binaryDir() + "/bin/medial-make-colon-phantom " + dir + " " + dir +
-                         "/ct.mha --no-dicom --collapse 1 --gap 60 > /dev/null")
-                            .c_str()),
-            0);
+  ASSERT_TRUE(medial::test::makeColonPhantom(dir + " " + dir + "/ct.mha --no-dicom --collapse 1 --gap 60"));
   auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
   filter->SetInputData(read(dir + "/ct.mha"));
   filter->SetThreshold(-1024, -600);

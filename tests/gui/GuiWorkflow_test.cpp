@@ -482,10 +482,7 @@ TEST_F(GuiWorkflow, DeletingAnObjectUpdatesListAndPanels) {
 TEST_F(GuiWorkflow, ColonPhantomDicomThresholdSeedCenterlineFlyThrough) {
   // The CT-like colon phantom, written as a DICOM series by its generator, opened as a folder.
   const std::string series = dir + "/colon-dicom";
-  ASSERT_EQ(
-      std::system(
-          (medial::test::binaryDir() + "/bin/medial-make-colon-phantom " + series + " > /dev/null").c_str()),
-      0);
+  ASSERT_TRUE(medial::test::makeColonPhantom(series));
   open(series);
   SceneObject* ct = window->objects()->at(0);
   ASSERT_EQ(ct->kind, SceneObject::Kind::Volume);
@@ -557,10 +554,8 @@ TEST_F(GuiWorkflow, ColonPhantomDicomThresholdSeedCenterlineFlyThrough) {
 // marked on the profile and as orange rows of the unfolded wall, and the note in the log.
 TEST_F(GuiWorkflow, CollapsedColonIsBridgedAndTheBridgesShow) {
   const std::string volume = dir + "/collapsed.mha";
-  ASSERT_EQ(std::system((medial::test::binaryDir() + "/bin/medial-make-colon-phantom " + dir + "/collapsed " +
-                         volume + " --collapse 2 --gap 12 --no-dicom > /dev/null")
-                            .c_str()),
-            0);
+  ASSERT_TRUE(
+      medial::test::makeColonPhantom(dir + "/collapsed " + volume + " --collapse 2 --gap 12 --no-dicom"));
   open(volume);
   CenterlinePanel* panel = window->centerlinePanel();
   window->filterTabs()->setCurrentIndex(2);
@@ -582,8 +577,7 @@ TEST_F(GuiWorkflow, CollapsedColonIsBridgedAndTheBridgesShow) {
   const QImage& terrain = panel->terrainImage();
   ASSERT_FALSE(terrain.isNull());
   int orangeColumns = 0;  // sections run across the picture
-  for (int x = 0; x < terrain.width(); ++x)
-    orangeColumns += terrain.pixel(x, 0) == qRgb(255, 140, 0);
+  for (int x = 0; x < terrain.width(); ++x) orangeColumns += terrain.pixel(x, 0) == qRgb(255, 140, 0);
   EXPECT_GT(orangeColumns, 10);
   window->resetCamera();
   EXPECT_GT(screenshot("collapsed-colon"), 0.05);
@@ -778,10 +772,7 @@ TEST_F(GuiWorkflow, WindowLayoutIsRestoredInTheNextSession) {
 // turning (a 20 ms timer goes on firing).
 TEST_F(GuiWorkflow, FullSizeCtScrollsAndRunsTheCenterlineWithoutFreezing) {
   const std::string volume = dir + "/full-ct.mha";
-  ASSERT_EQ(std::system((medial::test::binaryDir() + "/bin/medial-make-colon-phantom " + dir + "/full-ct " +
-                         volume + " --size 512x512x400 --no-dicom > /dev/null")
-                            .c_str()),
-            0);
+  ASSERT_TRUE(medial::test::makeColonPhantom(dir + "/full-ct " + volume + " --size 512x512x400 --no-dicom"));
   QElapsedTimer clock;
   clock.start();
   open(volume);

@@ -52,11 +52,11 @@ TEST(RigExport, BonesFollowTheHierarchyFromTheRoot) {
             (std::vector<std::string>{"Root", "Bone_0_0_1", "Bone_1_1_2", "Bone_2_1_3"}));
 }
 
-// (Assimp exporter id, file extension)
+// (format, file extension)
 class RigRoundTrip : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
 
 TEST_P(RigRoundTrip, BonesAndWeightSumsSurvive) {
-  // glTF through Assimp's exporter, FBX through Medial's writer; both read back with Assimp's importers.
+  // glTF through TinyGLTF, FBX through Medial's writer; both read back with Assimp's importers.
   const std::string format = GetParam().first;
   const std::string path = scratch(std::string("tube.") + GetParam().second);
   const medial::Rig rig = tubeRig();
@@ -84,7 +84,8 @@ TEST(RigExport, BinaryFbxHasTheHeaderVersionAndFooterReadersCheck) {
   ASSERT_GT(bytes.size(), 10000u);
   EXPECT_EQ(bytes.substr(0, 23), std::string("Kaydara FBX Binary  \0\x1a\0", 23));
   EXPECT_EQ(bytes.substr(23, 4), std::string("\xe8\x1c\0\0", 4));  // 7400
-  EXPECT_EQ(bytes.substr(bytes.size() - 16), std::string("\xf8\x5a\x8c\x6a\xde\xf5\xd9\x7e\xec\xe9\x0c\xe3\x75\x8f\x29\x0b", 16));
+  EXPECT_EQ(bytes.substr(bytes.size() - 16),
+            std::string("\xf8\x5a\x8c\x6a\xde\xf5\xd9\x7e\xec\xe9\x0c\xe3\x75\x8f\x29\x0b", 16));
   std::remove(path.c_str());
 }
 
@@ -102,7 +103,8 @@ TEST(RigExport, BadRigsAreRefused) {
   // (its empty bone list once leaked).
   medial::Rig nan = tubeRig();
   nan.weights(5, 1) = std::nan("");
-  EXPECT_NE(medial::exportRig(nan, scratch("bad.glb"), "glb2").find("vertex 5 for bone 1"), std::string::npos);
+  EXPECT_NE(medial::exportRig(nan, scratch("bad.glb"), "glb2").find("vertex 5 for bone 1"),
+            std::string::npos);
   medial::Rig negative = tubeRig();
   negative.weights(0, 0) = -0.5;
   EXPECT_NE(medial::exportRig(negative, scratch("bad.glb"), "glb2"), "");

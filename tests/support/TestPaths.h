@@ -24,6 +24,13 @@ inline std::string scratchDir(const std::string& name) {
   return dir;
 }
 
+// Runs `medial-make-colon-phantom ARGUMENTS` (output directory, optional volume file, options) quietly;
+// true when it succeeded.
+inline bool makeColonPhantom(const std::string& arguments) {
+  return std::system(
+             (binaryDir() + "/bin/medial-make-colon-phantom " + arguments + " > /dev/null").c_str()) == 0;
+}
+
 inline bool hasDisplay() {
   const char* display = std::getenv("DISPLAY");
   return display && *display;
