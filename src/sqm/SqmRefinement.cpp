@@ -1,114 +1,93 @@
 #include "sqm/SqmRefinement.h"
 
 #include "mesh/SelfIntersections.h"
+#include "sqm/SweptSpheres.h"
 
-#include <Eigen/LU>
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
-#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
+#include <Eigen/Geometry>
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <vector>
 
 namespace medial {
 
 namespace {
 
-struct Traits : public OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-  using Normal = OpenMesh::Vec3d;
-};
-using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<Traits>;
+namespace Far = OpenSubdiv::Far;
+namespace Sdc = OpenSubdiv::Sdc;
 
-Eigen::Vector3d toEigen(const PolyMesh::Point& p) { return {p[0], p[1], p[2]}; }
-
-// The width of the blend of cone projections (nearestCone), in radii of the nearest cone. Refined twice,
+// The width of the blend of projections (nearestSurface), in radii of the nearest surface. Refined twice,
 // intersecting pairs of the humanoid / fish / figure / octopus: no blend 490 / 15 / 168 / 24; 0.2: 94 / 22
 // / 31 / 0; 0.8: 16 / 24 / 14 / 0. (Blending on the outer side of bends as well cut them further, to 23 /
 // 0 / 26 / 0 at 0.2, but grooved every tentacle at its nodes and sharpened the octopus's head.)
-constexpr double kConeBlend = 0.8;
+constexpr double kSurfaceBlend = 0.8;
+// A point in a crease is blended again from where the blend put it, this many times: each blend halves
+// its remaining depth below the crease (a fillet 0.2 r deep at a right angle after one, 0.05 r after three).
+constexpr int kCreaseIterations = 2;
 
-struct ConePoint {
-  Eigen::Vector3d axis, radial;     // radial: unit vector from the axis towards the point
-  double radius = 0, distance = 0;  // the cone's radius along `radial`; the point's distance from the axis
-  bool found = false;
-  Eigen::Vector3d onSurface() const { return axis + radius * radial; }
-};
-
-// A point's radial projection onto the truncated cone of skeleton edge `edge`. With ellipsoid nodes
-// (extension 3) the cone is a generalized one: its cross-sections interpolate the two ends' ellipsoid
-// matrices, and the radius along a direction u is 1 / |M(t)^-1 u| (r for M = r I).
-ConePoint conePoint(const Eigen::Vector3d& p, const Skeleton& s, size_t edge) {
-  const auto& e = s.edges[edge];
-  const Eigen::Vector3d a = s.nodes[size_t(e[0])], b = s.nodes[size_t(e[1])];
-  const Eigen::Vector3d ab = b - a;
-  const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
-  ConePoint cone;
-  cone.axis = a + t * ab;
-  const Eigen::Vector3d radial = p - cone.axis;
-  cone.distance = radial.norm();
-  cone.radius = (1 - t) * s.radii[size_t(e[0])] + t * s.radii[size_t(e[1])];
-  if (cone.distance <= 1e-12 * cone.radius) return cone;
-  cone.radial = radial / cone.distance;
-  if (!s.ellipsoidAxes.empty()) {
-    const Eigen::Matrix3d m = (1 - t) * s.ellipsoidAxes[size_t(e[0])] + t * s.ellipsoidAxes[size_t(e[1])];
-    const Eigen::Vector3d local = m.fullPivLu().solve(cone.radial);
-    if (local.norm() > 0) cone.radius = 1 / local.norm();
-  }
-  cone.found = true;
-  return cone;
-}
-
-// The cone whose surface lies nearest to p (radial projection), and in `placed` where p goes: that
-// projection, blended where another cone's surface lies about as near and the projection lies inside that
-// cone - the inner side of a bend, tubes crowding a branch node, where a point snapped to one cone or the
-// other and neighbouring points folded over each other. Weights exp(-(gap - nearest gap) / (kConeBlend r)),
-// r the nearest cone's radius: a rounded crease where two cones meet. On the outer side of a bend (the
-// projection outside the other cone) nothing is blended: a chord there would groove the tube at every node.
-ConePoint nearestCone(const Eigen::Vector3d& p, const Skeleton& s, Eigen::Vector3d& placed) {
-  std::vector<ConePoint> cones;
+// The edge whose swept surface lies nearest to p among `edges`, and in `placed` where p goes: that
+// projection, blended where another edge's surface lies about as near and the projection lies inside
+// that edge's volume - the inner side of a bend, tubes crowding a branch node, where a point snapped to
+// one surface or the other and neighbouring points folded over each other. Weights exp(-(gap - nearest
+// gap) / (kSurfaceBlend r)), r the nearest surface's radius: a rounded crease where two tubes meet. On the
+// outer side of a bend (the projection outside the other volume) nothing is blended: a chord there would
+// groove the tube at every node.
+SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres, const std::vector<int>& edges,
+                          Eigen::Vector3d& placed) {
+  std::vector<SweptPoint> projections;
   size_t nearest = 0;
-  for (size_t e = 0; e < s.edges.size(); ++e) {
-    cones.push_back(conePoint(p, s, e));
-    auto gap = [](const ConePoint& c) { return std::abs(c.distance - c.radius); };
-    if (cones[e].found && (!cones[nearest].found || gap(cones[e]) < gap(cones[nearest]))) nearest = e;
+  auto gap = [](const SweptPoint& c) { return std::abs(c.signedDistance()); };
+  for (size_t k = 0; k < edges.size(); ++k) {
+    projections.push_back(spheres.project(p, edges[k]));
+    if (projections[k].found && (!projections[nearest].found || gap(projections[k]) < gap(projections[nearest])))
+      nearest = k;
   }
-  if (cones.empty() || !cones[nearest].found) return {};
-  const ConePoint& best = cones[nearest];
+  if (projections.empty() || !projections[nearest].found) return {};
+  const SweptPoint& best = projections[nearest];
   const Eigen::Vector3d onBest = best.onSurface();
-  const double bestGap = std::abs(best.distance - best.radius), sigma = kConeBlend * best.radius;
+  const double sigma = kSurfaceBlend * best.radius;
   Eigen::Vector3d sum = onBest;
   double weights = 1;
-  for (size_t e = 0; e < cones.size(); ++e) {
-    if (e == nearest || !cones[e].found) continue;
-    const double w = std::exp(-(std::abs(cones[e].distance - cones[e].radius) - bestGap) / sigma);
+  for (size_t k = 0; k < projections.size(); ++k) {
+    if (k == nearest || !projections[k].found) continue;
+    const double w = std::exp(-(gap(projections[k]) - gap(best)) / sigma);
     if (w < 1e-6) continue;
-    const ConePoint around = conePoint(onBest, s, e);
+    const SweptPoint around = spheres.project(onBest, edges[k]);
     if (!around.found || around.distance >= around.radius) continue;  // outside it: the outer side
-    sum += w * cones[e].onSurface();
+    sum += w * projections[k].onSurface();
     weights += w;
   }
   placed = sum / weights;
   return best;
 }
 
+Eigen::Vector3d newellNormal(const SqmMesh& mesh, const std::vector<int>& face) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (size_t k = 0; k < face.size(); ++k)
+    n += mesh.vertices[size_t(face[k])].cross(mesh.vertices[size_t(face[(k + 1) % face.size()])]);
+  return n;
+}
+
 // Base vertices where two faces sharing an edge fold to an acute angle (normals > 90 degrees apart).
-std::vector<Eigen::Vector3d> sharpVertices(PolyMesh& poly) {
-  poly.request_face_normals();
-  poly.update_face_normals();
-  std::vector<bool> sharp(poly.n_vertices(), false);
-  for (auto e : poly.edges()) {
-    if (poly.is_boundary(e)) continue;
-    const auto h = poly.halfedge_handle(e, 0);
-    const auto n0 = poly.normal(poly.face_handle(h)),
-               n1 = poly.normal(poly.face_handle(poly.opposite_halfedge_handle(h)));
-    if (OpenMesh::dot(n0, n1) < 0)
-      sharp[size_t(poly.to_vertex_handle(h).idx())] = sharp[size_t(poly.from_vertex_handle(h).idx())] = true;
+std::vector<Eigen::Vector3d> sharpVertices(const SqmMesh& mesh) {
+  std::map<std::pair<int, int>, Eigen::Vector3d> firstNormal;
+  std::vector<bool> sharp(mesh.vertices.size(), false);
+  for (const auto& f : mesh.faces) {
+    const Eigen::Vector3d n = newellNormal(mesh, f);
+    for (size_t k = 0; k < f.size(); ++k) {
+      const int a = f[k], b = f[(k + 1) % f.size()];
+      const auto key = std::minmax(a, b);
+      const auto [it, inserted] = firstNormal.emplace(key, n);
+      if (!inserted && it->second.dot(n) < 0) sharp[size_t(a)] = sharp[size_t(b)] = true;
+    }
   }
-  poly.release_face_normals();
   std::vector<Eigen::Vector3d> points;
-  for (auto v : poly.vertices())
-    if (sharp[size_t(v.idx())]) points.push_back(toEigen(poly.point(v)));
+  for (size_t v = 0; v < sharp.size(); ++v)
+    if (sharp[v]) points.push_back(mesh.vertices[v]);
   return points;
 }
 
@@ -128,42 +107,110 @@ double sharpScaleFactor(double t, double s) {
 
 namespace {
 
-// Fold repair (beyond the paper): the projection onto the cones can fold the refined surface where
-// cones of different edges crowd (a thin tube leaving a flat ellipsoid, a right-angle bend), while the
-// plain Catmull-Clark points of a base mesh that does not cut itself hardly ever do. Each vertex of a
-// face that cuts another goes back halfway from its projection towards its Catmull-Clark point, as often
-// as needed (at most kFoldRepairSteps times, then all the way); every other vertex stays on its cone.
+// Fold repair (beyond the paper): the projection onto the swept surfaces can fold the refined surface
+// where tubes of different edges crowd (a thin tube leaving a flat ellipsoid, a right-angle bend), while
+// the base mesh's faces tessellated without projection lie on the base mesh, which does not cut itself.
+// Each vertex of a face that cuts another goes back halfway from its projection towards that unprojected
+// point, as often as needed (at most kFoldRepairSteps times, then all the way); every other vertex stays on
+// its surface.
 constexpr int kFoldRepairSteps = 6;
+constexpr int kFoldSmoothingSteps = 10;
 
-int repairFolds(PolyMesh& poly, const std::vector<Eigen::Vector3d>& smooth,
-                const std::vector<Eigen::Vector3d>& projected) {
-  std::vector<std::vector<int>> faces;
-  for (auto f : poly.faces()) {
-    faces.emplace_back();
-    for (auto v : poly.fv_range(f)) faces.back().push_back(v.idx());
+// The vertices of faces that cut another face (exact test); empty when none does.
+std::vector<bool> verticesOfCuttingFaces(const std::vector<Eigen::Vector3d>& points,
+                                         const std::vector<std::vector<int>>& faces) {
+  const auto pairs = selfIntersectingFaces(points, faces);
+  if (pairs.empty()) return {};
+  std::vector<bool> folded(points.size(), false);
+  for (const auto& [a, b] : pairs)
+    for (int f : {a, b})
+      for (int v : faces[size_t(f)]) folded[size_t(v)] = true;
+  return folded;
+}
+
+std::vector<std::vector<int>> vertexNeighbours(const std::vector<std::vector<int>>& faces, size_t vertices) {
+  std::vector<std::vector<int>> neighbours(vertices);
+  for (const auto& f : faces)
+    for (size_t k = 0; k < f.size(); ++k) {
+      const int a = f[k], b = f[(k + 1) % f.size()];
+      neighbours[size_t(a)].push_back(b);
+      neighbours[size_t(b)].push_back(a);
+    }
+  for (auto& n : neighbours) {  // each edge is seen from both of its faces
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
   }
-  std::vector<Eigen::Vector3d> points = projected;
-  std::vector<double> weight(points.size(), 1.0);  // 1: on the cone, 0: the Catmull-Clark point
+  return neighbours;
+}
+
+int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& flat,
+                std::vector<Eigen::Vector3d>& points) {
+  const std::vector<Eigen::Vector3d> projected = points;
+  std::vector<double> weight(points.size(), 1.0);  // 1: projected, 0: on the base mesh
   int moved = 0;
   for (int step = 0; step <= kFoldRepairSteps; ++step) {
-    const auto pairs = selfIntersectingFaces(points, faces);
-    if (pairs.empty()) break;
-    std::vector<bool> folded(points.size(), false);
-    for (const auto& [a, b] : pairs)
-      for (int f : {a, b})
-        for (int v : faces[size_t(f)]) folded[size_t(v)] = true;
+    const std::vector<bool> folded = verticesOfCuttingFaces(points, faces);
+    if (folded.empty()) return moved;
     for (size_t v = 0; v < points.size(); ++v) {
       if (!folded[v]) continue;
       moved += weight[v] == 1.0;
       weight[v] = step < kFoldRepairSteps ? 0.5 * weight[v] : 0.0;
-      points[v] = smooth[v] + weight[v] * (projected[v] - smooth[v]);
+      points[v] = flat[v] + weight[v] * (projected[v] - flat[v]);
     }
   }
-  for (auto v : poly.vertices()) {
-    const Eigen::Vector3d& p = points[size_t(v.idx())];
-    poly.set_point(v, PolyMesh::Point(p.x(), p.y(), p.z()));
+  // A fold of the base mesh itself (two faces almost coplanar across a sharp vertex, once on the hand
+  // sample) shows once its quads are split: the vertices still folded move to the centroid of their
+  // neighbours, at most kFoldSmoothingSteps times.
+  const auto neighbours = vertexNeighbours(faces, points.size());
+  for (int step = 0; step < kFoldSmoothingSteps; ++step) {
+    const std::vector<bool> folded = verticesOfCuttingFaces(points, faces);
+    if (folded.empty()) break;
+    const std::vector<Eigen::Vector3d> before = points;
+    for (size_t v = 0; v < points.size(); ++v) {
+      if (!folded[v] || neighbours[v].empty()) continue;
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (int n : neighbours[v]) sum += before[size_t(n)];
+      points[v] = sum / double(neighbours[v].size());
+    }
   }
   return moved;
+}
+
+// A vertex as OpenSubdiv's PrimvarRefiner interpolates it.
+struct RefinedPoint {
+  Eigen::Vector3d p;
+  void Clear(void* = nullptr) { p.setZero(); }
+  void AddWithWeight(const RefinedPoint& source, double weight) { p += weight * source.p; }
+};
+
+std::unique_ptr<Far::TopologyRefiner> bilinearRefiner(const SqmMesh& mesh, int levels) {
+  std::vector<int> counts, indices;
+  for (const auto& f : mesh.faces) {
+    counts.push_back(int(f.size()));
+    indices.insert(indices.end(), f.begin(), f.end());
+  }
+  Far::TopologyDescriptor descriptor;
+  descriptor.numVertices = int(mesh.vertices.size());
+  descriptor.numFaces = int(mesh.faces.size());
+  descriptor.numVertsPerFace = counts.data();
+  descriptor.vertIndicesPerFace = indices.data();
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  std::unique_ptr<Far::TopologyRefiner> refiner(
+      Factory::Create(descriptor, Factory::Options(Sdc::SCHEME_BILINEAR, Sdc::Options())));
+  if (!refiner) return nullptr;
+  Far::TopologyRefiner::UniformOptions uniform(levels);
+  uniform.fullTopologyInLastLevel = true;
+  refiner->RefineUniform(uniform);
+  return refiner;
+}
+
+std::vector<std::vector<int>> levelFaces(const Far::TopologyLevel& level) {
+  std::vector<std::vector<int>> faces(size_t(level.GetNumFaces()));
+  for (int f = 0; f < level.GetNumFaces(); ++f) {
+    const auto vertices = level.GetFaceVertices(f);
+    faces[size_t(f)].assign(vertices.begin(), vertices.end());
+  }
+  return faces;
 }
 
 }  // namespace
@@ -171,60 +218,83 @@ int repairFolds(PolyMesh& poly, const std::vector<Eigen::Vector3d>& smooth,
 int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling,
                   bool foldRepair, int* repairedVertices) {
   if (levels <= 0 || mesh.faces.empty()) return 0;
-  PolyMesh poly;
-  std::vector<PolyMesh::VertexHandle> handles;
-  for (const auto& v : mesh.vertices)
-    handles.push_back(poly.add_vertex(PolyMesh::Point(v.x(), v.y(), v.z())));
-  for (const auto& f : mesh.faces) {
-    std::vector<PolyMesh::VertexHandle> face;
-    for (int v : f) face.push_back(handles[size_t(v)]);
-    poly.add_face(face);
+  const auto refiner = bilinearRefiner(mesh, levels);
+  if (!refiner) return 0;
+  const SweptSpheres spheres(skeleton);
+  // The edges each base face can project onto: those whose swept volume comes within a radius of it.
+  const double largestRadius = *std::max_element(skeleton.radii.begin(), skeleton.radii.end());
+  std::vector<std::vector<int>> nearEdges;
+  for (size_t f = 0; f < mesh.faces.size(); ++f) {
+    Eigen::Vector3d low = mesh.vertices[size_t(mesh.faces[f][0])], high = low;
+    double radius = 0;
+    for (int v : mesh.faces[f]) {
+      low = low.cwiseMin(mesh.vertices[size_t(v)]);
+      high = high.cwiseMax(mesh.vertices[size_t(v)]);
+      const int node = v < int(mesh.vertexNode.size()) ? mesh.vertexNode[size_t(v)] : -1;
+      radius = std::max(radius, node >= 0 ? skeleton.radii[size_t(node)] : largestRadius);
+    }
+    nearEdges.push_back(spheres.edgesNear(low, high, radius));
   }
-  const std::vector<Eigen::Vector3d> sharp =
-      scaling.enabled ? sharpVertices(poly) : std::vector<Eigen::Vector3d>{};
-  OpenMesh::Subdivider::Uniform::CatmullClarkT<PolyMesh> catmullClark;
-  for (int level = 0; level < levels; ++level) {
-    catmullClark.attach(poly);
-    catmullClark(1);
-    catmullClark.detach();
-    std::vector<Eigen::Vector3d> smooth, projected;
-    for (auto v : poly.vertices()) {
-      const Eigen::Vector3d p = toEigen(poly.point(v));
-      smooth.push_back(p);
-      Eigen::Vector3d q;
-      const ConePoint cone = nearestCone(p, skeleton, q);
-      if (!cone.found)
-        q = p;
-      else if (!sharp.empty())  // the paper's scaling, on the nearest cone
-        q = cone.axis +
-            cone.radius * sharpScaleFactor(distanceToNearest(p, sharp) / cone.radius, scaling.minimumScale) *
-                cone.radial;
+  const std::vector<Eigen::Vector3d> sharp = scaling.enabled ? sharpVertices(mesh) : std::vector<Eigen::Vector3d>{};
+
+  std::vector<RefinedPoint> points, onBase;  // projected, and the base mesh's tessellation
+  for (const auto& v : mesh.vertices) points.push_back({v});
+  onBase = points;
+  std::vector<int> baseFace(mesh.faces.size());
+  for (size_t f = 0; f < baseFace.size(); ++f) baseFace[f] = int(f);
+  const Far::PrimvarRefinerReal<double> primvars(*refiner);
+  for (int level = 1; level <= levels; ++level) {
+    const Far::TopologyLevel& topology = refiner->GetLevel(level);
+    std::vector<RefinedPoint> next(size_t(topology.GetNumVertices()));
+    primvars.Interpolate(level, points, next);
+    std::vector<RefinedPoint> nextOnBase(next.size());
+    primvars.Interpolate(level, onBase, nextOnBase);
+    std::vector<int> nextBaseFace(size_t(topology.GetNumFaces()));
+    primvars.InterpolateFaceUniform(level, baseFace, nextBaseFace);
+    // The paper's tessellation: the bilinear points of the faces, projected onto the swept surfaces.
+    std::vector<Eigen::Vector3d> flat, projected;
+    for (int v = 0; v < topology.GetNumVertices(); ++v) {
+      const Eigen::Vector3d p = next[size_t(v)].p;
+      const std::vector<int>& edges = nearEdges[size_t(nextBaseFace[size_t(topology.GetVertexFaces(v)[0])])];
+      Eigen::Vector3d q = p;
+      const SweptPoint surface = nearestSurface(p, spheres, edges, q);
+      for (int again = 0; again < kCreaseIterations && surface.found; ++again) {  // into the crease
+        const Eigen::Vector3d from = q;
+        nearestSurface(from, spheres, edges, q);
+      }
+      if (surface.found && !sharp.empty())  // the paper's scaling, on the nearest surface
+        q = surface.centre + surface.radius *
+                                 sharpScaleFactor(distanceToNearest(p, sharp) / surface.radius, scaling.minimumScale) *
+                                 surface.direction;
+      flat.push_back(nextOnBase[size_t(v)].p);
       projected.push_back(q);
-      poly.set_point(v, PolyMesh::Point(q.x(), q.y(), q.z()));
     }
     if (foldRepair) {
-      const int moved = repairFolds(poly, smooth, projected);
+      const int moved = repairFolds(levelFaces(topology), flat, projected);
       if (repairedVertices) *repairedVertices += moved;
     }
+    for (size_t v = 0; v < next.size(); ++v) next[v].p = projected[v];
+    points = std::move(next);
+    onBase = std::move(nextOnBase);
+    baseFace = std::move(nextBaseFace);
   }
-  // Back to plain arrays; a vertex belongs to the node nearest to it.
+  // Back to plain arrays; a vertex belongs to the nearest node among the ends of its face's edges.
+  const Far::TopologyLevel& last = refiner->GetLevel(levels);
+  mesh.faces = levelFaces(last);
   mesh.vertices.clear();
-  mesh.faces.clear();
   mesh.vertexNode.clear();
-  for (auto v : poly.vertices()) {
-    const auto& p = poly.point(v);
-    mesh.vertices.emplace_back(p[0], p[1], p[2]);
-    int nearest = 0;
-    for (int k = 1; k < skeleton.nodeCount(); ++k)
-      if ((skeleton.nodes[size_t(k)] - mesh.vertices.back()).squaredNorm() <
-          (skeleton.nodes[size_t(nearest)] - mesh.vertices.back()).squaredNorm())
-        nearest = k;
+  for (int v = 0; v < last.GetNumVertices(); ++v) {
+    const Eigen::Vector3d& p = points[size_t(v)].p;
+    mesh.vertices.push_back(p);
+    int nearest = -1;
+    auto distance = [&](int node) { return (skeleton.nodes[size_t(node)] - p).squaredNorm(); };
+    for (int e : nearEdges[size_t(baseFace[size_t(last.GetVertexFaces(v)[0])])])
+      for (int node : skeleton.edges[size_t(e)])
+        if (nearest < 0 || distance(node) < distance(nearest)) nearest = node;
+    if (nearest < 0)  // no edge near: a lone node's sphere
+      for (int node = 0; node < skeleton.nodeCount(); ++node)
+        if (nearest < 0 || distance(node) < distance(nearest)) nearest = node;
     mesh.vertexNode.push_back(nearest);
-  }
-  for (auto f : poly.faces()) {
-    std::vector<int> face;
-    for (auto v : poly.fv_range(f)) face.push_back(v.idx());
-    mesh.faces.push_back(face);
   }
   return int(sharp.size());
 }

@@ -163,7 +163,7 @@ TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {
 
 TEST(SqmFilter, FoldRepairUndoesTheFoldsOfTheConeProjection) {
   // The fish refined twice: its pectoral fins leave a flat ellipsoid, and projecting onto the cones
-  // there folds the surface (24 intersecting triangle pairs without the repair).
+  // there folds the surface (intersecting triangle pairs without the repair).
   auto reader = vtkSmartPointer<vtkMedialReader>::New();
   reader->SetFileName(medial::test::dataPath("skeletons/sqm/fish.vtp").c_str());
   auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
@@ -177,8 +177,9 @@ TEST(SqmFilter, FoldRepairUndoesTheFoldsOfTheConeProjection) {
   sqm->Update();
   EXPECT_EQ(selfIntersectingPairs(sqm->GetOutput()), 0u);
   EXPECT_GT(sqm->GetFoldRepairedVertices(), 0);
-  // Few vertices move: the rest stay on their cones.
-  EXPECT_LT(sqm->GetFoldRepairedVertices(), sqm->GetOutput()->GetNumberOfPoints() / 20);
+  // Few vertices move: the rest stay on their swept surfaces (measured 254 of 2,700 with the bilinear
+  // tessellation and its creases pulled in; under 5 % when Catmull-Clark smoothed the surface first).
+  EXPECT_LT(sqm->GetFoldRepairedVertices(), sqm->GetOutput()->GetNumberOfPoints() / 10);
 }
 
 INSTANTIATE_TEST_SUITE_P(

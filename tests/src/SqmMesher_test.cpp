@@ -6,6 +6,7 @@
 #include "sqm/SkeletonStraightening.h"
 #include "sqm/SqmMesher.h"
 #include "sqm/SqmRefinement.h"
+#include "sqm/SweptSpheres.h"
 
 #include <gtest/gtest.h>
 
@@ -309,7 +310,7 @@ TEST(SqmMesher, CyclesAreCutAndClosed) {
   expectClosedQuadDominant(triangle, r, 1, 1);
 }
 
-TEST(SqmMesher, CatmullClarkRefinementStaysClosedOnTheCones) {
+TEST(SqmMesher, RefinementStaysClosedOnTheSweptSpheres) {
   for (const auto& s : {starSkeleton(), ySkeleton()}) {
     medial::SqmParameters p;
     p.subdivisionLevels = 2;
@@ -318,7 +319,7 @@ TEST(SqmMesher, CatmullClarkRefinementStaysClosedOnTheCones) {
     const medial::MeshTopology t = topologyOf(fine.mesh);
     EXPECT_EQ(t.borderEdges + t.nonManifoldEdges, 0);
     EXPECT_EQ(t.eulerCharacteristic, 2);
-    EXPECT_EQ(fine.mesh.quadCount(), int(fine.mesh.faces.size()));  // Catmull-Clark makes quads only
+    EXPECT_EQ(fine.mesh.quadCount(), int(fine.mesh.faces.size()));  // the tessellation makes quads only
     // Two levels: each n-gon becomes n quads, each quad four.
     size_t expected = 0;
     for (const auto& f : coarse.mesh.faces) expected += f.size() * 4;
@@ -329,14 +330,13 @@ TEST(SqmMesher, CatmullClarkRefinementStaysClosedOnTheCones) {
     // where the quads of the paired fans run from the ring to the apex inside the tube: 74 % with the
     // paper's triangle fans, whose refined tips stay flat discs).
     int onACone = 0;
+    const medial::SweptSpheres swept(s);
     for (const auto& v : fine.mesh.vertices) {
       double gap = INFINITY, deepest = INFINITY;
-      for (const auto& e : s.edges) {
-        const Eigen::Vector3d a = s.nodes[size_t(e[0])], ab = s.nodes[size_t(e[1])] - a;
-        const double t = std::clamp((v - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-        const double r = (1 - t) * s.radii[size_t(e[0])] + t * s.radii[size_t(e[1])];
-        gap = std::min(gap, std::abs((v - (a + t * ab)).norm() - r));
-        deepest = std::min(deepest, (v - (a + t * ab)).norm() - r);
+      for (int e = 0; e < s.edgeCount(); ++e) {
+        const double d = swept.project(v, e).signedDistance();
+        gap = std::min(gap, std::abs(d));
+        deepest = std::min(deepest, d);
       }
       EXPECT_LT(deepest, 1e-9);
       onACone += gap < 1e-9;
@@ -382,11 +382,8 @@ TEST(SqmRefinement, SharpScalingShrinksTheConesOnlyNearSharpVertices) {
     for (const auto& v :
          mesh.vertices) {  // on a cone, or (scaled, or in a crease) inside one, never outside all
       double nearest = INFINITY, deepest = INFINITY;  // |distance| to the nearest cone; signed, deepest
-      for (const auto& e : s.edges) {
-        const Eigen::Vector3d a = s.nodes[size_t(e[0])], ab = s.nodes[size_t(e[1])] - a;
-        const double t = std::clamp((v - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-        const double r = (1 - t) * s.radii[size_t(e[0])] + t * s.radii[size_t(e[1])];
-        const double d = (v - (a + t * ab)).norm() - r;
+      for (int e = 0; e < s.edgeCount(); ++e) {
+        const double d = medial::SweptSpheres(s).project(v, e).signedDistance();
         nearest = std::min(nearest, std::abs(d));
         deepest = std::min(deepest, d);
       }
