@@ -2,8 +2,10 @@
 // run. Per skeleton: nodes, output faces, quad share and median time of each, the ratio tube / SQM, and
 // the open (border) and non-manifold edges of each output - SQM's is one closed surface, the tube filter's
 // is one open tube per line cell. The paper's Table 1: 74 ms for 150 nodes (goal: >= 10x faster).
+// Then the refined rows: K = 2, 3, 4 levels per skeleton, time, faces, quad share, intersecting pairs.
 //   medial_bench_sqm [--repeat N] [SKELETON...]   (default: data/skeletons/sqm/*.vtp, figure, hand)
 #include "MedianSeconds.h"
+#include "mesh/SelfIntersections.h"
 #include "vtkMedialMeshTopology.h"
 #include "vtkMedialReader.h"
 #include "vtkMedialSQM.h"
@@ -43,6 +45,50 @@ Summary summarize(vtkPolyData* mesh) {
     quads += mesh->GetCell(c)->GetNumberOfPoints() == 4;
   s.quadShare = s.faces ? double(quads) / double(s.faces) : 0;
   return s;
+}
+
+// Faces of the mesh that cut another (CGAL's exact test), counted in pairs.
+size_t intersectingPairs(vtkPolyData* mesh) {
+  std::vector<Eigen::Vector3d> points;
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p) {
+    double x[3];
+    mesh->GetPoint(p, x);
+    points.emplace_back(x[0], x[1], x[2]);
+  }
+  std::vector<std::vector<int64_t>> faces;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) {
+    vtkIdType count;
+    const vtkIdType* ids;
+    mesh->GetCellPoints(c, count, ids);
+    faces.emplace_back(ids, ids + count);
+  }
+  return medial::selfIntersectingFaces(points, faces).size();
+}
+
+// Stage 8, refinement: K levels of the paper's tessellation projected onto the swept spheres, with the
+// fold repair (on by default), per skeleton and K = 2, 3, 4.
+void refinedRows(const std::vector<std::string>& paths, int repeat) {
+  std::printf("\nSQM refined (--subdivide K, fold repair on), median of %d runs\n", repeat);
+  std::printf("%-16s %2s | %9s %8s %6s %6s %6s\n", "skeleton", "K", "SQM ms", "faces", "quads", "border",
+              "pairs");
+  for (const std::string& path : paths) {
+    auto reader = vtkSmartPointer<vtkMedialReader>::New();
+    reader->SetFileName(path.c_str());
+    auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+    sqm->SetInputConnection(reader->GetOutputPort());
+    for (int levels = 2; levels <= 4; ++levels) {
+      sqm->SetSubdivisionLevels(levels);
+      const double seconds = medianSeconds(repeat, [&] {
+        sqm->Modified();
+        sqm->Update();
+      });
+      const Summary s = summarize(sqm->GetOutput());
+      const std::string name = path.substr(path.find_last_of('/') + 1);
+      std::printf("%-16s %2d | %9.1f %8lld %5.0f%% %6lld %6zu\n", name.c_str(), levels, 1e3 * seconds,
+                  static_cast<long long>(s.faces), 100 * s.quadShare, static_cast<long long>(s.border),
+                  intersectingPairs(sqm->GetOutput()));
+    }
+  }
 }
 
 }  // namespace
@@ -104,5 +150,6 @@ int main(int argc, char** argv) {
                 static_cast<long long>(peer.faces), static_cast<long long>(peer.border),
                 static_cast<long long>(peer.nonManifold), tubeSeconds / sqmSeconds);
   }
+  refinedRows(paths, std::max(1, std::min(repeat, 5)));
   return 0;
 }
