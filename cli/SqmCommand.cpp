@@ -58,7 +58,7 @@ int runSqm(const std::vector<std::string>& args) {
                  filter->GetMergedNodes(), filter->GetMergedNodes() == 1 ? "" : "s");
   if (filter->GetFoldRepairedVertices() > 0)
     std::fprintf(stderr,
-                 "medial sqm: note: %d refined vert%s moved off the cones, where faces cut each other\n",
+                 "medial sqm: note: %d refined vert%s moved off the swept spheres, where faces cut each other\n",
                  filter->GetFoldRepairedVertices(), filter->GetFoldRepairedVertices() == 1 ? "ex" : "ices");
 
   timings.start("write");

@@ -194,7 +194,8 @@ const std::vector<Command>& commands() {
            "  --ring-vertices N         vertices around a skeleton without branch nodes (default " +
            number(sqm->GetLinearRingVertices()) +
            ")\n"
-           "  --subdivide K             K levels of Catmull-Clark, projected on the skeleton's cones (0-6)\n"
+           "  --subdivide K             K levels of tessellation, projected on the spheres swept along the\n"
+           "                            skeleton's edges (0-6)\n"
            "  --sharp-scale S           with --subdivide: scale the cone radius near a sharp vertex (two "
            "faces\n"
            "                            at an acute angle) by a Bezier curve from S (0.05-1) there to 1 one\n"
@@ -202,7 +203,7 @@ const std::vector<Command>& commands() {
            "  --no-fold-repair          with --subdivide: keep every refined vertex on its cone even where\n"
            "                            faces then cut each other (by default their vertices move back "
            "towards\n"
-           "                            the plain Catmull-Clark surface until none do)\n"
+           "                            the base mesh until none do)\n"
            "  --quiet                   no progress line\n"
            "  --timings                 print stage times as JSON on stdout\n",
        runSqm},

@@ -54,7 +54,8 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkSetMacro(Capsules, bool);
   vtkGetMacro(Capsules, bool);
   vtkBooleanMacro(Capsules, bool);
-  /// Catmull-Clark levels, each followed by projection onto the skeleton edges' cones (default 0).
+  /// Tessellation levels (bilinear, OpenSubdiv), each followed by projection onto the spheres swept along
+  /// the skeleton's edges (default 0).
   vtkSetClampMacro(SubdivisionLevels, int, 0, 6);
   vtkGetMacro(SubdivisionLevels, int);
   /// With subdivision: shrink the cone radius near sharp vertices (the paper's Bézier radius scaling,
@@ -66,7 +67,7 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkSetClampMacro(SharpMinimumScale, double, 0.05, 1.0);
   vtkGetMacro(SharpMinimumScale, double);
   /// With subdivision: where the cone projection makes faces cut each other, their vertices go back
-  /// towards their plain Catmull-Clark points until none do (default on; SqmRefinement.h).
+  /// towards the base mesh until none do (default on; SqmRefinement.h).
   vtkSetMacro(FoldRepair, bool);
   vtkGetMacro(FoldRepair, bool);
   vtkBooleanMacro(FoldRepair, bool);

@@ -39,7 +39,7 @@ std::vector<Parameter> sqmParameters() {
       MEDIAL_REAL_PARAMETER(f, SharpMinimumScale, "Sharp scale", 2, "Radius factor at a sharp vertex"),
       MEDIAL_TOGGLE_PARAMETER(f, FoldRepair, "Repair folds",
                               "With subdivision: where the projection onto the cones makes faces cut each "
-                              "other, move their vertices back towards the plain Catmull-Clark surface"),
+                              "other, move their vertices back towards the base mesh"),
   };
 }
 
@@ -55,7 +55,7 @@ SqmPanel::SqmPanel(ObjectList* objects, QWidget* parent)
   subdivision_->setPageStep(1);
   subdivision_->setTickPosition(QSlider::TicksBelow);
   subdivision_->setToolTip(
-      "Catmull-Clark levels, each projected onto the skeleton's cones (CESCG 2014, Tessellation, Fig. 9)");
+      "Tessellation levels, each projected onto the spheres swept along the skeleton (CESCG 2014, Tessellation, Fig. 9)");
   live_ = new QCheckBox("Update live", this);
   live_->setObjectName("live");
   live_->setChecked(true);

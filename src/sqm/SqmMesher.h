@@ -17,7 +17,7 @@
 // radius sqrt(r^2 (1 - step^2)) at distance step * r beyond the leaf); ellipsoid nodes map their vertices
 // by their `EllipsoidAxes` (ext. 3); cycles are cut and closed again after placement (ext. 5, see
 // CycleClosing).
-// Then, on request, K levels of Catmull-Clark refinement with projection onto the edges' cones.
+// Then, on request, K levels of the paper's tessellation projected onto the swept spheres (SqmRefinement).
 #pragma once
 
 #include "skeleton/Skeleton.h"
@@ -57,9 +57,9 @@ struct SqmParameters {
   // Neighbouring triangles of the leaf fans and cycle bands joined into quads where the quad is fair
   // (TrianglePairing): beyond the papers, whose fans stay triangles; off gives the paper's mesh.
   bool pairTriangles = true;
-  int subdivisionLevels = 0;  // stage 8: Catmull-Clark levels with cone projection (SqmRefinement)
+  int subdivisionLevels = 0;  // stage 8: tessellation levels projected onto the swept spheres (SqmRefinement)
   SharpScaling sharpScaling;  // stage 8: Bézier radius scaling near sharp vertices (SqmRefinement)
-  bool foldRepair = true;     // stage 8: refined vertices of faces that cut others back towards Catmull-Clark
+  bool foldRepair = true;     // stage 8: refined vertices of faces that cut others back towards the base mesh
 };
 
 struct SqmMesh {

@@ -304,14 +304,14 @@ TEST_F(GuiWorkflow, SkeletonGhostViewSqmAndRig) {
   ASSERT_TRUE(runThroughUi(window->sqmPanel())) << errors.join("\n").toStdString();
   SceneObject* sqm = object("torus.off skeleton SQM");
   ASSERT_NE(sqm, nullptr);
-  // Catmull-Clark turns every n-gon into n quads.
+  // One tessellation level turns every n-gon into n quads.
   const vtkIdType corners = sqm->polyData()->GetPolys()->GetNumberOfConnectivityIds();
   window->sqmPanel()->subdivisionSlider()->setValue(1);
   ASSERT_TRUE(window->sqmPanel()->isRunning()) << "the slider re-runs the filter";
   window->sqmPanel()->wait();
   sqm = object("torus.off skeleton SQM");
   ASSERT_NE(sqm, nullptr);
-  EXPECT_EQ(sqm->polyData()->GetNumberOfPolys(), corners) << "one Catmull-Clark level: one quad per corner";
+  EXPECT_EQ(sqm->polyData()->GetNumberOfPolys(), corners) << "one tessellation level: one quad per corner";
   EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
 }
 

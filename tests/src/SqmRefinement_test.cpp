@@ -1,5 +1,5 @@
 // SqmRefinement: the refined mesh keeps its skeleton inside and stays on the swept spheres (issue 27's
-// invariants) on frames, ladders, a cube's edges and a zig-zag, whose corners Catmull-Clark rounded off.
+// invariants) on frames, ladders, a cube's edges and a zig-zag, whose corners Catmull-Clark used to pull inward.
 #include "mesh/InsideTest.h"
 #include "mesh/MeshTopology.h"
 #include "mesh/SelfIntersections.h"
@@ -129,7 +129,9 @@ TEST(SqmRefinement, CornersKeepTheirNodesInsideAndTheSurfaceOnTheSweptSpheres) {
                   percentile(off, 0.95));
       EXPECT_GE(worstNode, 0.5);
       EXPECT_GE(worstMiddle, 0.5);
-      if (worstLeafMiddle < INFINITY) EXPECT_GE(worstLeafMiddle, 0.3);
+      if (worstLeafMiddle < INFINITY) {
+        EXPECT_GE(worstLeafMiddle, 0.3);
+      }
       EXPECT_LE(percentile(off, 0.5), 0.05);
       EXPECT_LE(percentile(off, 0.95), 0.20);
     }
