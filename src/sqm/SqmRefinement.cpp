@@ -44,12 +44,19 @@ SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres,
   projections.clear();
   size_t nearest = 0;
   auto gap = [](const SweptPoint& c) { return std::abs(c.signedDistance()); };
-  for (size_t k = 0; k < edges.size(); ++k) {
-    projections.push_back(spheres.project(p, edges[k]));
-    if (projections[k].found && (!projections[nearest].found || gap(projections[k]) < gap(projections[nearest])))
-      nearest = k;
+  // Inside some edge's volume, the surface of the union is that volume's (or beyond): the surfaces of
+  // volumes the point lies outside of are not candidates then (a leaf's fan apex at the centre of a head
+  // larger than the neck went to the neck's sphere, which was nearer, and the head was lost).
+  bool inside = false;
+  for (int e : edges) {
+    projections.push_back(spheres.project(p, e));
+    inside |= projections.back().signedDistance() < 0;
   }
-  if (projections.empty() || !projections[nearest].found) return {};
+  auto candidate = [&](const SweptPoint& c) { return c.found && (!inside || c.signedDistance() < 0); };
+  for (size_t k = 0; k < projections.size(); ++k)
+    if (candidate(projections[k]) && (!candidate(projections[nearest]) || gap(projections[k]) < gap(projections[nearest])))
+      nearest = k;
+  if (projections.empty() || !candidate(projections[nearest])) return {};
   const SweptPoint& best = projections[nearest];
   const Eigen::Vector3d onBest = best.onSurface();
   const double sigma = kSurfaceBlend * best.radius;
