@@ -330,7 +330,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
       flat[v] = nextOnBase[v].p;
       projected[v] = q;
     });
-    if (foldRepair) {
+    if (foldRepair && level == levels) {  // each level projects every vertex again: only the last one counts
       const int moved = repairFolds(levelFaces(topology), flat, projected);
       if (repairedVertices) *repairedVertices += moved;
     }
