@@ -2,7 +2,8 @@
 // run. Per skeleton: nodes, output faces, quad share and median time of each, the ratio tube / SQM, and
 // the open (border) and non-manifold edges of each output - SQM's is one closed surface, the tube filter's
 // is one open tube per line cell. The paper's Table 1: 74 ms for 150 nodes (goal: >= 10x faster).
-// Then the refined rows: K = 2, 3, 4 levels per skeleton, time, faces, quad share, intersecting pairs.
+// Then the paper's Table 1 (stage times and counts) and the refined rows: K = 2, 3, 4 levels per skeleton,
+// time, faces, quad share, intersecting pairs.
 //   medial_bench_sqm [--repeat N] [SKELETON...]   (default: data/skeletons/sqm/*.vtp, figure, hand)
 #include "MedianSeconds.h"
 #include "mesh/SelfIntersections.h"
@@ -91,6 +92,45 @@ void refinedRows(const std::vector<std::string>& paths, int repeat) {
   }
 }
 
+// The paper's Table 1 on this machine: stage times (ms, median) and counts per skeleton, unrefined.
+void table1(const std::vector<std::string>& paths, int repeat) {
+  std::printf("\nTable 1 (the paper's stages, ms, median of %d runs; counts)\n", repeat);
+  std::printf("%-14s", "skeleton");
+  for (const std::string& stage : vtkMedialSQM::GetStageNames()) std::printf(" %8.8s", stage.c_str());
+  std::printf(" | %6s %6s %5s %6s %6s %5s %9s\n", "branch", "conn", "leaf", "merged", "quads", "tris",
+              "irregular");
+  for (const std::string& path : paths) {
+    auto reader = vtkSmartPointer<vtkMedialReader>::New();
+    reader->SetFileName(path.c_str());
+    auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+    sqm->SetInputConnection(reader->GetOutputPort());
+    const std::vector<std::string> stages = vtkMedialSQM::GetStageNames();
+    std::vector<std::vector<double>> seconds(stages.size());
+    for (int run = 0; run < repeat; ++run) {
+      sqm->Modified();
+      sqm->Update();
+      for (size_t k = 0; k < stages.size(); ++k) seconds[k].push_back(sqm->GetStageSeconds(stages[k]));
+    }
+    const std::string name = path.substr(path.find_last_of('/') + 1);
+    std::printf("%-14s", name.c_str());
+    for (auto& s : seconds) {
+      std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
+      std::printf(" %8.3f", 1e3 * s[s.size() / 2]);
+    }
+    vtkPolyData* mesh = sqm->GetOutput();
+    long long quads = 0, triangles = 0;
+    for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) {
+      vtkIdType size;
+      const vtkIdType* ids;
+      mesh->GetCellPoints(c, size, ids);
+      quads += size == 4;
+      triangles += size == 3;
+    }
+    std::printf(" | %6d %6d %5d %6d %6lld %5lld %9d\n", sqm->GetBranchNodes(), sqm->GetConnectionNodes(),
+                sqm->GetLeafNodes(), sqm->GetMergedNodes(), quads, triangles, sqm->GetIrregularVertices());
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -150,6 +190,7 @@ int main(int argc, char** argv) {
                 static_cast<long long>(peer.faces), static_cast<long long>(peer.border),
                 static_cast<long long>(peer.nonManifold), tubeSeconds / sqmSeconds);
   }
+  table1(paths, repeat);
   refinedRows(paths, std::max(1, std::min(repeat, 5)));
   return 0;
 }

@@ -1,5 +1,6 @@
 // `medial sqm SKELETON.vtp|.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME] [--capsule]
-//              [--triangle-fans] [--ring-vertices N] [--subdivide K] [--sharp-scale S] [--no-fold-repair]`
+//              [--triangle-fans] [--ring-vertices N] [--subdivide K] [--sharp-scale S] [--no-fold-repair]
+//              [--no-merge]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
@@ -19,11 +20,36 @@
 
 namespace medial::cli {
 
+namespace {
+
+// The paper's Table 1 counts beside the stage times: node kinds, merged nodes, faces by kind, irregular
+// vertices.
+void countTable1(vtkMedialSQM* filter, Timings& timings) {
+  vtkPolyData* mesh = filter->GetOutput();
+  long long quads = 0, triangles = 0;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) {
+    vtkIdType size;
+    const vtkIdType* ids;
+    mesh->GetCellPoints(c, size, ids);
+    quads += size == 4;
+    triangles += size == 3;
+  }
+  timings.count("sqm", "branch_nodes", filter->GetBranchNodes());
+  timings.count("sqm", "connection_nodes", filter->GetConnectionNodes());
+  timings.count("sqm", "leaf_nodes", filter->GetLeafNodes());
+  timings.count("sqm", "merged_nodes", filter->GetMergedNodes());
+  timings.count("sqm", "quads", quads);
+  timings.count("sqm", "triangles", triangles);
+  timings.count("sqm", "irregular_vertices", filter->GetIrregularVertices());
+}
+
+}  // namespace
+
 int runSqm(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args,
       {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale"},
-       {"--capsule", "--triangle-fans", "--no-fold-repair", "--quiet", "--timings"}});
+       {"--capsule", "--triangle-fans", "--no-fold-repair", "--no-merge", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sqm needs exactly one SKELETON file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -41,6 +67,7 @@ int runSqm(const std::vector<std::string>& args) {
   if (parsed.has("--capsule")) filter->CapsulesOn();
   if (parsed.has("--triangle-fans")) filter->PairTrianglesOff();
   if (parsed.has("--no-fold-repair")) filter->FoldRepairOff();
+  if (parsed.has("--no-merge")) filter->MergeNodesOff();
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
@@ -51,6 +78,9 @@ int runSqm(const std::vector<std::string>& args) {
 
   timings.start("sqm");
   runFilter(filter, skeleton, input, "tube mesh of " + input, progress);
+  for (const std::string& stage : vtkMedialSQM::GetStageNames())
+    timings.detail("sqm", stage, filter->GetStageSeconds(stage));
+  countTable1(filter, timings);
 
   if (filter->GetMergedNodes() > 0)
     std::fprintf(stderr,

@@ -27,6 +27,10 @@ void Timings::detail(const std::string& stage, const std::string& part, double s
   details_.emplace_back(stage + "." + part, seconds);
 }
 
+void Timings::count(const std::string& stage, const std::string& name, long long value) {
+  counts_.emplace_back(stage + "." + name, value);
+}
+
 std::string Timings::json() const {
   std::string out = "{";
   double total = 0;
@@ -40,6 +44,7 @@ std::string Timings::json() const {
     total += seconds;
   }
   for (const auto& [name, seconds] : details_) add(name, seconds);
+  for (const auto& [name, value] : counts_) out += "\"" + name + "\": " + std::to_string(value) + ", ";
   char number[64];
   std::snprintf(number, sizeof number, "%.6f", total);
   return out + "\"total\": " + number + "}";

@@ -17,11 +17,15 @@ class Timings {
   // A part of a stage measured elsewhere (a filter's own stage times): printed as "stage.part", not
   // added to the total.
   void detail(const std::string& stage, const std::string& part, double seconds);
+  // A count a filter reports beside its times (the paper's Table 1 for SQM): printed as "stage.name", an
+  // integer.
+  void count(const std::string& stage, const std::string& name, long long value);
   std::string json() const;
 
  private:
   std::vector<std::pair<std::string, double>> stages_;
   std::vector<std::pair<std::string, double>> details_;
+  std::vector<std::pair<std::string, long long>> counts_;
   std::string current_;
   Stopwatch stopwatch_;
 };

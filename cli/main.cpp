@@ -179,7 +179,7 @@ const std::vector<Command>& commands() {
        "usage: medial sqm SKELETON.vtp|SKELETON.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing "
        "NAME]\n"
        "                  [--capsule] [--triangle-fans] [--ring-vertices N] [--subdivide K]\n"
-       "                  [--sharp-scale S] [--no-fold-repair] [--quiet] [--timings]\n\n"
+       "                  [--sharp-scale S] [--no-fold-repair] [--no-merge] [--quiet] [--timings]\n\n"
        "Turns a skeleton with a Radius per node into a closed manifold mesh of quads (a triangle only where\n"
        "a leaf's or a cycle's ring is odd), by SQM with the extensions of the CESCG 2014 paper (re-rooting,\n"
        "linear skeletons, ellipsoid nodes from EllipsoidAxes, capsules, cycles). Every component is meshed.\n"
@@ -204,8 +204,13 @@ const std::vector<Command>& commands() {
            "                            faces then cut each other (by default their vertices move back "
            "towards\n"
            "                            the base mesh until none do)\n"
+           "  --no-merge                do not merge a node lying inside a neighbouring branch node's\n"
+           "                            sphere into it: such a skeleton is then an error naming the node\n"
            "  --quiet                   no progress line\n"
-           "  --timings                 print stage times as JSON on stdout\n",
+           "  --timings                 print stage times (straightening, generation, refinement, joining,\n"
+           "                            skinning, subdivision, repairs) and the paper's Table 1 counts\n"
+           "                            (branch, connection, leaf and merged nodes, quads, triangles,\n"
+           "                            irregular vertices) as JSON on stdout\n",
        runSqm},
       {"sketch", "animatable skeleton and inflated mesh of closed 2-D strokes",
        "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp] [--simplify ES] [--merge EM]\n"

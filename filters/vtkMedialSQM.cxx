@@ -28,6 +28,7 @@ void vtkMedialSQM::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "SharpScaling: " << this->SharpScaling << "\n";
   os << indent << "SharpMinimumScale: " << this->SharpMinimumScale << "\n";
   os << indent << "FoldRepair: " << this->FoldRepair << "\n";
+  os << indent << "MergeNodes: " << this->MergeNodes << "\n";
 }
 
 vtkMedialSQM::vtkMedialSQM() {
@@ -41,6 +42,19 @@ vtkMedialSQM::vtkMedialSQM() {
   this->SharpScaling = defaults.sharpScaling.enabled;
   this->SharpMinimumScale = defaults.sharpScaling.minimumScale;
   this->FoldRepair = defaults.foldRepair;
+  this->MergeNodes = defaults.mergeNodes;
+  this->Seconds.assign(GetStageNames().size(), 0.0);
+}
+
+std::vector<std::string> vtkMedialSQM::GetStageNames() {
+  return {"straightening", "generation", "refinement", "joining", "skinning", "subdivision", "repairs"};
+}
+
+double vtkMedialSQM::GetStageSeconds(const std::string& stage) const {
+  const std::vector<std::string> names = GetStageNames();
+  for (size_t s = 0; s < names.size(); ++s)
+    if (names[s] == stage) return this->Seconds[s];
+  return 0;
 }
 
 medial::SqmParameters vtkMedialSQM::MakeParameters() const {
@@ -54,6 +68,7 @@ medial::SqmParameters vtkMedialSQM::MakeParameters() const {
   p.sharpScaling.enabled = this->SharpScaling;
   p.sharpScaling.minimumScale = this->SharpMinimumScale;
   p.foldRepair = this->FoldRepair;
+  p.mergeNodes = this->MergeNodes;
   return p;
 }
 
@@ -94,8 +109,9 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     vtkErrorMacro(<< (input ? error : std::string("no input skeleton")));
     return 0;
   }
-  this->MergedNodes = 0;
-  this->FoldRepairedVertices = 0;
+  this->MergedNodes = this->FoldRepairedVertices = 0;
+  this->BranchNodes = this->ConnectionNodes = this->LeafNodes = this->IrregularVertices = 0;
+  this->Seconds.assign(GetStageNames().size(), 0.0);
   const medial::SqmResult result = medial::sqmMesh(skeleton, this->MakeParameters(), [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
@@ -106,6 +122,13 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   }
   this->MergedNodes = result.mergedNodes;
   this->FoldRepairedVertices = result.foldRepairedVertices;
+  this->BranchNodes = result.branchNodes;
+  this->ConnectionNodes = result.connectionNodes;
+  this->LeafNodes = result.leafNodes;
+  this->IrregularVertices = result.irregularVertices;
+  this->Seconds = {result.straighteningSeconds, result.generationSeconds, result.refinementSeconds,
+                   result.joiningSeconds,       result.placementSeconds,  result.subdivisionSeconds,
+                   result.repairSeconds};
   // Points and polygons only: the field data the pipeline passed on from the input (`Root`) stays.
   const vtkSmartPointer<vtkPolyData> mesh =
       medial::polyDataFromPolygons(result.mesh.vertices, result.mesh.faces);

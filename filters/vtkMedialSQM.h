@@ -21,6 +21,7 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string>
+#include <vector>
 
 namespace medial {
 struct SqmParameters;
@@ -72,11 +73,27 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkGetMacro(FoldRepair, bool);
   vtkBooleanMacro(FoldRepair, bool);
 
+  /// The repair that merges a node lying inside a neighbouring branch node's sphere into it (default on).
+  /// Off, such a skeleton is an error naming the node (SQM cannot join its tube to the polyhedron).
+  vtkSetMacro(MergeNodes, bool);
+  vtkGetMacro(MergeNodes, bool);
+  vtkBooleanMacro(MergeNodes, bool);
+
   // After an update: how many nodes lay inside a neighbouring branch node's sphere and were merged into it
   // (the repair above).
   vtkGetMacro(MergedNodes, int);
-  // After an update with subdivision: refined vertices the fold repair moved off their cones.
+  // After an update with subdivision: refined vertices the fold repair moved off the swept spheres.
   vtkGetMacro(FoldRepairedVertices, int);
+  // After an update, the paper's Table 1 counts: branch, connection and leaf nodes meshed (the merged ones
+  // are GetMergedNodes()), and the output's vertices where other than four edges meet.
+  vtkGetMacro(BranchNodes, int);
+  vtkGetMacro(ConnectionNodes, int);
+  vtkGetMacro(LeafNodes, int);
+  vtkGetMacro(IrregularVertices, int);
+  /// After an update: the seconds of a stage of GetStageNames() (the paper's Table 1: straightening,
+  /// generation and refinement of the branch node polyhedra, joining, skinning, subdivision; and repairs).
+  double GetStageSeconds(const std::string& stage) const;
+  static std::vector<std::string> GetStageNames();
 
  protected:
   vtkMedialSQM();
@@ -99,7 +116,10 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   bool SharpScaling;
   double SharpMinimumScale;
   bool FoldRepair;
+  bool MergeNodes;
   // Figures of the last update.
   int MergedNodes = 0;
   int FoldRepairedVertices = 0;
+  int BranchNodes = 0, ConnectionNodes = 0, LeafNodes = 0, IrregularVertices = 0;
+  std::vector<double> Seconds;  // per stage of GetStageNames()
 };

@@ -34,12 +34,15 @@ std::vector<Parameter> sqmParameters() {
                               "triangle fans)"),
       MEDIAL_TOGGLE_PARAMETER(
           f, SharpScaling, "Sharp scaling",
-          "With subdivision: shrink the cone radius near sharp vertices by a Bézier curve "
+          "With subdivision: shrink the swept spheres' radius near sharp vertices by a Bézier curve "
           "(CESCG 2014, Tessellation)"),
       MEDIAL_REAL_PARAMETER(f, SharpMinimumScale, "Sharp scale", 2, "Radius factor at a sharp vertex"),
       MEDIAL_TOGGLE_PARAMETER(f, FoldRepair, "Repair folds",
-                              "With subdivision: where the projection onto the cones makes faces cut each "
+                              "With subdivision: where the projection onto the swept spheres makes faces cut each "
                               "other, move their vertices back towards the base mesh"),
+      MEDIAL_TOGGLE_PARAMETER(f, MergeNodes, "Merge swallowed nodes",
+                              "Merge a node lying inside a neighbouring branch node's sphere into it (off: "
+                              "such a skeleton is an error naming the node)"),
   };
 }
 
@@ -85,6 +88,7 @@ vtkSmartPointer<vtkAlgorithm> SqmPanel::makeFilter(SceneObject* input, QString&)
   filter->SetSubdivisionLevels(subdivision_->value());
   filter->SetSharpScaling(form()->isOn("SharpScaling"));
   filter->SetFoldRepair(form()->isOn("FoldRepair"));
+  filter->SetMergeNodes(form()->isOn("MergeNodes"));
   filter->SetSharpMinimumScale(form()->value("SharpMinimumScale"));
   return filter;
 }
@@ -110,7 +114,7 @@ void SqmPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
                                 .arg(merged)
                           : QString())
           .arg(unfolded > 0
-                   ? QString("; %1 refined vertices moved off their cones to undo folds").arg(unfolded)
+                   ? QString("; %1 refined vertices moved off the swept spheres to undo folds").arg(unfolded)
                    : QString()));
 }
 

@@ -119,7 +119,21 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
         1e-9 * std::max(s.radii[size_t(e[0])], s.radii[size_t(e[1])]))
       return "nodes " + std::to_string(e[0]) + " and " + std::to_string(e[1]) +
              " are joined by an edge but lie at the same place";
-  mergeSwallowedNodes(s, out.merged);
+  if (p.mergeNodes) {
+    mergeSwallowedNodes(s, out.merged);
+  } else {  // the repair is off: a node it would merge leaves no mesh to build
+    Skeleton probe = s;
+    std::vector<bool> merged;
+    mergeSwallowedNodes(probe, merged);
+    const auto first = std::find(merged.begin(), merged.end(), true);
+    if (first != merged.end())
+      return "node " + std::to_string(first - merged.begin()) +
+             " lies inside the sphere of a neighbouring branch node (or two neighbouring branch nodes' spheres "
+             "overlap by more than half the smaller radius): the tube between them would run backwards out of "
+             "the branch node's polyhedron and fold the surface. Let SQM merge such nodes (drop --no-merge) or "
+             "move them apart";
+    out.merged.assign(s.nodes.size(), false);
+  }
   // Extension 5: every edge closing a cycle is cut; each end gets a pseudo child where the other end is.
   UnionFind sets(s.nodes.size());
   std::vector<std::array<int, 2>> treeEdges;
@@ -513,6 +527,22 @@ std::vector<std::string> ringPairingNames() {
   return names;
 }
 
+namespace {
+
+// Vertices where other than four edges meet (the paper's Table 1 counts them: where quads are not a grid).
+int countIrregularVertices(const SqmMesh& mesh) {
+  std::vector<std::set<int>> neighbours(mesh.vertices.size());
+  for (const auto& f : mesh.faces)
+    for (size_t k = 0; k < f.size(); ++k) {
+      neighbours[size_t(f[k])].insert(f[(k + 1) % f.size()]);
+      neighbours[size_t(f[(k + 1) % f.size()])].insert(f[k]);
+    }
+  return int(std::count_if(neighbours.begin(), neighbours.end(),
+                           [](const std::set<int>& n) { return !n.empty() && n.size() != 4; }));
+}
+
+}  // namespace
+
 int SqmMesh::quadCount() const {
   return int(
       std::count_if(faces.begin(), faces.end(), [](const std::vector<int>& f) { return f.size() == 4; }));
@@ -574,9 +604,11 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
   // Repair: where a lopsided pillow ring makes a tube twist (the pretzel), faces can come out turned
   // against their neighbours, and so can the cycle bands; the surface is orientable, so it gets one
   // consistent orientation, outward (OpenMesh's subdivision needs it).
+  Stopwatch repairs;
   result.reorientedFaces = orientPolygonsOutward(builder.mesh.vertices, builder.mesh.faces);
   if (p.pairTriangles)
     result.pairedTriangles = pairStripTriangles(builder.mesh.vertices, builder.mesh.faces, builder.strips);
+  result.repairSeconds += repairs.seconds();
   result.mesh = std::move(builder.mesh);
   result.mesh.vertexNode.resize(builder.owner.size());
   for (size_t v = 0; v < builder.owner.size(); ++v)
@@ -595,6 +627,7 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
     for (int& node : result.mesh.vertexNode) node = prepared.origin[size_t(node)];
     result.subdivisionSeconds += clock.seconds();
   }
+  result.irregularVertices = countIrregularVertices(result.mesh);
   return result;
 }
 

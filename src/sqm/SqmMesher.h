@@ -60,6 +60,9 @@ struct SqmParameters {
   int subdivisionLevels = 0;  // stage 8: tessellation levels projected onto the swept spheres (SqmRefinement)
   SharpScaling sharpScaling;  // stage 8: Bézier radius scaling near sharp vertices (SqmRefinement)
   bool foldRepair = true;     // stage 8: refined vertices of faces that cut others back towards the base mesh
+  // The repair that merges a node lying inside a neighbouring branch node's sphere into it (off: such a
+  // skeleton is an error naming the node).
+  bool mergeNodes = true;
 };
 
 struct SqmMesh {
@@ -76,8 +79,11 @@ struct SqmResult {
   int mergedNodes = 0;      // nodes inside a neighbouring branch node's sphere, merged into it (a repair)
   int pairedTriangles = 0;  // quads made of two fan or band triangles (SqmParameters::pairTriangles)
   int foldRepairedVertices = 0;  // refined vertices moved off their cones by the fold repair
+  int irregularVertices = 0;      // vertices of the output where other than four edges meet
+  // The paper's Table 1 stages: straightening, BNP generation and refinement, joining, skinning
+  // (placement), subdivision, and Medial's repairs (orientation, triangle pairing).
   double straighteningSeconds = 0, generationSeconds = 0, refinementSeconds = 0, joiningSeconds = 0,
-         placementSeconds = 0, subdivisionSeconds = 0;
+         placementSeconds = 0, subdivisionSeconds = 0, repairSeconds = 0;
   std::string error;
   bool ok() const { return error.empty(); }
 };

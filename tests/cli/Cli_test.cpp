@@ -290,6 +290,26 @@ TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
       medialCommand("sqm " + dataPath("skeletons/sqm/quadruped.vtp") + " -o " + dir + "/q.vtp --quiet"));
   EXPECT_EQ(merged.exitCode, 0) << merged.err;
   EXPECT_NE(merged.err.find("merged into it"), std::string::npos) << merged.err;
+  // Without the repair the same skeleton is an error naming a node, and no file is written.
+  auto unmerged = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/quadruped.vtp") + " -o " + dir +
+                                           "/unmerged.vtp --quiet --no-merge"));
+  EXPECT_EQ(unmerged.exitCode, 1);
+  EXPECT_EQ(lineCount(unmerged.err), 1) << unmerged.err;
+  EXPECT_NE(unmerged.err.find("lies inside the sphere of a neighbouring branch node"), std::string::npos)
+      << unmerged.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/unmerged.vtp"));
+  // --timings has the paper's Table 1: stage times and counts (the hand: no merge needed, so --no-merge
+  // changes nothing).
+  auto table = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/quadruped.vtp") + " -o " + dir +
+                                        "/q2.vtp --quiet --timings"));
+  ASSERT_EQ(table.exitCode, 0) << table.err;
+  for (const char* key : {"sqm.straightening", "sqm.generation", "sqm.refinement", "sqm.joining", "sqm.skinning",
+                          "sqm.subdivision", "sqm.repairs", "sqm.branch_nodes", "sqm.irregular_vertices"})
+    EXPECT_NE(table.out.find(std::string("\"") + key + "\""), std::string::npos) << key << ": " << table.out;
+  EXPECT_NE(table.out.find("\"sqm.merged_nodes\": 25"), std::string::npos) << table.out;
+  auto hand = runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + dir +
+                                       "/hand-unmerged.vtp --quiet --no-merge"));
+  EXPECT_EQ(hand.exitCode, 0) << hand.err;
   // The worm's two leaf fans of 8: four quads each by default, eight triangles with --triangle-fans.
   auto countTriangles = [&](const std::string& path) {
     std::ifstream in(path);

@@ -44,6 +44,7 @@ TEST(FilterDefaults, SqmTakesSqmParameters) {
   EXPECT_EQ(f->GetSharpScaling(), p.sharpScaling.enabled);
   EXPECT_EQ(f->GetSharpMinimumScale(), p.sharpScaling.minimumScale);
   EXPECT_EQ(f->GetFoldRepair(), p.foldRepair);
+  EXPECT_EQ(f->GetMergeNodes(), p.mergeNodes);
 }
 
 TEST(FilterDefaults, SketchSkeletonTakesSketchParameters) {
