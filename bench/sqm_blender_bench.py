@@ -1,0 +1,155 @@
+#!/usr/bin/python3
+"""Benchmark: SQM (vtkMedialSQM) against Blender's Skin modifier on the same skeletons, in one run.
+
+Blender's Skin modifier is what a DCC user reaches for to turn a skeleton with radii into a tube mesh. Per
+skeleton: faces, quad share, open (border) and non-manifold edges, and median seconds of each (Blender's
+the modifier's evaluation inside Blender 3.4 run headless, not its start-up), and the time ratio
+Blender / SQM. Needs `blender` on the PATH (Debian's Blender 3.4); without it the script says so and exits 0.
+    PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 bench/sqm_blender_bench.py [--repeat N] [SKELETON...]
+"""
+import argparse
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+import vtk
+
+import medial
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DATA = os.path.join(HERE, "..", "data", "skeletons")
+DEFAULT = [os.path.join(DATA, "sqm", n + ".vtp") for n in ("worm", "fish", "humanoid", "quadruped", "octopus",
+                                                          "cycle", "pretzel")] + \
+          [os.path.join(DATA, "figure.vtp"), os.path.join(DATA, "hand.swc")]
+
+# Runs inside Blender: one object per skeleton with a Skin modifier (radius per vertex, a root per
+# component), evaluated `repeat` times; prints one MEDIAL-SKIN line of JSON per skeleton.
+BLENDER_SCRIPT = r'''
+import bpy, json, sys, time
+skeletons = json.load(open(sys.argv[sys.argv.index("--") + 1]))
+repeat = int(sys.argv[sys.argv.index("--") + 2])
+for s in skeletons:
+    mesh = bpy.data.meshes.new(s["name"])
+    mesh.from_pydata(s["nodes"], s["edges"], [])
+    obj = bpy.data.objects.new(s["name"], mesh)
+    bpy.context.collection.objects.link(obj)
+    obj.modifiers.new("skin", "SKIN")
+    layer = mesh.skin_vertices[0].data
+    for i, r in enumerate(s["radii"]):
+        layer[i].radius = (r, r)
+        layer[i].use_root = i in s["roots"]
+    seconds = []
+    for run in range(repeat):
+        mesh.update()
+        start = time.perf_counter()
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        result = obj.evaluated_get(depsgraph).to_mesh()
+        seconds.append(time.perf_counter() - start)
+        if run + 1 < repeat:
+            obj.evaluated_get(depsgraph).to_mesh_clear()
+    faces = len(result.polygons)
+    quads = sum(1 for p in result.polygons if len(p.vertices) == 4)
+    use = {}
+    for p in result.polygons:
+        for k in p.edge_keys:
+            use[k] = use.get(k, 0) + 1
+    print("MEDIAL-SKIN " + json.dumps({"name": s["name"], "faces": faces, "quads": quads,
+                                       "open": sum(1 for c in use.values() if c == 1),
+                                       "nonmanifold": sum(1 for c in use.values() if c > 2),
+                                       "seconds": sorted(seconds)[len(seconds) // 2]}), flush=True)
+'''
+
+
+def read_skeleton(path):
+    reader = medial.vtkMedialReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutputDataObject(0)
+    nodes = [list(data.GetPoint(i)) for i in range(data.GetNumberOfPoints())]
+    radius = data.GetPointData().GetArray("Radius")
+    radii = [radius.GetValue(i) for i in range(data.GetNumberOfPoints())]
+    edges, ids = [], vtk.vtkIdList()
+    for c in range(data.GetNumberOfCells()):
+        data.GetCellPoints(c, ids)
+        edges += [[ids.GetId(k), ids.GetId(k + 1)] for k in range(ids.GetNumberOfIds() - 1)]
+    parent = list(range(len(nodes)))  # one root per component for the Skin modifier
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+    for a, b in edges:
+        parent[find(a)] = find(b)
+    roots = sorted({find(x) for x in range(len(nodes))})
+    return data, {"name": os.path.basename(path), "nodes": nodes, "edges": edges, "radii": radii, "roots": roots}
+
+
+def sqm_row(skeleton, repeat):
+    sqm = medial.vtkMedialSQM()
+    sqm.SetInputData(skeleton)
+    seconds = []
+    for _ in range(repeat):
+        sqm.Modified()
+        start = time.perf_counter()
+        sqm.Update()
+        seconds.append(time.perf_counter() - start)
+    mesh = sqm.GetOutput()
+    topology = medial.vtkMedialMeshTopology()
+    topology.SetInputData(mesh)
+    topology.Update()
+    quads = sum(1 for c in range(mesh.GetNumberOfCells()) if mesh.GetCell(c).GetNumberOfPoints() == 4)
+    return {"faces": mesh.GetNumberOfCells(), "quads": quads, "open": topology.GetNumberOfBorderEdges(),
+            "nonmanifold": topology.GetNumberOfNonManifoldEdges(), "seconds": statistics.median(seconds)}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=20)
+    parser.add_argument("skeletons", nargs="*", default=DEFAULT)
+    args = parser.parse_args()
+    if not shutil.which("blender"):
+        print("sqm_blender_bench: blender is not installed; Blender's Skin modifier row left out")
+        return 0
+    rows, skeletons = {}, []
+    for path in args.skeletons:
+        data, skeleton = read_skeleton(path)
+        rows[skeleton["name"]] = sqm_row(data, args.repeat)
+        skeletons.append(skeleton)
+    with tempfile.TemporaryDirectory(prefix="medial-skin-") as folder:
+        spec, script = os.path.join(folder, "skeletons.json"), os.path.join(folder, "skin.py")
+        with open(spec, "w") as f:
+            json.dump(skeletons, f)
+        with open(script, "w") as f:
+            f.write(BLENDER_SCRIPT)
+        env = {k: v for k, v in os.environ.items() if k not in ("LD_PRELOAD", "ASAN_OPTIONS")}
+        done = subprocess.run(["blender", "-b", "--factory-startup", "--python", script, "--", spec, str(args.repeat)],
+                              capture_output=True, text=True, timeout=1800, env=env)
+    skin = {}
+    for line in done.stdout.splitlines():
+        if line.startswith("MEDIAL-SKIN "):
+            report = json.loads(line[len("MEDIAL-SKIN "):])
+            skin[report["name"]] = report
+    print("SQM (vtkMedialSQM) vs Blender 3.4's Skin modifier, median of %d runs" % args.repeat)
+    print("%-14s | %8s %6s %5s %5s %5s | %8s %6s %5s %5s %5s | %9s" % (
+        "skeleton", "SQM ms", "faces", "quads", "open", "nonm", "Skin ms", "faces", "quads", "open", "nonm",
+        "Skin/SQM"))
+    for name, ours in rows.items():
+        peer = skin.get(name)
+        if not peer:
+            print("%-14s | Blender reported nothing:\n%s" % (name, done.stderr[-2000:]))
+            continue
+        print("%-14s | %8.2f %6d %4.0f%% %5d %5d | %8.2f %6d %4.0f%% %5d %5d | %9.2f" % (
+            name, 1e3 * ours["seconds"], ours["faces"], 100.0 * ours["quads"] / max(1, ours["faces"]), ours["open"],
+            ours["nonmanifold"], 1e3 * peer["seconds"], peer["faces"], 100.0 * peer["quads"] / max(1, peer["faces"]),
+            peer["open"], peer["nonmanifold"], peer["seconds"] / ours["seconds"]))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
