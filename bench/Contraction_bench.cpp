@@ -242,7 +242,7 @@ int main(int argc, char** argv) {
   std::printf("\nSolver x ordering (contraction only), %s, %zu vertices, median of %d runs\n",
               tableMesh.c_str(), std::size_t(sm.number_of_vertices()), repeat);
   std::printf("%-14s %9s %5s %9s %8s | %s\n", "solver", "seconds", "iters", "factor s", "peak MiB",
-              "vs cholmod-metis");
+              "vs auto (the default)");
   double reference = NAN;
   for (medial::SparseSolverKind kind : medial::allSparseSolverKinds()) {
     const Measured m = measure(repeat, [&] { return runContractionOnly(mesh, kind); });

@@ -38,7 +38,7 @@ struct HeatWeightParameters {
   double heatConstant = 1.0;     // c of H_jj = c / d(j)^2 (Baran and Popović: 1)
   double minimumWeight = 1e-4;   // smaller weights are dropped before renormalization
   double minAngleDegrees = 1.0;  // cotangent clamping, as in the contraction
-  SparseSolverKind solver = SparseSolverKind::CholmodSupernodalMetis;
+  SparseSolverKind solver = SparseSolverKind::Automatic;
 };
 
 struct HeatWeightResult {

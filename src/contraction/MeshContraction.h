@@ -54,7 +54,7 @@ struct ContractionParameters {
   // When an iteration makes the area grow by this factor, the Laplacian of the degenerate triangles has
   // become unreliable (spikes): the previous iterate is kept and the contraction stops.
   double areaGrowthGuard = 1.1;
-  SparseSolverKind solver = SparseSolverKind::CholmodSupernodalMetis;
+  SparseSolverKind solver = SparseSolverKind::Automatic;
 };
 
 struct ContractionResult {

@@ -68,6 +68,8 @@ struct CgBackend
 std::unique_ptr<SparseSolver::Backend> makeBackend(SparseSolverKind kind) {
   using Kind = SparseSolverKind;
   switch (kind) {
+    case Kind::Automatic:  // chosen by SparseSolver::analyze
+      return nullptr;
     case Kind::CholmodSupernodalMetis:
       return std::make_unique<CholmodBackend>(CHOLMOD_METIS);
     case Kind::CholmodSupernodalAmd:
@@ -99,6 +101,7 @@ std::unique_ptr<SparseSolver::Backend> makeBackend(SparseSolverKind kind) {
 }
 
 const std::pair<SparseSolverKind, const char*> kNames[] = {
+    {SparseSolverKind::Automatic, "auto"},
     {SparseSolverKind::CholmodSupernodalMetis, "cholmod-metis"},
     {SparseSolverKind::CholmodSupernodalAmd, "cholmod-amd"},
     {SparseSolverKind::SimplicialLltAmd, "llt-amd"},
@@ -141,20 +144,27 @@ std::vector<std::string> sparseSolverNames() {
   return names;
 }
 
-SparseSolver::SparseSolver(SparseSolverKind kind) : kind_(kind), backend_(makeBackend(kind)) {}
+SparseSolver::SparseSolver(SparseSolverKind kind) : kind_(kind), chosen_(kind), backend_(makeBackend(kind)) {}
 SparseSolver::~SparseSolver() = default;
 
-void SparseSolver::analyze(const SpMat& matrix) { backend_->analyze(matrix); }
+void SparseSolver::analyze(const SpMat& matrix) {
+  if (kind_ == SparseSolverKind::Automatic) {
+    chosen_ = matrix.rows() < kSimplicialBelow ? SparseSolverKind::SimplicialLltAmd
+                                               : SparseSolverKind::CholmodSupernodalMetis;
+    backend_ = makeBackend(chosen_);
+  }
+  backend_->analyze(matrix);
+}
 
 bool SparseSolver::factorize(const SpMat& matrix) {
   if (backend_->factorize(matrix)) return true;
-  error_ = sparseSolverName(kind_) + ": the factorization failed (matrix not positive definite or singular)";
+  error_ = sparseSolverName(chosen_) + ": the factorization failed (matrix not positive definite or singular)";
   return false;
 }
 
 bool SparseSolver::solve(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& solution) {
   if (backend_->solve(rhs, solution) && solution.allFinite()) return true;
-  error_ = sparseSolverName(kind_) + ": the solve failed or gave non-finite values";
+  error_ = sparseSolverName(chosen_) + ": the solve failed or gave non-finite values";
   return false;
 }
 
