@@ -4,16 +4,19 @@
 // skeleton) on the same meshes in one run. Prints per mesh the medians of both, the ratio CGAL / Medial,
 // the iteration counts, the peak memory of each, and the share of Medial's time spent factorizing; then
 // the solver x ordering study of the paper's Table I (contraction only) on one mesh.
-//   medial_bench_contraction [--repeat N] [--table MESH|none] [--no-subdivided] [MESH...]
+//   medial_bench_contraction [--repeat N] [--table MESH|none] [--no-subdivided] [--centring-only] [MESH...]
+// Then the off-centre ratio of issue 26 (src/contraction/CrossSections.h) of each mesh's skeletons.
 // With no mesh: the CGAL samples under data/external (scripts/fetch-samples) and armadillo after one Loop
 // subdivision (~104k vertices). Each run is a child process (fork), so that its peak resident memory
 // (wait4's ru_maxrss) is its own.
 #include "common/Stopwatch.h"
+#include "contraction/CrossSections.h"
 #include "contraction/MeshContraction.h"
 #include "contraction/SkeletonByContraction.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mean_curvature_flow_skeletonization.h>
+#include <CGAL/extract_mean_curvature_flow_skeleton.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -156,6 +159,39 @@ RunResult runContractionOnly(const medial::TriangleMesh& mesh, medial::SparseSol
   return out;
 }
 
+// CGAL's skeleton as a medial::Skeleton (its vertices and edges), for the centring measure.
+medial::Skeleton cgalSkeleton(const SurfaceMesh& input) {
+  Skeletonization::Skeleton graph;
+  CGAL::extract_mean_curvature_flow_skeleton(input, graph);
+  medial::Skeleton s;
+  for (auto v : CGAL::make_range(vertices(graph))) {
+    const auto& p = graph[v].point;
+    s.nodes.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (auto e : CGAL::make_range(edges(graph)))
+    s.edges.push_back({int(source(e, graph)), int(target(e, graph))});
+  return s;
+}
+
+// The issue's off-centre ratio (src/contraction/CrossSections.h) of Medial's default skeleton, of its
+// unselected one (--nodes 0) and of CGAL's: median and 90th percentile, and the samples outside.
+void centringRow(const std::string& name, const SurfaceMesh& sm) {
+  const medial::TriangleMesh mesh = toTriangleMesh(sm);
+  const medial::CrossSections sections(mesh);
+  medial::SkeletonByContractionParameters p;
+  const medial::Skeleton selected = medial::skeletonByContraction(mesh, p).skeleton;
+  p.targetNodes = 0;
+  const medial::Skeleton unselected = medial::skeletonByContraction(mesh, p).skeleton;
+  std::printf("%-18s", name.c_str());
+  for (const medial::Skeleton* s : {&selected, &unselected}) {
+    const auto m = medial::offCentre(*s, sections);
+    std::printf(" | %6.3f %6.3f %4d", m.median(), m.percentile90(), m.outside);
+  }
+  const auto peer = medial::offCentre(cgalSkeleton(sm), sections);
+  std::printf(" | %6.3f %6.3f %4d\n", peer.median(), peer.percentile90(), peer.outside);
+  std::fflush(stdout);
+}
+
 bool readMesh(const std::string& path, SurfaceMesh& mesh) {
   if (!CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty() || !CGAL::is_triangle_mesh(mesh))
     return false;
@@ -171,7 +207,7 @@ std::string sampleMesh(const std::string& name) {
 
 int main(int argc, char** argv) {
   int repeat = 3;
-  bool subdivided = true;
+  bool subdivided = true, timing = true;
   std::string tableMesh = "elephant";
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i) {
@@ -181,8 +217,11 @@ int main(int argc, char** argv) {
       tableMesh = argv[++i];
     } else if (!std::strcmp(argv[i], "--no-subdivided")) {
       subdivided = false;
+    } else if (!std::strcmp(argv[i], "--centring-only")) {
+      timing = false;
     } else if (argv[i][0] == '-') {
-      std::fprintf(stderr, "usage: %s [--repeat N] [--table MESH|none] [--no-subdivided] [MESH...]\n",
+      std::fprintf(stderr,
+                   "usage: %s [--repeat N] [--table MESH|none] [--no-subdivided] [--centring-only] [MESH...]\n",
                    argv[0]);
       return 2;
     } else {
@@ -221,6 +260,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   };
   for (const std::string& name : meshes) {
+    if (!timing) break;
     SurfaceMesh sm;
     if (!readMesh(sampleMesh(name), sm)) {
       std::printf("%-22s cannot read %s (run scripts/fetch-samples)\n", name.c_str(),
@@ -232,6 +272,15 @@ int main(int argc, char** argv) {
       CGAL::Subdivision_method_3::Loop_subdivision(sm, CGAL::parameters::number_of_iterations(1));
       row("armadillo-loop1", sm);
     }
+  }
+
+  // Centring: the off-centre ratio of the issue, 150 samples with a fixed seed.
+  std::printf("\nOff-centre ratio (distance to the cross-section's centroid / its equivalent radius; 150 "
+              "samples): median, 90th percentile, samples outside\n");
+  std::printf("%-18s | %20s | %20s | %20s\n", "mesh", "Medial default", "Medial --nodes 0", "CGAL");
+  for (const std::string& name : meshes) {
+    SurfaceMesh sm;
+    if (readMesh(sampleMesh(name), sm)) centringRow(std::filesystem::path(name).stem().string(), sm);
   }
 
   // Table I of the paper: every solver x ordering on one mesh, contraction only.

@@ -43,7 +43,7 @@ int runSkeleton(const std::vector<std::string>& args) {
       parseArgs(args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations",
                         "--contraction-vertices", "--wl0", "--sl", "--wh0", "--max-wl", "--max-wh",
                         "--shape-weight", "--sampling-weight", "--collapse-length", "--heat", "--contracted"},
-                       {"--no-refine", "--no-cycle-repair", "--weights", "--quiet", "--timings"}});
+                       {"--no-refine", "--no-cycle-repair", "--no-centring", "--weights", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("skeleton needs exactly one MESH file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -75,6 +75,7 @@ int runSkeleton(const std::vector<std::string>& args) {
   setNameFromOption(parsed, "--solver", filter, [&](const std::string& name) { filter->SetSolver(name); });
   if (parsed.has("--no-refine")) filter->RefineEmbeddingOff();
   if (parsed.has("--no-cycle-repair")) filter->RestoreCyclesOff();
+  if (parsed.has("--no-centring")) filter->CentreNodesOff();
   if (parsed.has("--rig") || parsed.has("--weights")) filter->ComputeWeightsOn();
 
   Timings timings;

@@ -41,6 +41,7 @@ vtkMedialContractionSkeleton::vtkMedialContractionSkeleton() {
   this->InitialAttractionWeight = defaults.contraction.initialAttraction;
   this->RefineEmbedding = defaults.refineEmbedding;
   this->RestoreCycles = defaults.restoreCycles;
+  this->CentreNodes = defaults.centreNodes;
   this->ComputeWeights = defaults.computeWeights;
   this->HeatConstant = defaults.weights.heatConstant;
   this->Solver = medial::sparseSolverName(defaults.contraction.solver);
@@ -61,6 +62,7 @@ medial::SkeletonByContractionParameters vtkMedialContractionSkeleton::MakeParame
   p.contraction.initialAttraction = this->InitialAttractionWeight;
   p.refineEmbedding = this->RefineEmbedding;
   p.restoreCycles = this->RestoreCycles;
+  p.centreNodes = this->CentreNodes;
   p.computeWeights = this->ComputeWeights;
   p.weights.heatConstant = this->HeatConstant;
   medial::parseSparseSolverKind(this->Solver, p.contraction.solver);  // SetSolver accepts known names only
@@ -109,6 +111,7 @@ void vtkMedialContractionSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "InitialAttractionWeight: " << this->InitialAttractionWeight << "\n";
   os << indent << "RefineEmbedding: " << this->RefineEmbedding << "\n";
   os << indent << "RestoreCycles: " << this->RestoreCycles << "\n";
+  os << indent << "CentreNodes: " << this->CentreNodes << "\n";
   os << indent << "ComputeWeights: " << this->ComputeWeights << "\n";
   os << indent << "HeatConstant: " << this->HeatConstant << "\n";
   os << indent << "Solver: " << this->Solver << "\n";

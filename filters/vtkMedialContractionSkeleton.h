@@ -78,6 +78,11 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   vtkSetMacro(RestoreCycles, bool);
   vtkGetMacro(RestoreCycles, bool);
   vtkBooleanMacro(RestoreCycles, bool);
+  /// Move nodes of one or two edges to the centroid of the mesh's cross-section through them: the selected
+  /// ones, or every node without a selection (default on; src/contraction/NodeCentring.h).
+  vtkSetMacro(CentreNodes, bool);
+  vtkGetMacro(CentreNodes, bool);
+  vtkBooleanMacro(CentreNodes, bool);
   /// Compute the skinning weights of section III.E (default off: they cost one more factorization).
   vtkSetMacro(ComputeWeights, bool);
   vtkGetMacro(ComputeWeights, bool);
@@ -135,6 +140,7 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   double InitialAttractionWeight;
   bool RefineEmbedding;
   bool RestoreCycles;
+  bool CentreNodes;
   bool ComputeWeights;
   double HeatConstant;
   std::string Solver;

@@ -57,6 +57,8 @@ std::vector<Parameter> contractionParameters() {
       MEDIAL_TOGGLE_PARAMETER(
           f, RestoreCycles, "Restore cycles",
           "Put back the cycles surgery lost: as many skeleton cycles as the mesh has genus"),
+      MEDIAL_TOGGLE_PARAMETER(f, CentreNodes, "Centre nodes",
+                              "Move nodes to the centroid of the mesh's cross-section through them"),
       weights,
       MEDIAL_REAL_PARAMETER(f, HeatConstant, "c (heat)", 3,
                             "H_jj = c / d(j)^2 (§III.E, Baran and Popović: 1)"),
@@ -128,6 +130,7 @@ vtkSmartPointer<vtkAlgorithm> SkeletonPanel::makeFilter(SceneObject* input, QStr
   filter->SetCollapseLengthFraction(f->value("CollapseLengthFraction"));
   filter->SetRefineEmbedding(f->isOn("RefineEmbedding"));
   filter->SetRestoreCycles(f->isOn("RestoreCycles"));
+  filter->SetCentreNodes(f->isOn("CentreNodes"));
   filter->SetComputeWeights(f->isOn("ComputeWeights"));
   filter->SetHeatConstant(f->value("HeatConstant"));
   filter->SetSolver(f->choice("Solver").toStdString());

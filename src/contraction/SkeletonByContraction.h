@@ -25,6 +25,10 @@ struct SkeletonByContractionParameters {
   ContractionParameters contraction;
   SurgeryParameters surgery;
   bool refineEmbedding = true;
+  // Beyond the paper: nodes of one or two edges move to the centroid of the mesh's cross-section through
+  // them (src/contraction/NodeCentring.h): the selected nodes after the selection, or without a selection
+  // every node after the refinement.
+  bool centreNodes = true;
   // Beyond the paper: put back the cycles surgery lost, so that the skeleton has as many independent
   // cycles as the closed mesh has genus (src/contraction/CycleRepair.h).
   bool restoreCycles = true;
@@ -48,6 +52,7 @@ struct SkeletonByContractionResult {
   int pushedNodes = 0;            // nodes moved from outside into the mesh (pushNodesInside)
   CycleRepairResult cycleRepair;  // genus, cycles after surgery, cycles restored
   int splitEdges = 0;             // nodes added inside edges that left the mesh (splitEdgesLeavingTheMesh)
+  int centredNodes = 0;           // node moves to their cross-section's centroid (centreNodes)
   // Seconds per stage, and the share of the contraction spent factorizing.
   double decimationSeconds = 0, contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0,
          refinementSeconds = 0, selectionSeconds = 0, radiiSeconds = 0, weightsSeconds = 0;

@@ -27,6 +27,7 @@ TEST(FilterDefaults, ContractionSkeletonTakesSkeletonByContractionParameters) {
   EXPECT_EQ(f->GetSamplingWeight(), p.surgery.samplingWeight);
   EXPECT_EQ(f->GetRefineEmbedding(), p.refineEmbedding);
   EXPECT_EQ(f->GetRestoreCycles(), p.restoreCycles);
+  EXPECT_EQ(f->GetCentreNodes(), p.centreNodes);
   EXPECT_EQ(f->GetComputeWeights(), p.computeWeights);
   EXPECT_EQ(f->GetHeatConstant(), p.weights.heatConstant);
   EXPECT_EQ(f->GetSolver(), medial::sparseSolverName(p.contraction.solver));
