@@ -188,8 +188,9 @@ class FoldFinder {
   std::vector<bool> inRegion_;
 };
 
+// Returns the vertices moved; *settled tells whether no face cuts another any more.
 int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& flat,
-                std::vector<Eigen::Vector3d>& points) {
+                std::vector<Eigen::Vector3d>& points, bool* settled) {
   const std::vector<Eigen::Vector3d> projected = points;
   std::vector<double> weight(points.size(), 1.0);  // 1: projected, 0: on the base mesh
   int moved = 0;
@@ -218,6 +219,7 @@ int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Ei
     }
     folded = finder.again(points, folded);
   }
+  *settled = folded.empty();
   return moved;
 }
 
@@ -297,48 +299,58 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
   }
   const std::vector<Eigen::Vector3d> sharp = scaling.enabled ? sharpVertices(mesh) : std::vector<Eigen::Vector3d>{};
 
-  std::vector<RefinedPoint> points, onBase;  // projected, and the base mesh's tessellation
-  for (const auto& v : mesh.vertices) points.push_back({v});
-  onBase = points;
-  std::vector<int> baseFace(mesh.faces.size());
-  for (size_t f = 0; f < baseFace.size(); ++f) baseFace[f] = int(f);
+  // The fold repair runs on the last level only (each level projects every vertex again), unless folds are
+  // left there: then everything again with the repair at every level, so that none piles up (the fish and
+  // the hand refined four times).
+  std::vector<RefinedPoint> points;  // projected
+  std::vector<int> baseFace;
   const Far::PrimvarRefinerReal<double> primvars(*refiner);
-  for (int level = 1; level <= levels; ++level) {
-    const Far::TopologyLevel& topology = refiner->GetLevel(level);
-    std::vector<RefinedPoint> next(size_t(topology.GetNumVertices()));
-    primvars.Interpolate(level, points, next);
-    std::vector<RefinedPoint> nextOnBase(next.size());
-    primvars.Interpolate(level, onBase, nextOnBase);
-    std::vector<int> nextBaseFace(size_t(topology.GetNumFaces()));
-    primvars.InterpolateFaceUniform(level, baseFace, nextBaseFace);
-    // The paper's tessellation: the bilinear points of the faces, projected onto the swept surfaces.
-    std::vector<Eigen::Vector3d> flat(next.size()), projected(next.size());
-    inParallel(next.size(), [&](size_t v) {
-      const Eigen::Vector3d p = next[v].p;
-      const std::vector<int>& edges = nearEdges[size_t(nextBaseFace[size_t(topology.GetVertexFaces(int(v))[0])])];
-      Eigen::Vector3d q = p;
-      bool inCrease = false;
-      const SweptPoint surface = nearestSurface(p, spheres, edges, q, &inCrease);
-      for (int again = 0; again < kCreaseIterations && inCrease; ++again) {  // further into the crease
-        const Eigen::Vector3d from = q;
-        nearestSurface(from, spheres, edges, q, &inCrease);
+  auto runLevels = [&](bool repairEveryLevel) {
+    points.clear();
+    for (const auto& v : mesh.vertices) points.push_back({v});
+    std::vector<RefinedPoint> onBase = points;  // the base mesh's tessellation
+    baseFace.resize(mesh.faces.size());
+    for (size_t f = 0; f < baseFace.size(); ++f) baseFace[f] = int(f);
+    bool settled = true;
+    for (int level = 1; level <= levels; ++level) {
+      const Far::TopologyLevel& topology = refiner->GetLevel(level);
+      std::vector<RefinedPoint> next(size_t(topology.GetNumVertices()));
+      primvars.Interpolate(level, points, next);
+      std::vector<RefinedPoint> nextOnBase(next.size());
+      primvars.Interpolate(level, onBase, nextOnBase);
+      std::vector<int> nextBaseFace(size_t(topology.GetNumFaces()));
+      primvars.InterpolateFaceUniform(level, baseFace, nextBaseFace);
+      // The paper's tessellation: the bilinear points of the faces, projected onto the swept surfaces.
+      std::vector<Eigen::Vector3d> flat(next.size()), projected(next.size());
+      inParallel(next.size(), [&](size_t v) {
+        const Eigen::Vector3d p = next[v].p;
+        const std::vector<int>& edges = nearEdges[size_t(nextBaseFace[size_t(topology.GetVertexFaces(int(v))[0])])];
+        Eigen::Vector3d q = p;
+        bool inCrease = false;
+        const SweptPoint surface = nearestSurface(p, spheres, edges, q, &inCrease);
+        for (int again = 0; again < kCreaseIterations && inCrease; ++again) {  // further into the crease
+          const Eigen::Vector3d from = q;
+          nearestSurface(from, spheres, edges, q, &inCrease);
+        }
+        if (surface.found && !sharp.empty())  // the paper's scaling, on the nearest surface
+          q = surface.centre + surface.radius *
+                                   sharpScaleFactor(distanceToNearest(p, sharp) / surface.radius, scaling.minimumScale) *
+                                   surface.direction;
+        flat[v] = nextOnBase[v].p;
+        projected[v] = q;
+      });
+      if (foldRepair && (repairEveryLevel || level == levels)) {
+        const int moved = repairFolds(levelFaces(topology), flat, projected, &settled);
+        if (repairedVertices && level == levels) *repairedVertices = moved;
       }
-      if (surface.found && !sharp.empty())  // the paper's scaling, on the nearest surface
-        q = surface.centre + surface.radius *
-                                 sharpScaleFactor(distanceToNearest(p, sharp) / surface.radius, scaling.minimumScale) *
-                                 surface.direction;
-      flat[v] = nextOnBase[v].p;
-      projected[v] = q;
-    });
-    if (foldRepair && level == levels) {  // each level projects every vertex again: only the last one counts
-      const int moved = repairFolds(levelFaces(topology), flat, projected);
-      if (repairedVertices) *repairedVertices += moved;
+      for (size_t v = 0; v < next.size(); ++v) next[v].p = projected[v];
+      points = std::move(next);
+      onBase = std::move(nextOnBase);
+      baseFace = std::move(nextBaseFace);
     }
-    for (size_t v = 0; v < next.size(); ++v) next[v].p = projected[v];
-    points = std::move(next);
-    onBase = std::move(nextOnBase);
-    baseFace = std::move(nextBaseFace);
-  }
+    return settled;
+  };
+  if (!runLevels(false)) runLevels(true);
   // Back to plain arrays; a vertex belongs to the nearest node among the ends of its face's edges.
   const Far::TopologyLevel& last = refiner->GetLevel(levels);
   mesh.faces = levelFaces(last);

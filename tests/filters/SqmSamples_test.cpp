@@ -233,6 +233,20 @@ TEST_P(SqmSamples, RefinedMeshKeepsTheSkeletonInside) {
   }
 }
 
+// Refined four times, the fish and the hand kept folds when the repair ran on the last level only (15 and
+// 18 intersecting pairs): SqmRefinement then starts again with the repair at every level.
+TEST(SqmFilter, FourLevelsLeaveNoFold) {
+  for (const char* path : {"skeletons/sqm/fish.vtp", "skeletons/hand.swc"}) {
+    auto reader = vtkSmartPointer<vtkMedialReader>::New();
+    reader->SetFileName(medial::test::dataPath(path).c_str());
+    auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+    sqm->SetInputConnection(reader->GetOutputPort());
+    sqm->SetSubdivisionLevels(4);
+    sqm->Update();
+    EXPECT_EQ(selfIntersectingPairs(sqm->GetOutput()), 0u) << path;
+  }
+}
+
 TEST(SqmFilter, FoldRepairUndoesTheFoldsOfTheConeProjection) {
   // The fish refined twice: its pectoral fins leave a flat ellipsoid, and projecting onto the cones
   // there folds the surface (intersecting triangle pairs without the repair).
