@@ -60,6 +60,7 @@ SweptPoint SweptSpheres::project(const Eigen::Vector3d& p, int edge) const {
   const auto& e = s.edges[size_t(edge)];
   const Eigen::Vector3d a = s.nodes[size_t(e[0])], b = s.nodes[size_t(e[1])];
   const double r1 = s.radii[size_t(e[0])], r2 = s.radii[size_t(e[1])], length = (b - a).norm();
+  if (!(length > 0)) return onSphere(p, a, std::max(r1, r2));  // coincident ends: one sphere
   // One sphere holds the other: the larger one is the whole swept volume.
   const Eigen::Vector3d axis = (b - a) / length;
   if (std::abs(r1 - r2) >= length) return r1 >= r2 ? onSphere(p, a, r1, -axis) : onSphere(p, b, r2, axis);
