@@ -117,17 +117,9 @@ void table1(const std::vector<std::string>& paths, int repeat) {
       std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
       std::printf(" %8.3f", 1e3 * s[s.size() / 2]);
     }
-    vtkPolyData* mesh = sqm->GetOutput();
-    long long quads = 0, triangles = 0;
-    for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) {
-      vtkIdType size;
-      const vtkIdType* ids;
-      mesh->GetCellPoints(c, size, ids);
-      quads += size == 4;
-      triangles += size == 3;
-    }
-    std::printf(" | %6d %6d %5d %6d %6lld %5lld %9d\n", sqm->GetBranchNodes(), sqm->GetConnectionNodes(),
-                sqm->GetLeafNodes(), sqm->GetMergedNodes(), quads, triangles, sqm->GetIrregularVertices());
+    std::printf(" | %6d %6d %5d %6d %6d %5d %9d\n", sqm->GetBranchNodes(), sqm->GetConnectionNodes(),
+                sqm->GetLeafNodes(), sqm->GetMergedNodes(), sqm->GetQuads(), sqm->GetTriangles(),
+                sqm->GetIrregularVertices());
   }
 }
 

@@ -25,21 +25,12 @@ namespace {
 // The paper's Table 1 counts beside the stage times: node kinds, merged nodes, faces by kind, irregular
 // vertices.
 void countTable1(vtkMedialSQM* filter, Timings& timings) {
-  vtkPolyData* mesh = filter->GetOutput();
-  long long quads = 0, triangles = 0;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) {
-    vtkIdType size;
-    const vtkIdType* ids;
-    mesh->GetCellPoints(c, size, ids);
-    quads += size == 4;
-    triangles += size == 3;
-  }
   timings.count("sqm", "branch_nodes", filter->GetBranchNodes());
   timings.count("sqm", "connection_nodes", filter->GetConnectionNodes());
   timings.count("sqm", "leaf_nodes", filter->GetLeafNodes());
   timings.count("sqm", "merged_nodes", filter->GetMergedNodes());
-  timings.count("sqm", "quads", quads);
-  timings.count("sqm", "triangles", triangles);
+  timings.count("sqm", "quads", filter->GetQuads());
+  timings.count("sqm", "triangles", filter->GetTriangles());
   timings.count("sqm", "irregular_vertices", filter->GetIrregularVertices());
 }
 

@@ -111,6 +111,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   }
   this->MergedNodes = this->FoldRepairedVertices = 0;
   this->BranchNodes = this->ConnectionNodes = this->LeafNodes = this->IrregularVertices = 0;
+  this->Quads = this->Triangles = 0;
   this->Seconds.assign(GetStageNames().size(), 0.0);
   const medial::SqmResult result = medial::sqmMesh(skeleton, this->MakeParameters(), [this](double f) {
     this->UpdateProgress(f);
@@ -126,6 +127,8 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   this->ConnectionNodes = result.connectionNodes;
   this->LeafNodes = result.leafNodes;
   this->IrregularVertices = result.irregularVertices;
+  this->Quads = result.mesh.quadCount();
+  this->Triangles = result.mesh.triangleCount();
   this->Seconds = {result.straighteningSeconds, result.generationSeconds, result.refinementSeconds,
                    result.joiningSeconds,       result.placementSeconds,  result.subdivisionSeconds,
                    result.repairSeconds};

@@ -85,11 +85,13 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   // After an update with subdivision: refined vertices the fold repair moved off the swept spheres.
   vtkGetMacro(FoldRepairedVertices, int);
   // After an update, the paper's Table 1 counts: branch, connection and leaf nodes meshed (the merged ones
-  // are GetMergedNodes()), and the output's vertices where other than four edges meet.
+  // are GetMergedNodes()), the output's vertices where other than four edges meet, its quads and triangles.
   vtkGetMacro(BranchNodes, int);
   vtkGetMacro(ConnectionNodes, int);
   vtkGetMacro(LeafNodes, int);
   vtkGetMacro(IrregularVertices, int);
+  vtkGetMacro(Quads, int);
+  vtkGetMacro(Triangles, int);
   /// After an update: the seconds of a stage of GetStageNames() (the paper's Table 1: straightening,
   /// generation and refinement of the branch node polyhedra, joining, skinning, subdivision; and repairs).
   double GetStageSeconds(const std::string& stage) const;
@@ -120,6 +122,6 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   // Figures of the last update.
   int MergedNodes = 0;
   int FoldRepairedVertices = 0;
-  int BranchNodes = 0, ConnectionNodes = 0, LeafNodes = 0, IrregularVertices = 0;
+  int BranchNodes = 0, ConnectionNodes = 0, LeafNodes = 0, IrregularVertices = 0, Quads = 0, Triangles = 0;
   std::vector<double> Seconds;  // per stage of GetStageNames()
 };

@@ -543,6 +543,11 @@ int countIrregularVertices(const SqmMesh& mesh) {
 
 }  // namespace
 
+int SqmMesh::triangleCount() const {
+  return int(
+      std::count_if(faces.begin(), faces.end(), [](const std::vector<int>& f) { return f.size() == 3; }));
+}
+
 int SqmMesh::quadCount() const {
   return int(
       std::count_if(faces.begin(), faces.end(), [](const std::vector<int>& f) { return f.size() == 4; }));

@@ -70,6 +70,7 @@ struct SqmMesh {
   std::vector<std::vector<int>> faces;  // quads and triangles, outward oriented
   std::vector<int> vertexNode;          // the skeleton node each vertex belongs to (-1: a capsule node)
   int quadCount() const;
+  int triangleCount() const;
 };
 
 struct SqmResult {
