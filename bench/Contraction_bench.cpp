@@ -10,15 +10,12 @@
 // subdivision (~104k vertices). Each run is a child process (fork), so that its peak resident memory
 // (wait4's ru_maxrss) is its own.
 #include "common/Stopwatch.h"
+#include "CgalSkeletonPeer.h"
 #include "contraction/CrossSections.h"
 #include "contraction/MeshContraction.h"
 #include "contraction/SkeletonByContraction.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Mean_curvature_flow_skeletonization.h>
-#include <CGAL/extract_mean_curvature_flow_skeleton.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/subdivision_method_3.h>
 
@@ -37,9 +34,10 @@
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-using Skeletonization = CGAL::Mean_curvature_flow_skeletonization<SurfaceMesh>;
+using medial::peer::cgalSkeleton;
+using medial::peer::Skeletonization;
+using medial::peer::SurfaceMesh;
+using medial::peer::toTriangleMesh;
 
 struct RunResult {
   double seconds = NAN;
@@ -91,23 +89,6 @@ Measured measure(int repeat, const std::function<RunResult()>& work) {
   return m;
 }
 
-medial::TriangleMesh toTriangleMesh(const SurfaceMesh& sm) {
-  medial::TriangleMesh mesh;
-  mesh.vertices.resize(Eigen::Index(sm.number_of_vertices()), 3);
-  for (auto v : sm.vertices()) {
-    const auto& p = sm.point(v);
-    mesh.vertices.row(Eigen::Index(v.idx())) << p.x(), p.y(), p.z();
-  }
-  mesh.faces.resize(Eigen::Index(sm.number_of_faces()), 3);
-  Eigen::Index f = 0;
-  for (auto face : sm.faces()) {
-    int c = 0;
-    for (auto v : CGAL::vertices_around_face(sm.halfedge(face), sm)) mesh.faces(f, c++) = int(v.idx());
-    ++f;
-  }
-  return mesh;
-}
-
 // contractionVertices: the default budget (decimation first), or 0 to contract the full mesh.
 RunResult runMedial(const medial::TriangleMesh& mesh, int contractionVertices) {
   medial::SkeletonByContractionParameters p;
@@ -157,20 +138,6 @@ RunResult runContractionOnly(const medial::TriangleMesh& mesh, medial::SparseSol
   out.factorizationSeconds = r.analyzeSeconds + r.factorizeSeconds;
   out.ok = r.ok();
   return out;
-}
-
-// CGAL's skeleton as a medial::Skeleton (its vertices and edges), for the centring measure.
-medial::Skeleton cgalSkeleton(const SurfaceMesh& input) {
-  Skeletonization::Skeleton graph;
-  CGAL::extract_mean_curvature_flow_skeleton(input, graph);
-  medial::Skeleton s;
-  for (auto v : CGAL::make_range(vertices(graph))) {
-    const auto& p = graph[v].point;
-    s.nodes.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (auto e : CGAL::make_range(edges(graph)))
-    s.edges.push_back({int(source(e, graph)), int(target(e, graph))});
-  return s;
 }
 
 // The off-centre ratio (src/contraction/CrossSections.h) of Medial's default skeleton, of its

@@ -1,14 +1,12 @@
 // CrossSections and NodeCentring (issue 26): the off-centre measure on a tube whose axis is known, and the
 // centring goal against CGAL's mean curvature flow skeleton on three sample meshes.
+#include "CgalSkeletonPeer.h"
 #include "TestPaths.h"
 
 #include "contraction/CrossSections.h"
 #include "contraction/SkeletonByContraction.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/extract_mean_curvature_flow_skeleton.h>
 
 #include <gtest/gtest.h>
 
@@ -18,8 +16,7 @@
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using medial::peer::SurfaceMesh;
 
 // A closed tube of radius r along x from 0 to length (rings of `sides` vertices, flat caps fanned).
 medial::TriangleMesh tube(double r, double length, int rings = 40, int sides = 48) {
@@ -49,31 +46,6 @@ medial::TriangleMesh tube(double r, double length, int rings = 40, int sides = 4
   mesh.faces.resize(Eigen::Index(faces.size()), 3);
   for (size_t k = 0; k < faces.size(); ++k) mesh.faces.row(Eigen::Index(k)) = faces[k];
   return mesh;
-}
-
-medial::TriangleMesh toTriangleMesh(const SurfaceMesh& sm) {
-  medial::TriangleMesh mesh;
-  mesh.vertices.resize(Eigen::Index(sm.number_of_vertices()), 3);
-  for (auto v : sm.vertices())
-    mesh.vertices.row(Eigen::Index(v.idx())) << sm.point(v).x(), sm.point(v).y(), sm.point(v).z();
-  mesh.faces.resize(Eigen::Index(sm.number_of_faces()), 3);
-  Eigen::Index f = 0;
-  for (auto face : sm.faces()) {
-    int c = 0;
-    for (auto v : CGAL::vertices_around_face(sm.halfedge(face), sm)) mesh.faces(f, c++) = int(v.idx());
-    ++f;
-  }
-  return mesh;
-}
-
-medial::Skeleton cgalSkeleton(const SurfaceMesh& sm) {
-  CGAL::Mean_curvature_flow_skeletonization<SurfaceMesh>::Skeleton graph;
-  CGAL::extract_mean_curvature_flow_skeleton(sm, graph);
-  medial::Skeleton s;
-  for (auto v : CGAL::make_range(vertices(graph)))
-    s.nodes.emplace_back(graph[v].point.x(), graph[v].point.y(), graph[v].point.z());
-  for (auto e : CGAL::make_range(edges(graph))) s.edges.push_back({int(source(e, graph)), int(target(e, graph))});
-  return s;
 }
 
 }  // namespace
@@ -115,7 +87,7 @@ TEST(NodeCentring, UnselectedSkeletonsAreAsCentredAsCgalsOnThreeSamples) {
     if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " missing: run scripts/fetch-samples";
     SurfaceMesh sm;
     ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, sm));
-    const medial::TriangleMesh mesh = toTriangleMesh(sm);
+    const medial::TriangleMesh mesh = medial::peer::toTriangleMesh(sm);
     const medial::CrossSections sections(mesh);
     medial::SkeletonByContractionParameters p;
     p.targetNodes = 0;
@@ -125,7 +97,7 @@ TEST(NodeCentring, UnselectedSkeletonsAreAsCentredAsCgalsOnThreeSamples) {
     ASSERT_TRUE(centred.ok() && uncentred.ok());
     const auto ours = medial::offCentre(centred.skeleton, sections);
     const auto before = medial::offCentre(uncentred.skeleton, sections);
-    const auto cgal = medial::offCentre(cgalSkeleton(sm), sections);
+    const auto cgal = medial::offCentre(medial::peer::cgalSkeleton(sm), sections);
     std::printf("%s: off-centre median / 90th percentile: Medial %.3f / %.3f (without centring %.3f / %.3f), "
                 "CGAL %.3f / %.3f\n",
                 sample.name, ours.median(), ours.percentile90(), before.median(), before.percentile90(),
