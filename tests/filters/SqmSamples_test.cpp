@@ -165,20 +165,6 @@ TEST_P(SqmSamples, ClosedManifoldWithoutSelfIntersections) {
   EXPECT_EQ(refinedPairs[1], 0u);
 }
 
-// The mesh's triangles (polygons fanned from their first vertex) for the inside test.
-medial::TriangleMesh trianglesOf(vtkPolyData* mesh) {
-  std::vector<Eigen::Vector3i> fan;
-  for (const auto& f : polygonsOf(mesh))
-    for (size_t k = 1; k + 1 < f.size(); ++k) fan.emplace_back(int(f[0]), int(f[k]), int(f[k + 1]));
-  medial::TriangleMesh t;
-  const auto points = medial::pointsOf(mesh);
-  t.vertices.resize(Eigen::Index(points.size()), 3);
-  for (size_t v = 0; v < points.size(); ++v) t.vertices.row(Eigen::Index(v)) = points[v];
-  t.faces.resize(Eigen::Index(fan.size()), 3);
-  for (size_t k = 0; k < fan.size(); ++k) t.faces.row(Eigen::Index(k)) = fan[k];
-  return t;
-}
-
 TEST_P(SqmSamples, RefinedMeshKeepsTheSkeletonInside) {
   const SampleSkeleton sample = GetParam();
   auto reader = vtkSmartPointer<vtkMedialReader>::New();
@@ -211,7 +197,7 @@ TEST_P(SqmSamples, RefinedMeshKeepsTheSkeletonInside) {
   for (int levels = 1; levels <= 3; ++levels) {
     sqm->SetSubdivisionLevels(levels);
     sqm->Update();
-    const medial::InsideTest inside(trianglesOf(sqm->GetOutput()));
+    const medial::InsideTest inside(medial::toTriangleMesh(medial::triangulated(sqm->GetOutput())));
     auto depth = [&](const Eigen::Vector3d& p) {
       const double d = std::sqrt(inside.squaredDistanceToSurface(p));
       return inside.contains(p) ? d : -d;
