@@ -22,8 +22,9 @@ namespace {
 namespace Far = OpenSubdiv::Far;
 namespace Sdc = OpenSubdiv::Sdc;
 
-// The width of the blend of projections (nearestSurface), in radii of the nearest surface. Refined twice,
-// intersecting pairs of the humanoid / fish / figure / octopus: no blend 490 / 15 / 168 / 24; 0.2: 94 / 22
+// The width of the blend of projections (nearestSurface), in radii of the nearest surface. Chosen when the
+// refinement was Catmull-Clark on truncated cones; refined twice, intersecting pairs of the humanoid / fish /
+// figure / octopus before the fold repair: no blend 490 / 15 / 168 / 24; 0.2: 94 / 22
 // / 31 / 0; 0.8: 16 / 24 / 14 / 0. (Blending on the outer side of bends as well cut them further, to 23 /
 // 0 / 26 / 0 at 0.2, but grooved every tentacle at its nodes and sharpened the octopus's head.)
 constexpr double kSurfaceBlend = 0.8;
