@@ -21,6 +21,7 @@ int runSkeleton(const std::vector<std::string>& args);
 int runSqm(const std::vector<std::string>& args);
 int runCenterline(const std::vector<std::string>& args);
 int runSketch(const std::vector<std::string>& args);
+int runRig(const std::vector<std::string>& args);
 // Hands `medial batch ARGS` to the Python batch runner (medial/batch.py); returns only on failure.
 int runBatch(const char* self, const std::vector<std::string>& args);
 

@@ -3,7 +3,9 @@
 #include "CommandLine.h"
 
 #include "vtkMedialContractionSkeleton.h"
+#include "vtkMedialRigWriter.h"
 #include "vtkMedialSQM.h"
+#include "vtkMedialSkinBinding.h"
 #include "vtkMedialSketchSkeleton.h"
 #include "vtkMedialTskCenterline.h"
 
@@ -68,6 +70,8 @@ const std::vector<Command>& commands() {
   const auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
   const auto tsk = vtkSmartPointer<vtkMedialTskCenterline>::New();
   const auto sketch = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
+  const auto binding = vtkSmartPointer<vtkMedialSkinBinding>::New();
+  const auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
   static const std::vector<Command> all = {
       {"skeleton", "curve skeleton of a surface mesh by mesh contraction",
        "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig "
@@ -253,6 +257,27 @@ const std::vector<Command>& commands() {
            "  --quiet                   no progress line\n"
            "  --timings                 print stage times as JSON on stdout\n",
        runSketch},
+      {"rig", "skinning weights binding any mesh to any skeleton, written as a rig",
+       "usage: medial rig SKELETON MESH -o RIG.glb|RIG.fbx [--weights MESH_OUT] [--root N] [--heat C]\n"
+       "                  [--max-influences N] [--quiet] [--timings]\n\n"
+       "Binds MESH (.off .obj .ply .stl .vtp .vtk) to SKELETON (.vtp .swc ...) with heat-diffusion skinning\n"
+       "weights (Baran and Popovic 2007, as the contraction paper's III.E) and writes the rig (III.F): one\n"
+       "bone per skeleton edge, at most four per vertex. For a sketch (medial sketch --mesh), an SQM mesh\n"
+       "and the skeleton it was made from, or a mesh and a skeleton drawn for it.\n"
+       "  -o, --output RIG          the rig as glTF 2.0 (.glb) or FBX (.fbx)\n"
+       "  --weights MESH_OUT        also the mesh with point data SkinWeights (a component per bone) and\n"
+       "                            Bone (the strongest)\n"
+       "  --root N                  the root node (default: the skeleton's Root, else its central node,\n"
+       "                            the middle of its longest path)\n"
+       "  --heat C                  c of the heat weights' H = c / d^2 (default " +
+           number(binding->GetHeatConstant()) +
+           ")\n"
+           "  --max-influences N        most bones per vertex (default " +
+           number(writer->GetMaxInfluences()) +
+           ")\n"
+           "  --quiet                   no progress line\n"
+           "  --timings                 print stage times as JSON on stdout\n",
+       runRig},
       {"render", "render meshes, skeletons and volumes offscreen to a PNG",
        "usage: medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION]\n"
        "                     [--skeleton-scale S] [--mesh-opacity A]\n"

@@ -1,6 +1,9 @@
 #include "MedialMeshData.h"
 
+#include <algorithm>
+
 #include <vtkCellArray.h>
+#include <vtkDataArray.h>
 #include <vtkIdList.h>
 #include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
@@ -122,6 +125,25 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& 
 
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values) {
   return namedArray<vtkDoubleArray>(name, values);
+}
+
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const Eigen::MatrixXd& rows) {
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(int(std::max<Eigen::Index>(rows.cols(), 1)));
+  array->SetNumberOfTuples(rows.rows());
+  for (Eigen::Index row = 0; row < rows.rows(); ++row)
+    for (Eigen::Index column = 0; column < rows.cols(); ++column)
+      array->SetTypedComponent(row, int(column), rows(row, column));
+  return array;
+}
+
+Eigen::MatrixXd matrixFromArray(vtkDataArray* array) {
+  Eigen::MatrixXd rows(array->GetNumberOfTuples(), array->GetNumberOfComponents());
+  for (vtkIdType row = 0; row < array->GetNumberOfTuples(); ++row)
+    for (int column = 0; column < array->GetNumberOfComponents(); ++column)
+      rows(row, column) = array->GetComponent(row, column);
+  return rows;
 }
 
 }  // namespace medial

@@ -7,11 +7,12 @@
 
 #include <vtkSmartPointer.h>
 
-#include <Eigen/Core>
+#include <Eigen/Dense>
 
 #include <cstdint>
 #include <vector>
 
+class vtkDataArray;
 class vtkDoubleArray;
 class vtkIntArray;
 class vtkPolyData;
@@ -41,5 +42,9 @@ vtkSmartPointer<vtkPolyData> polyDataFromPolygons(const std::vector<Eigen::Vecto
 // A named array with one value per element of `values` (point data, cell data or a table column).
 vtkSmartPointer<vtkIntArray> intArray(const char* name, const std::vector<int>& values);
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values);
+// One tuple per row of `rows`, one component per column (skinning weights: a vertex's weight per bone).
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const Eigen::MatrixXd& rows);
+// The array's tuples as the rows of a matrix.
+Eigen::MatrixXd matrixFromArray(vtkDataArray* array);
 
 }  // namespace medial

@@ -160,15 +160,7 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   for (Eigen::Index v = 0; v < result.contracted.rows(); ++v)
     for (int c = 0; c < 3; ++c) contracted->SetTypedComponent(v, c, result.contracted(v, c));
   meshOutput->GetPointData()->AddArray(contracted);
-  if (this->ComputeWeights) {
-    auto weights = vtkSmartPointer<vtkDoubleArray>::New();
-    weights->SetName("SkinWeights");
-    weights->SetNumberOfComponents(int(result.weights.cols()));
-    weights->SetNumberOfTuples(result.weights.rows());
-    for (Eigen::Index v = 0; v < result.weights.rows(); ++v)
-      for (Eigen::Index bone = 0; bone < result.weights.cols(); ++bone)
-        weights->SetTypedComponent(v, int(bone), result.weights(v, bone));
-    meshOutput->GetPointData()->AddArray(weights);
-  }
+  if (this->ComputeWeights)
+    meshOutput->GetPointData()->AddArray(medial::doubleArray("SkinWeights", result.weights));
   return 1;
 }

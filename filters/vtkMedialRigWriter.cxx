@@ -72,10 +72,7 @@ void vtkMedialRigWriter::WriteData() {
   const vtkSmartPointer<vtkPolyData> triangles = medial::triangulated(mesh);
   rig.mesh = medial::toTriangleMesh(triangles);
   vtkDataArray* triangulatedWeights = triangles->GetPointData()->GetArray("SkinWeights");
-  rig.weights.resize(triangulatedWeights->GetNumberOfTuples(), triangulatedWeights->GetNumberOfComponents());
-  for (vtkIdType v = 0; v < triangulatedWeights->GetNumberOfTuples(); ++v)
-    for (int bone = 0; bone < triangulatedWeights->GetNumberOfComponents(); ++bone)
-      rig.weights(v, bone) = triangulatedWeights->GetComponent(v, bone);
+  rig.weights = medial::matrixFromArray(triangulatedWeights);
 
   medial::RigExportOptions options;
   options.maxInfluences = this->MaxInfluences;

@@ -7,7 +7,7 @@
 
 #include "contraction/ConnectivitySurgery.h"
 #include "contraction/CycleRepair.h"
-#include "contraction/HeatWeights.h"
+#include "rig/HeatWeights.h"
 #include "contraction/MeshContraction.h"
 #include "skeleton/Skeleton.h"
 

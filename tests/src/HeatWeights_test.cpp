@@ -1,6 +1,6 @@
 // HeatWeights: Baran-Popović heat diffusion (contraction paper III.E) on meshes with known skeletons.
 #include "ContractionTestMeshes.h"
-#include "contraction/HeatWeights.h"
+#include "rig/HeatWeights.h"
 #include "contraction/SkeletonByContraction.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // RigExport: a skinned tube with a three-bone skeleton written as glTF and FBX, read back with Assimp.
 #include "ContractionTestMeshes.h"
-#include "contraction/HeatWeights.h"
+#include "rig/HeatWeights.h"
 #include "rig/RigExport.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "contraction/HeatWeights.h"
+#include "rig/HeatWeights.h"
 
 #include "common/UnionFind.h"
 

@@ -1,0 +1,34 @@
+// SkinBinding: binds any mesh to any skeleton with the heat-diffusion weights of rig/HeatWeights.h (the
+// contraction paper's §III.E, Baran and Popović 2007) - not only the contraction's own mesh and skeleton but
+// a sketch's inflated mesh and its skeleton, an SQM mesh and the skeleton it was swept from, or a mesh and
+// a skeleton drawn by hand.
+//
+// The rig needs one root. A skeleton that names none gets its central node: the middle of its longest
+// path (by edge length) in its longest component - the pelvis or chest of a figure, the body of a fish -
+// which is where a rigger puts the root so that posing a limb never drags the body.
+#pragma once
+
+#include "rig/HeatWeights.h"
+
+namespace medial {
+
+struct SkinBindingResult {
+  Eigen::MatrixXd weights;    // (mesh vertices x skeleton edges), rows summing to 1
+  int root = -1;              // the skeleton's root, or its central node when it had none
+  int nodesOutside = 0;       // skeleton nodes outside the mesh (a bone there sees no vertex from inside)
+  int invisibleVertices = 0;  // vertices their nearest bone does not see (weighted by diffusion only)
+  std::string error;
+  bool ok() const { return error.empty(); }
+};
+
+// The middle node of the longest shortest path of the skeleton's longest component (by edge length);
+// -1 for a skeleton without nodes.
+int centralNode(const Skeleton& skeleton);
+
+// Heat-diffusion weights of every mesh vertex for every skeleton edge. Errors: no bones, no faces, a
+// skeleton entirely outside the mesh's bounding box (another unit or frame), solver failure, abort.
+SkinBindingResult bindSkin(const TriangleMesh& mesh, const Skeleton& skeleton,
+                           const HeatWeightParameters& parameters = {},
+                           const std::function<bool(double)>& progress = {});
+
+}  // namespace medial
