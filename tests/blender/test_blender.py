@@ -1,5 +1,6 @@
-"""Blender as the test client: rigs (medial skeleton --rig) in .glb and .fbx, and SQM meshes in .obj and
-.ply, imported by Debian's Blender 3.4 run headless (tests/blender/blender_report.py reports what it got)."""
+"""Blender as the test client: rigs (medial skeleton --rig, and medial rig on a sketch, an SQM mesh and a
+contraction skeleton) in .glb and .fbx, and SQM meshes in .obj and .ply, imported by Debian's Blender 3.4
+run headless (tests/blender/blender_report.py reports what it got)."""
 import json
 import os
 import shutil
@@ -13,6 +14,7 @@ REPORT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "blender_repor
 CGAL = os.path.join(SOURCE, "data", "external", "cgal", "meshes")
 RIGGED = [os.path.join(SOURCE, "data", "meshes", "torus.off")] + [
     os.path.join(CGAL, name + ".off") for name in ("elephant", "dino", "cow")]
+SKETCH = os.path.join(SOURCE, "data", "sketches", "bird.txt")
 TUBES = [os.path.join(SOURCE, "data", "skeletons", "sqm", name + ".vtp") for name in ("fish", "humanoid", "octopus")]
 
 
@@ -39,6 +41,20 @@ def blender_reports(paths):
     return reports
 
 
+def segment_count(path):
+    """Edges of a skeleton .vtp (its polylines split into 2-point segments): the bones of its rig."""
+    import vtk
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    lines = reader.GetOutput().GetLines()
+    ids, segments = vtk.vtkIdList(), 0
+    lines.InitTraversal()
+    while lines.GetNextCell(ids):
+        segments += ids.GetNumberOfIds() - 1
+    return segments
+
+
 def polydata_counts(path):
     """(lines, polygons, quads) of a .vtp, read with Debian's VTK."""
     import vtk
@@ -62,6 +78,21 @@ class BlenderOpensWhatMedialWrites(unittest.TestCase):
                 medial("skeleton", mesh, "-o", stem + ".vtp", "--rig", stem + "." + extension)
                 paths.append(stem + "." + extension)
             cls.edges[stem] = polydata_counts(stem + ".vtp")[0]
+        # medial rig binds meshes that other commands made: a sketch's, an SQM mesh (a character made from
+        # a skeleton alone) and a contraction skeleton's mesh.
+        sketch = os.path.join(cls.dir, "rig-bird")
+        medial("sketch", SKETCH, "-o", sketch + "-skeleton.vtp", "--mesh", sketch + "-mesh.vtp")
+        humanoid = os.path.join(cls.dir, "rig-humanoid")
+        medial("sqm", TUBES[1], "-o", humanoid + "-mesh.obj", "--subdivide", "1")
+        dino = os.path.join(cls.dir, "rig-dino")
+        medial("skeleton", os.path.join(CGAL, "dino.off"), "-o", dino + "-skeleton.vtp")
+        for stem, skeleton, mesh in ((sketch, sketch + "-skeleton.vtp", sketch + "-mesh.vtp"),
+                                     (humanoid, TUBES[1], humanoid + "-mesh.obj"),
+                                     (dino, dino + "-skeleton.vtp", os.path.join(CGAL, "dino.off"))):
+            for extension in ("glb", "fbx"):
+                medial("rig", skeleton, mesh, "-o", stem + "." + extension)
+                paths.append(stem + "." + extension)
+            cls.edges[stem] = segment_count(skeleton)
         for skeleton in TUBES:
             stem = os.path.join(cls.dir, os.path.splitext(os.path.basename(skeleton))[0])
             medial("sqm", skeleton, "-o", stem + ".vtp")

@@ -254,6 +254,55 @@ TEST(Cli, SkeletonWritesRigsAsGlbAndFbx) {
   }
 }
 
+// `medial rig` binds a mesh made elsewhere: the sketch's inflated parts to its skeleton, an SQM mesh to the
+// skeleton it was made from.
+TEST(Cli, RigBindsSketchAndSqmMeshesToTheirSkeletons) {
+  const std::string dir = scratchDir("cli-rig-any");
+  ASSERT_EQ(runCommand(medialCommand("sketch " + dataPath("sketches/star.txt") + " -o " + dir + "/star.vtp --mesh " +
+                                     dir + "/star-mesh.vtp --quiet"))
+                .exitCode,
+            0);
+  auto sketch = runCommand(medialCommand("rig " + dir + "/star.vtp " + dir + "/star-mesh.vtp -o " + dir +
+                                         "/star.fbx --weights " + dir + "/star-weights.vtp --quiet --timings"));
+  ASSERT_EQ(sketch.exitCode, 0) << sketch.err;
+  EXPECT_NE(sketch.out.find("\"weights\""), std::string::npos) << sketch.out;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/star.fbx"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/star-weights.vtp"));
+
+  const std::string skeleton = dataPath("skeletons/sqm/fish.vtp");
+  ASSERT_EQ(runCommand(medialCommand("sqm " + skeleton + " -o " + dir + "/fish.obj --quiet")).exitCode, 0);
+  auto sqm = runCommand(
+      medialCommand("rig " + skeleton + " " + dir + "/fish.obj -o " + dir + "/fish.glb --root 0 --quiet"));
+  ASSERT_EQ(sqm.exitCode, 0) << sqm.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/fish.glb"));
+}
+
+TEST(Cli, RigErrorsAreOneLineAndLeaveNoFile) {
+  const std::string dir = scratchDir("cli-rig-errors");
+  const std::string skeleton = dataPath("skeletons/sqm/fish.vtp"), torus = dataPath("meshes/torus.off");
+  for (const std::string& args : {"rig " + skeleton, "rig " + skeleton + " " + torus,
+                                  "rig " + skeleton + " " + torus + " -o rig.obj",
+                                  "rig " + skeleton + " " + torus + " -o rig.glb --max-influences 0",
+                                  "rig " + skeleton + " " + torus + " -o rig.glb --root -2"}) {
+    auto r = runCommand(medialCommand(args));
+    EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+  }
+  const std::string rig = dir + "/rig.glb";
+  const std::vector<std::pair<std::string, std::string>> failures = {
+      {"rig " + torus + " " + torus, "not a skeleton"},
+      {"rig " + skeleton + " " + skeleton, "not a surface mesh"},
+      {"rig " + skeleton + " " + torus + " --root 999", "is not a node of the skeleton"},
+      {"rig " + skeleton + " " + dir + "/none.off", "no such file"},
+  };
+  for (const auto& [args, reason] : failures) {
+    auto r = runCommand(medialCommand(args + " -o " + rig + " --quiet"));
+    EXPECT_EQ(r.exitCode, 1) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(reason), std::string::npos) << args << "\n" << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(rig)) << args;
+  }
+}
+
 TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
   const std::string dir = scratchDir("cli-sqm");
   auto r = runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + dir +
@@ -605,7 +654,7 @@ TEST(Cli, ReadmeUsageMatchesEveryCommandsHelp) {
     if (line.rfind("medial ", 0) == 0) current = words(line)[1];
     readmeUsage[current] += line + "\n";
   }
-  for (const char* command : {"render", "skeleton", "sqm", "centerline", "sketch"}) {
+  for (const char* command : {"render", "skeleton", "sqm", "centerline", "sketch", "rig"}) {
     const auto help = runCommand(medialCommand(std::string(command) + " --help"));
     ASSERT_EQ(help.exitCode, 0) << command;
     const size_t start = help.out.find("usage: ") + 7;
