@@ -1,5 +1,5 @@
 // `medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp] [--simplify ES] [--merge EM] [--prune ET]
-//                [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U] [--thickness C] [--no-mesh]`
+//                [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U] [--thickness C] [--separate-parts]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
@@ -21,7 +21,7 @@ namespace medial::cli {
 int runSketch(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(args, {{"-o", "--output", "--mesh", "--simplify", "--merge", "--prune",
                                               "--collapse", "--part", "--unit", "--thickness", "--resample"},
-                                             {"--quiet", "--timings"}});
+                                             {"--separate-parts", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sketch needs exactly one POLYGON file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -50,6 +50,7 @@ int runSketch(const std::vector<std::string>& args) {
     filter->SetPartThresholds(int(k) - 1, t[0], t[1], t[2], t[3]);
   }
   if (meshOutput.empty()) filter->InflateOff();
+  if (parsed.has("--separate-parts")) filter->MergePartsOff();
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));

@@ -222,7 +222,7 @@ const std::vector<Command>& commands() {
       {"sketch", "animatable skeleton and inflated mesh of closed 2-D strokes",
        "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp] [--simplify ES] [--merge EM]\n"
        "                     [--prune ET] [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U]\n"
-       "                     [--resample STEP] [--thickness C] [--quiet] [--timings]\n\n"
+       "                     [--resample STEP] [--thickness C] [--separate-parts] [--quiet] [--timings]\n\n"
        "Skeletonizes sketched outlines (Ma et al. 2021): each closed stroke of POLYGON.txt ('x y' lines, "
        "parts\n"
        "separated by a blank line, each optionally followed by four rows of its 4x4 placement matrix) gets "
@@ -233,7 +233,9 @@ const std::vector<Command>& commands() {
        "--unit).\n"
        "  -o, --output SKELETON     the skeleton (.vtp: Radius, NodeType, Root, Part, Branch; .vtk .obj "
        ".ply)\n"
-       "  --mesh MESH               the inflated strokes, closed triangle meshes with point data Part\n"
+       "  --mesh MESH               the inflated strokes joined into one watertight triangle mesh (the union\n"
+       "                            of their volumes), point data Part\n"
+       "  --separate-parts          with --mesh: one closed mesh per stroke, left overlapping\n"
        "  --simplify ES             branch simplification threshold epsilon_s (default " +
            number(sketch->GetSimplificationThreshold()) +
            ")\n"

@@ -32,6 +32,7 @@ vtkMedialSketchSkeleton::vtkMedialSketchSkeleton() {
   this->Thickness = defaults.thickness;
   this->MeshEdgeLength = defaults.meshEdgeLength;
   this->Inflate = defaults.inflate;
+  this->MergeParts = defaults.mergeParts;
 }
 
 medial::SketchParameters vtkMedialSketchSkeleton::MakeParameters() const {
@@ -45,6 +46,7 @@ medial::SketchParameters vtkMedialSketchSkeleton::MakeParameters() const {
   p.thickness = this->Thickness;
   p.meshEdgeLength = this->MeshEdgeLength;
   p.inflate = this->Inflate;
+  p.mergeParts = this->MergeParts;
   return p;
 }
 
@@ -66,6 +68,7 @@ void vtkMedialSketchSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Thickness: " << this->Thickness << "\n";
   os << indent << "MeshEdgeLength: " << this->MeshEdgeLength << "\n";
   os << indent << "Inflate: " << this->Inflate << "\n";
+  os << indent << "MergeParts: " << this->MergeParts << "\n";
 }
 
 void vtkMedialSketchSkeleton::SetPartThresholds(int part, double simplification, double merging,

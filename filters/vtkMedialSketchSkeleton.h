@@ -8,8 +8,10 @@
  * in 3-D), as vtkMedialSketchReader produces.
  * Output port 0: the skeleton (docs/ARCHITECTURE.md §4: `Radius` from the inscribed balls, `NodeType`, field
  * `Root`), with point data `Part` (int) and cell data `Part` and `Branch` (int: the branch of the part's
- * local skeleton, -1 for the bones joining parts). Ready for vtkMedialSQM. Output port 1: the inflated parts,
- * closed triangle meshes, point data `Part`.
+ * local skeleton, -1 for the bones joining parts). Ready for vtkMedialSQM. Output port 1: the inflated parts
+ * as one watertight triangle mesh, the union of their volumes (CGAL corefinement with exact constructions:
+ * closed, manifold, no face cutting another), point data `Part` (a vertex on a seam has the earlier part's);
+ * with MergeParts off, one closed component per part. Ready for vtkMedialSkinBinding with the skeleton.
  *
  * Lengths are in sketch pixels, UnitLength stroke units each (0, the default: a thousandth of the
  * drawing's bounding-box diagonal), so the paper's defaults work at any scale.
@@ -75,6 +77,10 @@ class MEDIALFILTERS_EXPORT vtkMedialSketchSkeleton : public vtkPolyDataAlgorithm
   vtkSetMacro(Inflate, bool);
   vtkGetMacro(Inflate, bool);
   vtkBooleanMacro(Inflate, bool);
+  /// Whether the inflated parts are joined into one watertight mesh (default on) or left overlapping.
+  vtkSetMacro(MergeParts, bool);
+  vtkGetMacro(MergeParts, bool);
+  vtkBooleanMacro(MergeParts, bool);
 
  protected:
   vtkMedialSketchSkeleton();
@@ -99,6 +105,7 @@ class MEDIALFILTERS_EXPORT vtkMedialSketchSkeleton : public vtkPolyDataAlgorithm
   double Thickness;
   double MeshEdgeLength;
   bool Inflate;
+  bool MergeParts;
   std::map<int, std::array<double, 4>> PartThresholds;
   std::map<std::pair<int, int>, double> BranchThresholds;
 };

@@ -2,6 +2,7 @@
 
 #include "common/Stopwatch.h"
 
+#include "mesh/MeshUnion.h"
 #include "sketch/BoundedDP.h"
 #include "sketch/SketchInflation.h"
 #include "sketch/SkeletonRefinement.h"
@@ -22,6 +23,37 @@ double planeScale(const Eigen::Matrix4d& placement) {
 }
 
 // Stage 1-3 for one part: its skeleton nodes and bones, added to `graph` with label `part`.
+// The inflated piece (in its stroke's plane) moved by the part's placement; a mirroring placement turns
+// the faces back outward.
+TriangleMesh placedPiece(const TriangleMesh& piece, const Eigen::Matrix4d& placement) {
+  TriangleMesh placed = piece;
+  for (Eigen::Index v = 0; v < piece.vertices.rows(); ++v) {
+    const Eigen::Vector3d q = piece.vertices.row(v).transpose();
+    placed.vertices.row(v) = place(placement, q.head<2>(), q.z()).transpose();
+  }
+  if (placement.block<3, 3>(0, 0).determinant() < 0) placed.faces.col(1).swap(placed.faces.col(2));
+  return placed;
+}
+
+// The pieces side by side in one mesh, each vertex labelled with its part.
+void appendPieces(const std::vector<TriangleMesh>& pieces, SketchResult& result) {
+  Eigen::Index vertices = 0, faces = 0;
+  for (const TriangleMesh& piece : pieces) {
+    vertices += piece.vertices.rows();
+    faces += piece.faces.rows();
+  }
+  result.mesh.vertices.resize(vertices, 3);
+  result.mesh.faces.resize(faces, 3);
+  vertices = faces = 0;
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    result.mesh.vertices.middleRows(vertices, pieces[k].vertices.rows()) = pieces[k].vertices;
+    result.mesh.faces.middleRows(faces, pieces[k].faces.rows()) = pieces[k].faces.array() + int(vertices);
+    result.meshVertexPart.insert(result.meshVertexPart.end(), size_t(pieces[k].vertices.rows()), int(k));
+    vertices += pieces[k].vertices.rows();
+    faces += pieces[k].faces.rows();
+  }
+}
+
 bool extractPart(const SketchPart& part, int partIndex, const SketchParameters& p, double unit,
                  SketchGraph& graph, SketchPartResult& out, std::string& error) {
   out.stroke = prepareStroke(part.stroke, {p.resampleStep * unit, p.polygonTolerance * unit});
@@ -154,8 +186,7 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
 
   if (p.inflate) {
     Stopwatch inflationStart;
-    std::vector<Eigen::RowVector3d> vertices;
-    std::vector<Eigen::RowVector3i> faces;
+    std::vector<TriangleMesh> pieces(parts.size());
     for (int k = 0; k < int(parts.size()); ++k) {
       TriangleMesh piece;
       std::string error;
@@ -164,26 +195,21 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
         result.error = "stroke " + std::to_string(k + 1) + ": " + error;
         return result;
       }
-      const int offset = int(vertices.size());
-      const bool mirrored = parts[k].placement.block<3, 3>(0, 0).determinant() < 0;
-      for (int v = 0; v < piece.vertices.rows(); ++v) {
-        const Eigen::Vector3d q = piece.vertices.row(v).transpose();
-        vertices.push_back(place(parts[k].placement, q.head<2>(), q.z()).transpose());
-        result.meshVertexPart.push_back(k);
-      }
-      for (int f = 0; f < piece.faces.rows(); ++f) {
-        Eigen::RowVector3i face = piece.faces.row(f).array() + offset;
-        if (mirrored) std::swap(face[1], face[2]);
-        faces.push_back(face);
-      }
-      result.parts[k].firstMeshVertex = offset;
-      result.parts[k].meshVertexCount = int(piece.vertices.rows());
-      if (aborted(0.7 + 0.3 * (k + 1) / parts.size())) return result;
+      pieces[size_t(k)] = placedPiece(piece, parts[k].placement);
+      if (aborted(0.7 + 0.1 * (k + 1) / parts.size())) return result;
     }
-    result.mesh.vertices.resize(int(vertices.size()), 3);
-    for (size_t v = 0; v < vertices.size(); ++v) result.mesh.vertices.row(v) = vertices[v];
-    result.mesh.faces.resize(int(faces.size()), 3);
-    for (size_t f = 0; f < faces.size(); ++f) result.mesh.faces.row(f) = faces[f];
+    if (p.mergeParts && pieces.size() > 1) {
+      // One watertight mesh (the paper's Fig. 12: a model to animate), the parts' volumes joined.
+      MeshUnionResult merged = meshUnion(pieces, [&](double f) { return !aborted(0.8 + 0.2 * f); });
+      if (!merged.ok()) {
+        result.error = merged.error == "aborted" ? merged.error : "joining the inflated parts: " + merged.error;
+        return result;
+      }
+      result.mesh = std::move(merged.mesh);
+      result.meshVertexPart = std::move(merged.vertexLabel);
+    } else {
+      appendPieces(pieces, result);
+    }
     result.inflationSeconds = inflationStart.seconds();
   }
   return result;

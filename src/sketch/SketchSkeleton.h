@@ -59,6 +59,7 @@ struct SketchParameters {
   bool inflate = true;         // stage 4
   double thickness = 2;        // c of the inflation (2: round tubes)
   double meshEdgeLength = 10;  // largest edge of the inflation's triangulation
+  bool mergeParts = true;      // one watertight mesh, the union of the parts (else one component each)
 };
 
 struct SketchPartResult {
@@ -66,12 +67,11 @@ struct SketchPartResult {
   int straightSkeletonNodes = 0;  // after peripheral removal and collapsing
   int branches = 0;               // long branches simplified by BoundedDP
   PartAttachment attachment;      // to the earlier part it hangs from (parent -1: a root)
-  int firstMeshVertex = 0, meshVertexCount = 0;
 };
 
 struct SketchResult {
   SketchGraph graph;  // the skeleton (docs/ARCHITECTURE.md §4: Radius, Root) with part and branch labels
-  TriangleMesh mesh;  // the inflated parts, one closed component per part
+  TriangleMesh mesh;  // the inflated parts: their union, or one closed component per part
   std::vector<int> meshVertexPart;  // one per mesh vertex
   std::vector<SketchPartResult> parts;
   double unitLength = 1;  // the unit used

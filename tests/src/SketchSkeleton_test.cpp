@@ -3,7 +3,9 @@
 // BoundedDP, the inflated mesh, and bad input.
 #include "TestPaths.h"
 
+#include "mesh/InsideTest.h"
 #include "mesh/MeshTopology.h"
+#include "mesh/SelfIntersections.h"
 #include "sketch/BoundedDP.h"
 #include "sketch/SketchInflation.h"
 #include "sketch/SketchSkeleton.h"
@@ -11,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -48,6 +51,12 @@ std::vector<SketchPart> loadSketch(const std::string& name) {
   }
   finish();
   return parts;
+}
+
+std::vector<std::vector<int64_t>> faceLists(const medial::TriangleMesh& mesh) {
+  std::vector<std::vector<int64_t>> faces;
+  for (int f = 0; f < mesh.faces.rows(); ++f) faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
+  return faces;
 }
 
 std::vector<int> degrees(const medial::Skeleton& s) { return medial::nodeDegrees(s); }
@@ -213,16 +222,36 @@ TEST(SketchSkeleton, ScaleDoesNotChangeTheSkeleton) {
   EXPECT_EQ(r1.graph.skeleton.edgeCount(), r2.graph.skeleton.edgeCount());
 }
 
-TEST(SketchSkeleton, InflatedPartsAreClosedManifolds) {
-  const auto parts = loadSketch("bird.txt");
-  const auto r = medial::sketchSkeleton(parts);
+// The invariant: each sample sketch gives one closed manifold mesh (a sphere's topology), no face
+// cutting another, every skeleton node inside; its vertices are labelled with every part.
+TEST(SketchSkeleton, InflatedPartsJoinIntoOneWatertightMeshAroundTheSkeleton) {
+  for (const char* name : {"bird.txt", "hand.txt", "star.txt"}) {
+    SCOPED_TRACE(name);
+    const auto parts = loadSketch(name);
+    const auto r = medial::sketchSkeleton(parts);
+    ASSERT_TRUE(r.ok()) << r.error;
+    const auto faces = faceLists(r.mesh);
+    const auto t = medial::computeMeshTopology(r.mesh.vertices.rows(), faces);
+    EXPECT_EQ(t.borderEdges, 0);
+    EXPECT_EQ(t.nonManifoldEdges, 0);
+    EXPECT_EQ(t.components, 1);
+    EXPECT_EQ(t.eulerCharacteristic, 2);
+    std::vector<Eigen::Vector3d> points(size_t(r.mesh.vertices.rows()));
+    for (size_t v = 0; v < points.size(); ++v) points[v] = r.mesh.vertices.row(Eigen::Index(v)).transpose();
+    EXPECT_TRUE(medial::selfIntersectingFaces(points, faces).empty());
+    const medial::InsideTest inside(r.mesh);
+    for (const Eigen::Vector3d& node : r.graph.skeleton.nodes) EXPECT_TRUE(inside.contains(node)) << node.transpose();
+    ASSERT_EQ(r.meshVertexPart.size(), points.size());
+    for (int k = 0; k < int(parts.size()); ++k)
+      EXPECT_NE(std::find(r.meshVertexPart.begin(), r.meshVertexPart.end(), k), r.meshVertexPart.end()) << k;
+  }
+  // --separate-parts: the bird's three closed parts as they are.
+  medial::SketchParameters separate;
+  separate.mergeParts = false;
+  const auto r = medial::sketchSkeleton(loadSketch("bird.txt"), separate);
   ASSERT_TRUE(r.ok()) << r.error;
-  std::vector<std::vector<int64_t>> faces;
-  for (int f = 0; f < r.mesh.faces.rows(); ++f)
-    faces.push_back({r.mesh.faces(f, 0), r.mesh.faces(f, 1), r.mesh.faces(f, 2)});
-  const auto t = medial::computeMeshTopology(r.mesh.vertices.rows(), faces);
+  const auto t = medial::computeMeshTopology(r.mesh.vertices.rows(), faceLists(r.mesh));
   EXPECT_EQ(t.borderEdges, 0);
-  EXPECT_EQ(t.nonManifoldEdges, 0);
   EXPECT_EQ(t.components, 3);
   EXPECT_EQ(t.eulerCharacteristic, 6);  // three spheres
 }
