@@ -1,16 +1,20 @@
 #include "ObjectList.h"
 
 #include "MedialSketchData.h"
+#include "MedialSkeletonData.h"
 
 #include "MedialErrorCollector.h"
 #include "vtkMedialPolyDataWriter.h"
 #include "vtkMedialRigWriter.h"
 #include "vtkMedialScene.h"
+#include "vtkMedialSkinBinding.h"
 
+#include <QApplication>
 #include <QColorDialog>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QSlider>
@@ -19,6 +23,7 @@
 
 #include <vtkActor.h>
 #include <vtkCellData.h>
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
@@ -282,8 +287,7 @@ bool ObjectList::save(SceneObject* object, const QString& path) {
 
 bool ObjectList::exportRig(SceneObject* object, const QString& path) {
   if (!object->skinnedMesh) {
-    fail("Cannot export rig",
-         object->name + " has no skinning weights: extract a skeleton with weights first");
+    fail("Cannot export rig", object->name + " has no skinning weights: bind it to a mesh first");
     return false;
   }
   auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
@@ -300,6 +304,26 @@ bool ObjectList::exportRig(SceneObject* object, const QString& path) {
   return true;
 }
 
+bool ObjectList::bindMesh(SceneObject* skeleton, SceneObject* mesh) {
+  auto binding = vtkSmartPointer<vtkMedialSkinBinding>::New();
+  auto errors = medial::ErrorCollector::Watch(binding);
+  binding->SetInputData(0, mesh->polyData());
+  binding->SetSkeletonData(skeleton->polyData());
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  binding->Update();
+  QApplication::restoreOverrideCursor();
+  if (errors->HasErrors()) {
+    fail("Cannot bind " + mesh->name, mesh->name + " to " + skeleton->name + ": " +
+                                          QString::fromStdString(errors->Joined()));
+    return false;
+  }
+  skeleton->skinnedMesh = binding->GetOutput(0);
+  vtkPolyData* data = skeleton->polyData();
+  if (!data->GetFieldData()->GetArray(kRootField))
+    data->GetFieldData()->AddArray(binding->GetOutput(1)->GetFieldData()->GetArray(kRootField));
+  return true;
+}
+
 void ObjectList::showMenu(const QPoint& position) {
   QTreeWidgetItem* item = tree_->itemAt(position);
   if (!item) return;
@@ -310,7 +334,8 @@ void ObjectList::showMenu(const QPoint& position) {
   color->setEnabled(object->kind != SceneObject::Kind::Volume);
   menu.addAction("Save As...", this, &ObjectList::saveDialog);
   QAction* rig = menu.addAction("Export Rig...", this, &ObjectList::rigDialog);
-  rig->setEnabled(object->skinnedMesh != nullptr);
+  rig->setEnabled(object->skinnedMesh != nullptr ||
+                  (object->kind == SceneObject::Kind::Skeleton && !ofKind(SceneObject::Kind::Mesh).empty()));
   menu.addSeparator();
   menu.addAction("Delete", this, [this, object] { remove(object); });
   menu.exec(tree_->viewport()->mapToGlobal(position));
@@ -341,6 +366,17 @@ void ObjectList::saveDialog() {
 void ObjectList::rigDialog() {
   SceneObject* object = current();
   if (!object) return;
+  if (!object->skinnedMesh) {
+    // Any skeleton: bind it to a mesh of the scene first (the only one, or the one the user picks).
+    QStringList meshes;
+    for (SceneObject* mesh : ofKind(SceneObject::Kind::Mesh)) meshes << mesh->name;
+    if (meshes.isEmpty()) return fail("Cannot export rig", "Open or compute a mesh to bind " + object->name + " to");
+    bool chosen = true;
+    const QString name = meshes.size() == 1 ? meshes.front()
+                                            : QInputDialog::getItem(this, "Export rig", "Mesh to bind to " + object->name,
+                                                                    meshes, 0, false, &chosen);
+    if (!chosen || !bindMesh(object, findByName(name))) return;
+  }
   const QString path =
       QFileDialog::getSaveFileName(this, "Export rig", QFileInfo(object->name).completeBaseName() + ".glb",
                                    QString("Rigs (%1)").arg(vtkMedialRigWriter::GetExtensions()));

@@ -49,8 +49,12 @@ class ObjectList : public QWidget {
   void setOpacity(SceneObject* object, double opacity);
   // Writes the object (mesh: VTP VTK OBJ PLY STL; skeleton also SWC; volume VTI). False on failure.
   bool save(SceneObject* object, const QString& path);
-  // Writes a contraction skeleton's rig (GLB, FBX). False on failure.
+  // Writes a skeleton's rig (GLB, FBX): a contraction skeleton's own weights, or those bindMesh made.
+  // False on failure.
   bool exportRig(SceneObject* object, const QString& path);
+  // Binds `mesh` to the skeleton `skeleton` with heat-diffusion weights (vtkMedialSkinBinding): its
+  // skinnedMesh for Export Rig, and its Root when it had none. False (with a dialog) on failure.
+  bool bindMesh(SceneObject* skeleton, SceneObject* mesh);
 
   // Where errors go (MainWindow shows a dialog, or its own handler).
   void setErrorReporter(std::function<void(const QString& title, const QString& message)> report);

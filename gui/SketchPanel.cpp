@@ -33,6 +33,9 @@ std::vector<Parameter> sketchParameters() {
           "scales the thickness"),
       MEDIAL_TOGGLE_PARAMETER(f, Inflate, "Inflated mesh",
                               "Also build the inflated mesh of every stroke (§4.1)"),
+      MEDIAL_TOGGLE_PARAMETER(f, MergeParts, "One watertight mesh",
+                              "Join the inflated strokes into one closed mesh, the union of their volumes "
+                              "(off: one overlapping mesh per stroke)"),
   };
 }
 
@@ -203,6 +206,7 @@ vtkSmartPointer<vtkAlgorithm> SketchPanel::makeFilter(SceneObject* input, QStrin
     filter->SetBranchSimplification(key.first, key.second, epsilon);
   filter->SetThickness(form()->value("Thickness"));
   filter->SetInflate(form()->isOn("Inflate"));
+  filter->SetMergeParts(form()->isOn("MergeParts"));
   return filter;
 }
 

@@ -12,6 +12,7 @@
 #include "SkeletonPanel.h"
 #include "SqmPanel.h"
 #include "VtkView.h"
+#include "rig/RigExport.h"
 #include "vtkMedialContractionSkeleton.h"
 #include "vtkMedialGhostPass.h"
 #include "vtkMedialSQM.h"
@@ -48,8 +49,10 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataConnectivityFilter.h>
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -714,6 +717,35 @@ TEST_F(GuiWorkflow, SketchThresholdsPerPart) {
       view, Qt::LeftButton, Qt::NoModifier,
       QPoint(static_cast<int>(display[0] / ratio), static_cast<int>(view->height() - display[1] / ratio)));
   EXPECT_TRUE(window->logText().contains("Sketch: ε_s of part 1, branch")) << window->logText().toStdString();
+}
+
+// The sketch's mesh is one watertight piece; its skeleton binds to it and exports as a rig in one step.
+TEST_F(GuiWorkflow, SketchBecomesARiggedCharacter) {
+  open(dataPath("sketches/bird.txt"));
+  ASSERT_TRUE(runThroughUi(window->sketchPanel())) << errors.join("\n").toStdString();
+  SceneObject* skeleton = object("bird.txt skeleton");
+  SceneObject* mesh = object("bird.txt mesh");
+  ASSERT_TRUE(skeleton && mesh);
+  auto regions = vtkSmartPointer<vtkPolyDataConnectivityFilter>::New();
+  regions->SetInputData(mesh->polyData());
+  regions->SetExtractionModeToAllRegions();
+  regions->Update();
+  EXPECT_EQ(regions->GetNumberOfExtractedRegions(), 1) << "body and wings joined";
+  EXPECT_FALSE(skeleton->skinnedMesh);
+  ASSERT_TRUE(window->objects()->bindMesh(skeleton, mesh)) << errors.join("\n").toStdString();
+  ASSERT_TRUE(skeleton->skinnedMesh);
+  EXPECT_TRUE(skeleton->polyData()->GetFieldData()->GetArray("Root"));
+  const QString rig = QString::fromStdString(dir + "/bird.fbx");
+  ASSERT_TRUE(window->objects()->exportRig(skeleton, rig)) << errors.join("\n").toStdString();
+  const medial::RigSummary summary = medial::readRigSummary(rig.toStdString());
+  ASSERT_TRUE(summary.error.empty()) << summary.error;
+  EXPECT_EQ(summary.unweightedVertices, 0);
+  EXPECT_EQ(summary.faces, mesh->polyData()->GetNumberOfPolys());
+  // A skeleton cannot bind to itself: a dialog says why.
+  EXPECT_FALSE(window->objects()->bindMesh(skeleton, skeleton));
+  ASSERT_EQ(errors.size(), 1);
+  EXPECT_TRUE(errors.first().contains("has no polygons")) << errors.first().toStdString();
+  errors.clear();
 }
 
 TEST(GuiDialogs, UnreadableFileShowsAnErrorDialog) {
