@@ -1,0 +1,40 @@
+// SkeletonEdits: the edits of the skeleton editor (SQM paper §6: an interactive editor whose mesh follows
+// every change), on the plain skeleton, so that the GUI, Python and tests share them. Each keeps the
+// skeleton valid (radii, ellipsoid axes and root follow the nodes) and returns false, changing nothing,
+// when its ids are out of range.
+#pragma once
+
+#include "skeleton/Skeleton.h"
+
+namespace medial {
+
+bool moveNode(Skeleton& skeleton, int node, const Eigen::Vector3d& position);
+
+// Sets the node's radius (> 0); a skeleton without radii gets them, every other node 1 % of its extent.
+bool setNodeRadius(Skeleton& skeleton, int node, double radius);
+
+// A new node on `edge` at parameter t in (0, 1) from its first node, with the radius interpolated there;
+// the edge becomes two. Returns the new node, -1 when the edge does not exist.
+int splitEdge(Skeleton& skeleton, int edge, double t);
+
+// A new leaf node at `position` joined to `node` (a new branch), with that node's radius. Returns it, or -1.
+int addBranch(Skeleton& skeleton, int node, const Eigen::Vector3d& position);
+
+// Removes the node and its edges. A node of two edges is bridged (its neighbours joined), so deleting a
+// node inside a chain shortens the chain instead of cutting it. The root moves to a neighbour when it was
+// this node. Node ids above it shift down by one.
+bool deleteNode(Skeleton& skeleton, int node);
+
+bool setRoot(Skeleton& skeleton, int node);
+
+// The nearest point of each edge to a ray (picking in a view): the edge and the parameter along it of the
+// edge point nearest the line origin + s direction, and that distance. Edge -1 for a skeleton without edges.
+struct EdgeNearRay {
+  int edge = -1;
+  double t = 0;
+  double distance = 0;
+};
+EdgeNearRay nearestEdgeToRay(const Skeleton& skeleton, const Eigen::Vector3d& origin,
+                             const Eigen::Vector3d& direction);
+
+}  // namespace medial
