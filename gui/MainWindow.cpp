@@ -5,10 +5,12 @@
 #include "IsoSurfacePanel.h"
 #include "MedialSketchData.h"
 #include "ObjectList.h"
+#include "SkeletonEditor.h"
 #include "SketchPanel.h"
 #include "SkeletonPanel.h"
 #include "SqmPanel.h"
 #include "VolumeRendering.h"
+#include "ViewGeometry.h"
 #include "VtkView.h"
 
 #include "vtkMedialGhostPass.h"
@@ -194,6 +196,15 @@ void MainWindow::buildPanels() {
     connect(panel, &FilterPanel::failed, this, &MainWindow::reportError);
   }
   connect(skeleton_, &SkeletonPanel::sceneChanged, this, &MainWindow::render);
+  editor_ = new SkeletonEditor(objects_, scene_, view_, this);
+  auto* editorScroll = new QScrollArea(this);
+  editorScroll->setWidget(editor_);
+  editorScroll->setWidgetResizable(true);
+  tabs_->setTabToolTip(tabs_->addTab(editorScroll, "Edit"),
+                       "Skeleton editor with a live SQM mesh (SQM paper §6): drag nodes, add branches, radii");
+  connect(editor_, &SkeletonEditor::sceneChanged, this, &MainWindow::render);
+  connect(editor_, &SkeletonEditor::message, this, &MainWindow::log);
+  connect(editor_, &SkeletonEditor::failed, this, &MainWindow::reportError);
   legend_ = vtkSmartPointer<vtkScalarBarActor>::New();
   legend_->SetNumberOfLabels(5);
   legend_->SetLabelFormat("%.2f");
@@ -511,28 +522,6 @@ void MainWindow::onViewClicked(const QPointF& position, Qt::KeyboardModifiers mo
   }
 }
 
-bool MainWindow::viewPlanePoint(const QPointF& position, const double origin[3], const double normal[3],
-                                double point[3]) const {
-  vtkRenderer* renderer = scene_->GetRenderer();
-  const qreal ratio = view_->devicePixelRatioF();
-  const double x = position.x() * ratio, y = (view_->height() - position.y()) * ratio;
-  double ends[2][4];
-  for (int i = 0; i < 2; ++i) {  // the pointer's ray: from the near to the far plane
-    renderer->SetDisplayPoint(x, y, i);
-    renderer->DisplayToWorld();
-    renderer->GetWorldPoint(ends[i]);
-    if (ends[i][3] == 0) return false;
-    for (int c = 0; c < 3; ++c) ends[i][c] /= ends[i][3];
-  }
-  double along[3], toOrigin[3];
-  for (int c = 0; c < 3; ++c) along[c] = ends[1][c] - ends[0][c], toOrigin[c] = origin[c] - ends[0][c];
-  const double denominator = vtkMath::Dot(along, normal);
-  if (std::fabs(denominator) < 1e-12) return false;  // the ray runs along the plane
-  const double t = vtkMath::Dot(toOrigin, normal) / denominator;
-  for (int c = 0; c < 3; ++c) point[c] = ends[0][c] + t * along[c];
-  return true;
-}
-
 void MainWindow::onStrokeDrawn(const QVector<QPointF>& positions) {
   // The stroke lies in the plane facing the viewer through the focal point: its 2-D coordinates are along
   // the view's right (u) and up (v) axes, and its Placement maps (x, y, 0) back to 3-D: o + x u + y v.
@@ -548,8 +537,8 @@ void MainWindow::onStrokeDrawn(const QVector<QPointF>& positions) {
   vtkMath::Cross(u, v, w);  // towards the viewer: a right-handed frame
   QVector<QPointF> stroke;
   for (const QPointF& position : positions) {
-    double p[3];
-    if (!viewPlanePoint(position, o, n, p)) continue;
+    Eigen::Vector3d p;
+    if (!viewPlanePoint(scene_->GetRenderer(), view_, position, Eigen::Vector3d(o), Eigen::Vector3d(n), p)) continue;
     const double d[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
     stroke.append(QPointF(vtkMath::Dot(d, u), vtkMath::Dot(d, v)));
   }

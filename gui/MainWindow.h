@@ -31,6 +31,7 @@ class FilterPanel;
 class IsoSurfacePanel;
 class ObjectList;
 class SceneObject;
+class SkeletonEditor;
 class SketchPanel;
 class SkeletonPanel;
 class SqmPanel;
@@ -64,6 +65,7 @@ class MainWindow : public QMainWindow {
   CenterlinePanel* centerlinePanel() const { return centerline_; }
   SketchPanel* sketchPanel() const { return sketch_; }
   IsoSurfacePanel* isoSurfacePanel() const { return iso_; }
+  SkeletonEditor* skeletonEditor() const { return editor_; }
   QTabWidget* filterTabs() const { return tabs_; }
   // The filter panel titled `name` (case-insensitive: skeleton, sqm, centerline, sketch, iso-surface).
   FilterPanel* panel(const QString& name) const;
@@ -111,9 +113,6 @@ class MainWindow : public QMainWindow {
                const std::array<double, 3>& up);
   void showVolume(SceneObject* volume);
   std::vector<vtkImageSlice*> shownVolumeSlices() const;
-  // The world point under a position of the 3-D view on the plane through `origin` with `normal`.
-  bool viewPlanePoint(const QPointF& position, const double origin[3], const double normal[3],
-                      double point[3]) const;
   void render();
 
   VtkView* view_ = nullptr;
@@ -131,6 +130,7 @@ class MainWindow : public QMainWindow {
   CenterlinePanel* centerline_ = nullptr;
   SketchPanel* sketch_ = nullptr;
   IsoSurfacePanel* iso_ = nullptr;
+  SkeletonEditor* editor_ = nullptr;
   std::vector<FilterPanel*> panels_;
   vtkSmartPointer<vtkMedialScene> scene_;
   SceneObject* shownVolume_ = nullptr;

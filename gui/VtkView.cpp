@@ -166,6 +166,7 @@ void VtkView::setEventPosition(const QPointF& position, Qt::KeyboardModifiers mo
 }
 
 void VtkView::mousePressEvent(QMouseEvent* event) {
+  if (interaction_ && interaction_->mousePress(event)) return;
   if (event->button() == Qt::LeftButton) pressPosition_ = event->position();
   if (drawing_ && event->button() == Qt::LeftButton) {
     stroke_ = {event->position()};
@@ -193,6 +194,7 @@ void VtkView::mouseDoubleClickEvent(QMouseEvent* event) {
 }
 
 void VtkView::mouseReleaseEvent(QMouseEvent* event) {
+  if (interaction_ && interaction_->mouseRelease(event)) return;
   if (drawing_ && event->button() == Qt::LeftButton) {
     const QVector<QPointF> stroke = stroke_;
     stroke_.clear();
@@ -219,6 +221,7 @@ void VtkView::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void VtkView::mouseMoveEvent(QMouseEvent* event) {
+  if (interaction_ && interaction_->mouseMove(event)) return;
   if (drawing_ && !stroke_.isEmpty() && (event->buttons() & Qt::LeftButton)) {
     stroke_.append(event->position());
     update();
@@ -229,6 +232,10 @@ void VtkView::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void VtkView::wheelEvent(QWheelEvent* event) {
+  if (interaction_ && interaction_->wheel(event)) {
+    event->accept();
+    return;
+  }
   setEventPosition(event->position(), event->modifiers());
   // One VTK wheel step per notch (120 units); touchpads send smaller deltas, which add up.
   wheelRemainder_ += event->angleDelta().y();
@@ -240,6 +247,7 @@ void VtkView::wheelEvent(QWheelEvent* event) {
 }
 
 void VtkView::keyPressEvent(QKeyEvent* event) {
+  if (interaction_ && interaction_->keyPress(event)) return;
   if (event->key() == Qt::Key_R) {
     emit resetCameraRequested();
     return;

@@ -16,6 +16,18 @@ class vtkObject;
 
 namespace medial::gui {
 
+// Takes the view's mouse and key events before the camera does (the skeleton editor); each returns true
+// when it used the event, which then does not reach the camera.
+class ViewInteraction {
+ public:
+  virtual ~ViewInteraction() = default;
+  virtual bool mousePress(QMouseEvent*) { return false; }
+  virtual bool mouseMove(QMouseEvent*) { return false; }
+  virtual bool mouseRelease(QMouseEvent*) { return false; }
+  virtual bool wheel(QWheelEvent*) { return false; }
+  virtual bool keyPress(QKeyEvent*) { return false; }
+};
+
 class VtkView : public QOpenGLWidget {
   Q_OBJECT
 
@@ -34,6 +46,8 @@ class VtkView : public QOpenGLWidget {
   // Drawing mode: a left drag draws a stroke (shown over the view) instead of rotating the camera.
   void setDrawingMode(bool on);
   bool drawingMode() const { return drawing_; }
+  // Events go to `interaction` first (null: the camera only). The view does not own it.
+  void setInteraction(ViewInteraction* interaction) { interaction_ = interaction; }
 
  signals:
   // Key R: the owner resets the camera its own way.
@@ -67,6 +81,7 @@ class VtkView : public QOpenGLWidget {
   vtkNew<vtkGenericRenderWindowInteractor> interactor_;
   bool initialized_ = false;
   bool drawing_ = false;
+  ViewInteraction* interaction_ = nullptr;
   QVector<QPointF> stroke_;  // the stroke being drawn
   QPointF pressPosition_;    // where the left button went down (click detection)
   int wheelRemainder_ = 0;   // angle delta not yet turned into wheel steps

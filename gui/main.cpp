@@ -3,8 +3,11 @@
 //   medial-gui --screenshot IMAGE.png [FILE...]  open, render, save the 3-D view (--window: the whole
 //                                                window), quit (for tests);
 //                                                errors go to stderr and the exit code is 1
+//   medial-gui --screenshot IMAGE.png --edit SKELETON   the skeleton in the editor with its live mesh
 #include "FilterPanel.h"
 #include "MainWindow.h"
+#include "ObjectList.h"
+#include "SkeletonEditor.h"
 #include "VtkView.h"
 
 #include <QApplication>
@@ -31,7 +34,9 @@ int main(int argc, char** argv) {
                          "Run a filter panel with its defaults on the last suitable object, before the "
                          "screenshot (repeatable, in order): skeleton, sqm, centerline, sketch, iso-surface.",
                          "FILTER");
+  QCommandLineOption edit("edit", "Open the last skeleton in the skeleton editor (with its live SQM mesh).");
   parser.addOption(run);
+  parser.addOption(edit);
   parser.addOption(screenshot);
   parser.addOption(whole);
   parser.addOption(size);
@@ -73,6 +78,13 @@ int main(int argc, char** argv) {
         failed = true;
         break;
       }
+    }
+    if (!failed && parser.isSet(edit)) {
+      const auto skeletons = window.objects()->ofKind(medial::gui::SceneObject::Kind::Skeleton);
+      failed = skeletons.empty() || !window.skeletonEditor()->begin(skeletons.back());
+      for (int tab = 0; tab < window.filterTabs()->count(); ++tab)
+        if (window.filterTabs()->widget(tab)->isAncestorOf(window.skeletonEditor()))
+          window.filterTabs()->setCurrentIndex(tab);
     }
     if (failed) {
       app.quit();

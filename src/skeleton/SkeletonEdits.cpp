@@ -36,9 +36,13 @@ bool moveNode(Skeleton& s, int node, const Eigen::Vector3d& position) {
   return true;
 }
 
+void ensureRadii(Skeleton& s) {
+  if (s.radii.empty()) s.radii.assign(s.nodes.size(), defaultRadius(s));
+}
+
 bool setNodeRadius(Skeleton& s, int node, double radius) {
   if (!isNode(s, node) || !(radius > 0) || !std::isfinite(radius)) return false;
-  if (s.radii.empty()) s.radii.assign(s.nodes.size(), defaultRadius(s));
+  ensureRadii(s);
   // An ellipsoid node keeps its shape, scaled with its radius.
   if (!s.ellipsoidAxes.empty()) s.ellipsoidAxes[size_t(node)] *= radius / s.radii[size_t(node)];
   s.radii[size_t(node)] = radius;

@@ -10,6 +10,10 @@ namespace medial {
 
 bool moveNode(Skeleton& skeleton, int node, const Eigen::Vector3d& position);
 
+// A skeleton without radii gets 1 % of its bounding-box diagonal at every node (what an editor shows and
+// SQM meshes until the user sets them).
+void ensureRadii(Skeleton& skeleton);
+
 // Sets the node's radius (> 0); a skeleton without radii gets them, every other node 1 % of its extent.
 bool setNodeRadius(Skeleton& skeleton, int node, double radius);
 

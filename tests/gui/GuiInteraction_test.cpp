@@ -3,17 +3,25 @@
 #include "TestPaths.h"
 
 #include "MainWindow.h"
+#include "ObjectList.h"
+#include "SkeletonEditor.h"
+#include "ViewGeometry.h"
 #include "VtkView.h"
 #include "vtkMedialScene.h"
 
 #include <QApplication>
 #include <QMouseEvent>
 #include <QTest>
+#include <QUndoStack>
 
 #include <vtkCamera.h>
+#include <vtkDataArray.h>
 #include <vtkMath.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 
@@ -113,4 +121,102 @@ TEST_F(GuiInteraction, FailedOpenLeavesTheSessionIntact) {
   EXPECT_EQ(window->objectCount(), 1);
   const std::string png = medial::test::scratchDir("gui-after-error") + "/still.png";
   EXPECT_TRUE(window->saveScreenshot(QString::fromStdString(png)));
+}
+
+namespace {
+
+// The mean position of the mesh vertices made for `node` (point data SkeletonNode).
+Eigen::Vector3d vertexCentroidOf(vtkPolyData* mesh, int node) {
+  vtkDataArray* owner = mesh->GetPointData()->GetArray("SkeletonNode");
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (vtkIdType v = 0; owner && v < mesh->GetNumberOfPoints(); ++v)
+    if (int(owner->GetComponent(v, 0)) == node) sum += Eigen::Vector3d(mesh->GetPoint(v)), ++count;
+  return count ? Eigen::Vector3d(sum / count) : Eigen::Vector3d::Constant(NAN);
+}
+
+}  // namespace
+
+// The SQM paper's §6 editor driven with real mouse events: a node dragged, the mesh around it follows;
+// a new branch, a split edge, a radius from the wheel, a deletion; each undone.
+TEST_F(GuiInteraction, SkeletonEditorDragsANodeAndItsMeshFollows) {
+  using medial::gui::SkeletonEditor;
+  ASSERT_TRUE(window->openFile(QString::fromStdString(medial::test::dataPath("skeletons/sqm/humanoid.vtp"))));
+  medial::gui::SceneObject* humanoid = window->objects()->findByName("humanoid.vtp");
+  ASSERT_NE(humanoid, nullptr);
+  window->objects()->setVisible(window->objects()->findByName("torus.off"), false);
+  SkeletonEditor* editor = window->skeletonEditor();
+  ASSERT_TRUE(editor->begin(humanoid)) << lastError.toStdString();
+  window->resetCamera();
+  QTest::qWait(50);
+  const medial::Skeleton original = editor->skeleton();
+  const std::vector<int> degrees = medial::nodeDegrees(original);
+  const int leaf = int(std::find(degrees.begin(), degrees.end(), 1) - degrees.begin());
+  ASSERT_LT(leaf, original.nodeCount());
+  vtkRenderer* renderer = window->scene()->GetRenderer();
+  const QPoint at = medial::gui::widgetPosition(renderer, view, original.nodes[size_t(leaf)]).toPoint();
+  const Eigen::Vector3d meshBefore = vertexCentroidOf(editor->mesh(), leaf);
+  ASSERT_TRUE(meshBefore.allFinite());
+  const Vector cameraBefore = position();
+
+  drag(Qt::LeftButton, at, at + QPoint(40, -30));
+  const Eigen::Vector3d moved = editor->skeleton().nodes[size_t(leaf)] - original.nodes[size_t(leaf)];
+  const double size = editor->mesh()->GetLength();
+  EXPECT_GT(moved.norm(), 0.02 * size) << "the node did not follow the pointer";
+  EXPECT_LT(separation(cameraBefore, position()), 1e-9) << "the drag turned the camera instead";
+  const Eigen::Vector3d meshMoved = vertexCentroidOf(editor->mesh(), leaf) - meshBefore;
+  // The leaf's ring turns with its tube, so its vertices move less than the node, but the same way.
+  EXPECT_GT(meshMoved.dot(moved.normalized()), 0.5 * moved.norm()) << "the mesh did not follow the node";
+  EXPECT_EQ(editor->undoStack()->count(), 1);
+  EXPECT_GT(editor->lastMeshMilliseconds(), 0);
+
+  // The wheel over the node grows its radius by 10 % a notch; two notches merge into one undo step.
+  const double radius = editor->skeleton().radii[size_t(leaf)];
+  const QPoint there = medial::gui::widgetPosition(renderer, view, editor->skeleton().nodes[size_t(leaf)]).toPoint();
+  for (int notch = 0; notch < 2; ++notch) {
+    QWheelEvent wheel(there, view->mapToGlobal(there), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QApplication::sendEvent(view, &wheel);
+  }
+  EXPECT_NEAR(editor->skeleton().radii[size_t(leaf)], radius * 1.21, 1e-9 * radius);
+  EXPECT_EQ(editor->undoStack()->count(), 2);
+
+  // Shift+drag from the node: a new branch; Ctrl+click on an edge's middle: a new node; Delete: one less.
+  drag(Qt::LeftButton, there, there + QPoint(30, 30), Qt::ShiftModifier);
+  EXPECT_EQ(editor->skeleton().nodeCount(), original.nodeCount() + 1);
+  EXPECT_EQ(editor->skeleton().edgeCount(), original.edgeCount() + 1);
+  // The edge longest on screen, so that its middle is no node's.
+  Eigen::Vector3d middle = Eigen::Vector3d::Zero();
+  double longest = 0;
+  for (const auto& edge : editor->skeleton().edges) {
+    const Eigen::Vector3d a = editor->skeleton().nodes[size_t(edge[0])], b = editor->skeleton().nodes[size_t(edge[1])];
+    const QPointF ends = medial::gui::widgetPosition(renderer, view, a) - medial::gui::widgetPosition(renderer, view, b);
+    if (std::hypot(ends.x(), ends.y()) > longest) longest = std::hypot(ends.x(), ends.y()), middle = 0.5 * (a + b);
+  }
+  ASSERT_GT(longest, 40);
+  QTest::mouseClick(view, Qt::LeftButton, Qt::ControlModifier,
+                    medial::gui::widgetPosition(renderer, view, middle).toPoint());
+  EXPECT_EQ(editor->skeleton().nodeCount(), original.nodeCount() + 2);
+  QTest::keyClick(view, Qt::Key_Delete);
+  EXPECT_EQ(editor->skeleton().nodeCount(), original.nodeCount() + 1);
+  EXPECT_GT(editor->mesh()->GetNumberOfPolys(), 0);
+
+  // Undo everything: the skeleton is the original again; redo the first step.
+  while (editor->undoStack()->canUndo()) editor->undoStack()->undo();
+  EXPECT_EQ(editor->skeleton().nodes, original.nodes);
+  EXPECT_EQ(editor->skeleton().radii, original.radii);
+  editor->undoStack()->redo();
+  EXPECT_GT((editor->skeleton().nodes[size_t(leaf)] - original.nodes[size_t(leaf)]).norm(), 0.02 * size);
+
+  // Saved as VTP and SWC; Done adds the skeleton and its mesh as objects.
+  const std::string dir = medial::test::scratchDir("skeleton-editor");
+  EXPECT_TRUE(editor->save(QString::fromStdString(dir + "/edited.vtp")));
+  EXPECT_TRUE(editor->save(QString::fromStdString(dir + "/edited.swc")));
+  editor->finish();
+  EXPECT_FALSE(editor->editing());
+  EXPECT_NE(window->objects()->findByName("humanoid.vtp edited"), nullptr);
+  EXPECT_NE(window->objects()->findByName("humanoid.vtp edited SQM"), nullptr);
+  // The mouse turns the camera again.
+  drag(Qt::LeftButton, view->rect().center(), view->rect().center() + QPoint(100, 0));
+  EXPECT_GT(separation(cameraBefore, position()), 1e-6);
 }
