@@ -3,9 +3,14 @@
 // the open (border) and non-manifold edges of each output - SQM's is one closed surface, the tube filter's
 // is one open tube per line cell. The paper's Table 1: 74 ms for 150 nodes (goal: >= 10x faster).
 // Then the paper's Table 1 (stage times and counts) and the refined rows: K = 2, 3, 4 levels per skeleton,
-// time, faces, quad share, intersecting pairs.
+// time, faces, quad share, intersecting pairs. Last, the skeleton editor's rows (SQM paper §6): the octopus
+// split to 150 nodes, one leaf dragged in 40 steps, the mesh rebuilt at every step: base mesh (goal: one
+// frame, 16 ms), K = 2 while dragging (no fold repair; goal 100 ms), K = 2 on release (with the repair),
+// beside the tube filter rebuilding its tubes of the same skeleton.
 //   medial_bench_sqm [--repeat N] [SKELETON...]   (default: data/skeletons/sqm/*.vtp, figure, hand)
+#include "MedialSkeletonData.h"
 #include "MedianSeconds.h"
+#include "skeleton/SkeletonEdits.h"
 #include "mesh/SelfIntersections.h"
 #include "vtkMedialMeshTopology.h"
 #include "vtkMedialReader.h"
@@ -125,6 +130,67 @@ void table1(const std::vector<std::string>& paths, int repeat) {
 
 }  // namespace
 
+// The skeleton editor: a drag of one leaf of a 150-node skeleton, the mesh rebuilt at each step.
+void editorRows(int steps) {
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  reader->SetFileName((std::string(MEDIAL_SOURCE_DIR) + "/data/skeletons/sqm/octopus.vtp").c_str());
+  reader->Update();
+  medial::Skeleton skeleton;
+  std::string error;
+  if (!medial::skeletonFromPolyData(vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)), skeleton, error)) {
+    std::printf("editor: %s\n", error.c_str());
+    return;
+  }
+  while (skeleton.nodeCount() < 150) {  // split the longest edge until there are 150 nodes
+    int longest = 0;
+    for (int e = 1; e < skeleton.edgeCount(); ++e) {
+      const auto length = [&](int i) {
+        return (skeleton.nodes[size_t(skeleton.edges[size_t(i)][0])] - skeleton.nodes[size_t(skeleton.edges[size_t(i)][1])]).norm();
+      };
+      if (length(e) > length(longest)) longest = e;
+    }
+    medial::splitEdge(skeleton, longest, 0.5);
+  }
+  const std::vector<int> degrees = medial::nodeDegrees(skeleton);
+  const int leaf = int(std::find(degrees.begin(), degrees.end(), 1) - degrees.begin());
+  const Eigen::Vector3d start = skeleton.nodes[size_t(leaf)];
+  const double step = 0.02 * skeleton.radii[size_t(leaf)];
+  const auto dragTimes = [&](const std::function<void(vtkPolyData*)>& rebuild) {
+    medial::Skeleton dragged = skeleton;
+    return medianSeconds(steps, [&, i = 0]() mutable {
+      medial::moveNode(dragged, leaf, start + Eigen::Vector3d(step * ++i, 0.5 * step * i, 0));
+      rebuild(medial::polyDataFromSkeleton(dragged));
+    });
+  };
+  const auto sqmAt = [](int levels, bool repair) {
+    return [levels, repair](vtkPolyData* input) {
+      auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+      sqm->SetInputData(input);
+      sqm->SetSubdivisionLevels(levels);
+      sqm->SetFoldRepair(repair);
+      sqm->Update();
+    };
+  };
+  const double base = dragTimes(sqmAt(0, true)), drag2 = dragTimes(sqmAt(2, false)), release2 = dragTimes(sqmAt(2, true));
+  const double tube = dragTimes([](vtkPolyData* input) {
+    auto withScalars = vtkSmartPointer<vtkPolyData>::New();
+    withScalars->ShallowCopy(input);
+    withScalars->GetPointData()->SetScalars(input->GetPointData()->GetArray("Radius"));
+    auto tubes = vtkSmartPointer<vtkTubeFilter>::New();
+    tubes->SetInputData(withScalars);
+    tubes->SetNumberOfSides(8);
+    tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
+    tubes->Update();
+  });
+  std::printf("\nSkeleton editor (octopus split to %d nodes, a leaf dragged in %d steps), median ms per step\n",
+              skeleton.nodeCount(), steps);
+  std::printf("%-28s %9s %9s %10s\n", "rebuild", "ms", "goal ms", "ms / tube");
+  std::printf("%-28s %9.2f %9.0f %10.2f\n", "base mesh (K = 0)", 1e3 * base, 16.0, base / tube);
+  std::printf("%-28s %9.2f %9.0f %10.2f\n", "K = 2 while dragging", 1e3 * drag2, 100.0, drag2 / tube);
+  std::printf("%-28s %9.2f %9s %10.2f\n", "K = 2 on release (repair)", 1e3 * release2, "-", release2 / tube);
+  std::printf("%-28s %9.2f %9s %10s\n", "vtkTubeFilter (peer)", 1e3 * tube, "-", "1.00");
+}
+
 int main(int argc, char** argv) {
   int repeat = 200;
   std::vector<std::string> paths;
@@ -184,5 +250,6 @@ int main(int argc, char** argv) {
   }
   table1(paths, repeat);
   refinedRows(paths, std::max(1, std::min(repeat, 5)));
+  editorRows(std::max(3, std::min(repeat, 40)));
   return 0;
 }
