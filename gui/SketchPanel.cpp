@@ -6,8 +6,11 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QFileDialog>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QLabel>
+#include <QPushButton>
 #include <QSlider>
 #include <QVBoxLayout>
 
@@ -102,6 +105,37 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
       "Turn off to rotate the view again.");
   rows->addRow(live_);
   rows->addRow(draw_);
+  // Part modelling: the part chosen in "Thresholds of".
+  auto* partTools = new QGridLayout;
+  const auto tool = [this, partTools](const QString& text, const QString& tip, int row, int column,
+                                      const std::function<void(int)>& action) {
+    auto* button = new QPushButton(text, this);
+    button->setToolTip(tip);
+    connect(button, &QPushButton::clicked, this, [this, action] {
+      if (scopePart() >= 0) action(scopePart());
+    });
+    partTools->addWidget(button, row, column);
+  };
+  tool("←", "Move the part left in its plane", 0, 0, [this](int k) { movePart(k, -1, 0); });
+  tool("→", "Move the part right in its plane", 0, 1, [this](int k) { movePart(k, 1, 0); });
+  tool("↑", "Move the part up in its plane", 0, 2, [this](int k) { movePart(k, 0, 1); });
+  tool("↓", "Move the part down in its plane", 0, 3, [this](int k) { movePart(k, 0, -1); });
+  tool("⟲ 15°", "Turn the part about its centre", 1, 0, [this](int k) { turnPart(k, 1); });
+  tool("⟳ 15°", "Turn the part the other way", 1, 1, [this](int k) { turnPart(k, -1); });
+  tool("+10 %", "Grow the part about its centre", 1, 2, [this](int k) { scalePart(k, 1); });
+  tool("−10 %", "Shrink the part", 1, 3, [this](int k) { scalePart(k, -1); });
+  tool("Mirror", "Add the part mirrored across part 1's drawing plane (draw one half, get both)", 2, 0,
+       [this](int k) { mirrorPart(k); });
+  rows->addRow("Part (choose above)", partTools);
+  auto* exportButton = new QPushButton("Export character...", this);
+  exportButton->setToolTip("Bind the sketch's mesh to its skeleton (heat weights) and write the rig");
+  connect(exportButton, &QPushButton::clicked, this, [this] {
+    if (!input()) return;
+    const QString path = QFileDialog::getSaveFileName(this, "Export character", input()->name + ".glb",
+                                                      "Rigs (*.glb *.fbx)");
+    if (!path.isEmpty()) exportCharacter(path);
+  });
+  rows->addRow(exportButton);
   extraLayout()->addLayout(rows);
   connect(form(), &ParameterForm::valueChanged, this, &SketchPanel::parameterChanged);
   connect(draw_, &QCheckBox::toggled, this, &SketchPanel::drawingToggled);
@@ -192,6 +226,59 @@ bool SketchPanel::addStroke(const QVector<QPointF>& points, const Placement& pla
   setInput(object);
   if (live_->isChecked()) runAgain();
   return true;
+}
+
+int SketchPanel::scopePart() const { return scope_->currentData().toPoint().x(); }
+
+bool SketchPanel::editSketch(const std::function<bool(vtkPolyData*)>& edit) {
+  SceneObject* sketch = input();
+  if (!sketch || !isSketch(sketch->polyData())) return false;
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(sketch->polyData());
+  if (!edit(copy)) return false;
+  const QString name = sketch->name, path = sketch->path;
+  const int scope = scope_->currentIndex();
+  objects()->remove(sketch);
+  SceneObject* replaced = objects()->add(name, copy, path);
+  if (!replaced) return false;
+  setInput(replaced);
+  scope_->setCurrentIndex(std::min(scope, scope_->count() - 1));
+  if (live_->isChecked()) runAgain();
+  return true;
+}
+
+bool SketchPanel::movePart(int part, double alongU, double alongV) {
+  return editSketch([&](vtkPolyData* sketch) {
+    if (part < 0 || part >= sketch->GetNumberOfLines()) return false;
+    double m[16];
+    sketch->GetCellData()->GetArray("Placement")->GetTuple(part, m);
+    const double step = 0.02 * sketchSize(sketch);
+    std::array<double, 3> offset;
+    for (int c = 0; c < 3; ++c) offset[size_t(c)] = step * (alongU * m[4 * c] + alongV * m[4 * c + 1]);
+    return medial::movePart(sketch, part, offset);
+  });
+}
+
+bool SketchPanel::turnPart(int part, double steps) {
+  return editSketch([&](vtkPolyData* sketch) { return medial::turnPart(sketch, part, 15 * steps); });
+}
+
+bool SketchPanel::scalePart(int part, double steps) {
+  return editSketch([&](vtkPolyData* sketch) { return medial::scalePart(sketch, part, std::pow(1.1, steps)); });
+}
+
+bool SketchPanel::mirrorPart(int part) {
+  return editSketch([&](vtkPolyData* sketch) { return medial::mirrorPart(sketch, part, 0) >= 0; });
+}
+
+bool SketchPanel::exportCharacter(const QString& path) {
+  SceneObject* skeleton = input() ? objects()->findByName(input()->name + " skeleton") : nullptr;
+  SceneObject* mesh = input() ? objects()->findByName(input()->name + " mesh") : nullptr;
+  if (!skeleton || !mesh) {
+    emit failed("Cannot export character", "Run the sketch with \"Inflated mesh\" on first");
+    return false;
+  }
+  return objects()->bindMesh(skeleton, mesh) && objects()->exportRig(skeleton, path);
 }
 
 vtkSmartPointer<vtkAlgorithm> SketchPanel::makeFilter(SceneObject* input, QString&) {

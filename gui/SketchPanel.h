@@ -10,6 +10,7 @@
 #include <QVector>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <utility>
 
@@ -40,6 +41,17 @@ class SketchPanel : public FilterPanel {
   void selectBranch(int part, int branch);
   void setDrawing(bool on);
 
+  // Part modelling (§3.2, §4.1) on the part the scope names (from 0): each changes the sketch, and with
+  // "Update live" the parts reconnect by the connection rule as the filter runs again. False without a
+  // sketch or such a part. Steps: 2 % of the sketch's size, 15 degrees, 10 %.
+  bool movePart(int part, double alongU, double alongV);  // in steps, along the part's own plane
+  bool turnPart(int part, double steps);
+  bool scalePart(int part, double steps);
+  // Adds the part mirrored across the first part's drawing plane (draw one half, get both).
+  bool mirrorPart(int part);
+  // Binds the sketch's mesh to its skeleton and writes the rig (.glb, .fbx): the animatable character.
+  bool exportCharacter(const QString& path);
+
  signals:
   void drawingToggled(bool on);
 
@@ -53,6 +65,9 @@ class SketchPanel : public FilterPanel {
 
   void parameterChanged();
   void showScope(int index);
+  // Applies `edit` to a copy of the sketch, which replaces it (same name), then runs again if live.
+  bool editSketch(const std::function<bool(vtkPolyData*)>& edit);
+  int scopePart() const;
 
   QSlider* thresholds_[4] = {};
   QComboBox* scope_ = nullptr;

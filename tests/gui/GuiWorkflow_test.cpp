@@ -748,6 +748,55 @@ TEST_F(GuiWorkflow, SketchBecomesARiggedCharacter) {
   errors.clear();
 }
 
+// Sketch modelling (§3.2, §4.1): a wing moved, turned, grown and mirrored; after each the parts reconnect
+// (one skeleton component, one watertight mesh), and the character exports in one step.
+TEST_F(GuiWorkflow, SketchPartsMoveTurnMirrorAndReconnect) {
+  open(dataPath("sketches/bird.txt"));  // body, then two wings
+  SketchPanel* panel = window->sketchPanel();
+  ASSERT_TRUE(runThroughUi(panel)) << errors.join("\n").toStdString();
+  const auto components = [](vtkPolyData* data) {
+    auto regions = vtkSmartPointer<vtkPolyDataConnectivityFilter>::New();
+    regions->SetInputData(data);
+    regions->SetExtractionModeToAllRegions();
+    regions->Update();
+    return regions->GetNumberOfExtractedRegions();
+  };
+  const auto partNodes = [this](int part) {
+    vtkPolyData* skeleton = object("bird.txt skeleton")->polyData();
+    vtkDataArray* parts = skeleton->GetPointData()->GetArray("Part");
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int count = 0;
+    for (vtkIdType i = 0; i < skeleton->GetNumberOfPoints(); ++i)
+      if (int(parts->GetComponent(i, 0)) == part) sum += Eigen::Vector3d(skeleton->GetPoint(i)), ++count;
+    return Eigen::Vector3d(sum / std::max(count, 1));
+  };
+  const Eigen::Vector3d wing = partNodes(1);
+  panel->setThresholdScope(1);
+  ASSERT_TRUE(panel->movePart(1, 0, 2));
+  panel->wait();
+  EXPECT_GT((partNodes(1) - wing).norm(), 1.0) << "the wing's skeleton moved with it";
+  ASSERT_TRUE(panel->turnPart(1, 1));
+  panel->wait();
+  ASSERT_TRUE(panel->scalePart(1, 1));
+  panel->wait();
+  EXPECT_EQ(components(object("bird.txt skeleton")->polyData()), 1) << "the wing reconnected to the body";
+  EXPECT_EQ(components(object("bird.txt mesh")->polyData()), 1);
+  // Mirrored across the body's plane: a fourth part, still one skeleton and one mesh.
+  ASSERT_TRUE(panel->mirrorPart(1));
+  panel->wait();
+  EXPECT_EQ(object("bird.txt")->polyData()->GetNumberOfLines(), 4);
+  EXPECT_EQ(int(object("bird.txt skeleton")->polyData()->GetPointData()->GetArray("Part")->GetRange()[1]), 3);
+  EXPECT_EQ(components(object("bird.txt skeleton")->polyData()), 1);
+  EXPECT_EQ(components(object("bird.txt mesh")->polyData()), 1);
+  EXPECT_FALSE(panel->movePart(9, 1, 0)) << "no such part";
+  const std::string rig = dir + "/bird-character.glb";
+  ASSERT_TRUE(panel->exportCharacter(QString::fromStdString(rig))) << errors.join("\n").toStdString();
+  const medial::RigSummary summary = medial::readRigSummary(rig);
+  ASSERT_TRUE(summary.error.empty()) << summary.error;
+  EXPECT_EQ(summary.unweightedVertices, 0);
+  EXPECT_GT(screenshot("bird-mirrored"), 0.02);
+}
+
 TEST(GuiDialogs, UnreadableFileShowsAnErrorDialog) {
   if (!medial::test::hasDisplay()) GTEST_SKIP() << "no X display: run the tests under xvfb-run -a";
   MainWindow window;  // no error handler: errors go to a QMessageBox
