@@ -11,6 +11,7 @@
 
 #include "MedialErrorCollector.h"
 #include "vtkMedialContractionSkeleton.h"
+#include "MedialFileNames.h"
 #include "vtkMedialRigWriter.h"
 
 #include <vtkPointData.h>
@@ -19,6 +20,8 @@
 #include <vtkSmartPointer.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 namespace medial::cli {
 
@@ -36,13 +39,38 @@ vtkSmartPointer<vtkPolyData> contractedMesh(vtkPolyData* segmentation) {
   return mesh;
 }
 
+// --contraction-steps DIR: the paper's intermediate results. contraction_NNN.vtp per step (Fig. 5, with
+// the weights of Fig. 7), contraction.pvd (the steps as a time series that ParaView plays), and the curve
+// skeleton after the surgery and before the selection.
+void writeStages(vtkMedialContractionSkeleton* filter, const std::string& dir) {
+  std::string collection = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  for (int step = 0; step < filter->GetNumberOfContractionSteps(); ++step) {
+    char name[32];
+    std::snprintf(name, sizeof name, "contraction_%03d.vtp", step);
+    writePolyData(filter->GetContractionStep(step), dir + "/" + name);
+    collection += "    <DataSet timestep=\"" + std::to_string(step) + "\" file=\"" + name + "\"/>\n";
+  }
+  collection += "  </Collection>\n</VTKFile>\n";
+  std::string why;
+  const auto write = [&collection](const std::string& temporary, std::string& reason) {
+    std::ofstream out(temporary);
+    out << collection;
+    if (!out.flush()) reason = "cannot write the file";
+    return bool(out);
+  };
+  if (!medial::writeAtomically(dir + "/contraction.pvd", write, why)) throw Failure(dir + "/contraction.pvd: " + why);
+  writePolyData(filter->GetSurgerySkeleton(), dir + "/surgery-skeleton.vtp");
+  writePolyData(filter->GetUnselectedSkeleton(), dir + "/unselected-skeleton.vtp");
+}
+
 }  // namespace
 
 int runSkeleton(const std::vector<std::string>& args) {
   const ParsedArgs parsed =
       parseArgs(args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations",
                         "--contraction-vertices", "--wl0", "--sl", "--wh0", "--max-wl", "--max-wh",
-                        "--shape-weight", "--sampling-weight", "--collapse-length", "--heat", "--contracted"},
+                        "--shape-weight", "--sampling-weight", "--collapse-length", "--heat", "--contracted",
+                        "--contraction-steps"},
                        {"--no-refine", "--no-cycle-repair", "--no-centring", "--weights", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("skeleton needs exactly one MESH file");
   const std::string input = parsed.positional[0];
@@ -77,6 +105,14 @@ int runSkeleton(const std::vector<std::string>& args) {
   if (parsed.has("--no-cycle-repair")) filter->RestoreCyclesOff();
   if (parsed.has("--no-centring")) filter->CentreNodesOff();
   if (parsed.has("--rig") || parsed.has("--weights")) filter->ComputeWeightsOn();
+  const std::string stepsDir = parsed.value("--contraction-steps");
+  if (parsed.has("--contraction-steps")) {
+    if (stepsDir.empty()) throw UsageError("--contraction-steps needs a directory");
+    filter->RecordStagesOn();
+    std::error_code error;  // made first: a directory that cannot be made fails before any work or output
+    std::filesystem::create_directories(stepsDir, error);
+    if (error || !std::filesystem::is_directory(stepsDir)) throw Failure(stepsDir + ": cannot create the directory");
+  }
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
@@ -99,6 +135,7 @@ int runSkeleton(const std::vector<std::string>& args) {
   writePolyData(filter->GetOutput(0), output);
   if (!segmentation.empty()) writePolyData(filter->GetOutput(1), segmentation);
   if (!contracted.empty()) writePolyData(contractedMesh(filter->GetOutput(1)), contracted);
+  if (!stepsDir.empty()) writeStages(filter, stepsDir);
   if (!rig.empty()) {
     auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
     auto rigErrors = medial::ErrorCollector::Watch(writer);

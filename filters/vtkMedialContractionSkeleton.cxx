@@ -7,6 +7,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -66,6 +67,7 @@ medial::SkeletonByContractionParameters vtkMedialContractionSkeleton::MakeParame
   p.computeWeights = this->ComputeWeights;
   p.weights.heatConstant = this->HeatConstant;
   medial::parseSparseSolverKind(this->Solver, p.contraction.solver);  // SetSolver accepts known names only
+  p.recordStages = this->RecordStages;
   p.weights.solver = p.contraction.solver;
   return p;
 }
@@ -115,6 +117,33 @@ void vtkMedialContractionSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "ComputeWeights: " << this->ComputeWeights << "\n";
   os << indent << "HeatConstant: " << this->HeatConstant << "\n";
   os << indent << "Solver: " << this->Solver << "\n";
+  os << indent << "RecordStages: " << this->RecordStages << "\n";
+}
+
+vtkPolyData* vtkMedialContractionSkeleton::GetContractionStep(int step) const {
+  return step >= 0 && step < this->GetNumberOfContractionSteps() ? this->Steps[size_t(step)].Get() : nullptr;
+}
+
+void vtkMedialContractionSkeleton::KeepStages(const medial::SkeletonByContractionResult& result) {
+  const auto number = [](const char* name, double value) {
+    auto array = vtkSmartPointer<vtkDoubleArray>::New();
+    array->SetName(name);
+    array->InsertNextValue(value);
+    return array;
+  };
+  for (size_t t = 0; t < result.contractionSteps.size(); ++t) {
+    const medial::ContractionStep& step = result.contractionSteps[t];
+    vtkSmartPointer<vtkPolyData> mesh = medial::polyDataFromMesh({step.positions, result.contractedFaces});
+    mesh->GetPointData()->AddArray(medial::doubleArray("Laplacian", Eigen::MatrixXd(step.laplacian)));
+    mesh->GetPointData()->AddArray(medial::doubleArray("AttractionWeight", Eigen::MatrixXd(step.attraction)));
+    mesh->GetFieldData()->AddArray(number("ContractionWeight", step.contractionWeight));
+    mesh->GetFieldData()->AddArray(number("Iteration", double(t)));
+    mesh->GetFieldData()->AddArray(number("AreaRatio", step.areaRatio));
+    mesh->GetFieldData()->AddArray(number("VolumeRatio", step.volumeRatio));
+    this->Steps.push_back(mesh);
+  }
+  this->SurgerySkeleton = medial::polyDataFromSkeleton(result.surgerySkeleton);
+  this->UnselectedSkeleton = medial::polyDataFromSkeleton(result.unselectedSkeleton);
 }
 
 int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVector** inputVector,
@@ -130,6 +159,8 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   const medial::TriangleMesh mesh = medial::toTriangleMesh(triangles);
 
   const medial::SkeletonByContractionParameters p = this->MakeParameters();
+  this->Steps.clear();
+  this->SurgerySkeleton = this->UnselectedSkeleton = nullptr;
   const medial::SkeletonByContractionResult result = medial::skeletonByContraction(mesh, p, [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
@@ -150,6 +181,7 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   }
 
   skeletonOutput->ShallowCopy(medial::polyDataFromSkeleton(result.skeleton));
+  if (this->RecordStages) this->KeepStages(result);
   meshOutput->ShallowCopy(triangles);
   meshOutput->GetPointData()->AddArray(medial::intArray("SkeletonNode", result.vertexToNode));
   // Where the contraction took each vertex (paper Fig. 5: the contracted mesh, before the surgery).

@@ -21,12 +21,14 @@
 
 #include "MedialFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h"
 
 #include <string>
 #include <vector>
 
 namespace medial {
 struct SkeletonByContractionParameters;
+struct SkeletonByContractionResult;
 }
 
 class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgorithm {
@@ -99,6 +101,23 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   /// ldlt-metis, lu-colamd, lu-amd, lu-metis, qr-colamd, cg.
   static std::string GetSolverNames();
 
+  /// Keep the intermediate results the paper draws (default off): the contracted mesh after every
+  /// iteration (Fig. 5) with its weights (Fig. 7), the curve skeleton after the surgery and before the
+  /// selection. Costs a copy of the contracted mesh's vertices per iteration.
+  vtkSetMacro(RecordStages, bool);
+  vtkGetMacro(RecordStages, bool);
+  vtkBooleanMacro(RecordStages, bool);
+  /// With RecordStages, after an update: step 0 is the contracted mesh as it started (the input, or its
+  /// decimation), step t the mesh after iteration t: triangles with point data `Laplacian` (|L V|, the
+  /// curvature-flow pull left) and `AttractionWeight` (W_H,i), field data `ContractionWeight` (W_L),
+  /// `Iteration`, `AreaRatio`, `VolumeRatio`. Null out of range.
+  int GetNumberOfContractionSteps() const { return static_cast<int>(this->Steps.size()); }
+  vtkPolyData* GetContractionStep(int step) const;
+  /// With RecordStages: the curve skeleton straight after the connectivity surgery (III.B), and after the
+  /// refinement before the selection (III.C); null otherwise.
+  vtkPolyData* GetSurgerySkeleton() const { return this->SurgerySkeleton; }
+  vtkPolyData* GetUnselectedSkeleton() const { return this->UnselectedSkeleton; }
+
   /// Figures of the last update.
   vtkGetMacro(ContractionIterations, int);
   vtkGetMacro(CurveSkeletonNodes, int);
@@ -125,6 +144,8 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   void operator=(const vtkMedialContractionSkeleton&) = delete;
   // The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
   medial::SkeletonByContractionParameters MakeParameters() const;
+  // Keeps the recorded intermediate results as polydata (RecordStages).
+  void KeepStages(const medial::SkeletonByContractionResult& result);
 
   // Parameters: defaults from medial::SkeletonByContractionParameters (the constructor).
   int TargetNodes;
@@ -144,6 +165,9 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   bool ComputeWeights;
   double HeatConstant;
   std::string Solver;
+  bool RecordStages = false;
+  std::vector<vtkSmartPointer<vtkPolyData>> Steps;
+  vtkSmartPointer<vtkPolyData> SurgerySkeleton, UnselectedSkeleton;
   // Figures of the last update.
   int ContractionIterations = 0;
   int CurveSkeletonNodes = 0;

@@ -53,6 +53,19 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
   std::vector<bool> frozen(size_t(mesh.faces.rows()), false);
   Eigen::VectorXd areas = initialFaceAreas;
 
+  // The paper's figures: the mesh and the weights at each step, in the input's frame.
+  const auto record = [&](const Vertices& at, const Eigen::SparseMatrix<double>& laplacian, double weight,
+                          const Eigen::VectorXd& attractionUsed) {
+    ContractionStep step;
+    step.positions = (at * diagonal).rowwise() + centre;
+    step.laplacian = (laplacian * at).rowwise().norm() * diagonal;
+    step.contractionWeight = weight;
+    step.attraction = attractionUsed;
+    step.areaRatio = result.areaRatio;
+    step.volumeRatio = result.volumeRatio;
+    result.steps.push_back(std::move(step));
+  };
+
   SparseSolver solver(p.solver);
   double previousArea = initialArea;
   Vertices best = positions;
@@ -68,6 +81,9 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
       }
     }
     const Eigen::SparseMatrix<double> laplacian = laplacianFromCotangents(mesh.faces, cotangents, n);
+    if (p.recordSteps && iteration == 0) record(positions, laplacian, contractionWeight, attraction);
+    const double weightUsed = contractionWeight;
+    const Eigen::VectorXd attractionUsed = p.recordSteps ? attraction : Eigen::VectorXd();
     const Eigen::SparseMatrix<double> matrix = normalMatrix(laplacian, contractionWeight, attraction);
     const Eigen::MatrixXd rhs = attraction.array().square().matrix().asDiagonal() * positions;
     result.assembleSeconds += start.seconds();
@@ -103,6 +119,7 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
     result.areaRatio = area / initialArea;
     result.volumeRatio =
         initialVolume > 0 ? std::abs(enclosedVolume(positions, mesh.faces)) / initialVolume : 0;
+    if (p.recordSteps) record(positions, laplacian, weightUsed, attractionUsed);
     if (progress && !progress(double(result.iterations) / p.maxIterations)) {
       result.error = "aborted";
       return result;

@@ -29,6 +29,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace medial {
 
@@ -55,6 +56,19 @@ struct ContractionParameters {
   // become unreliable (spikes): the previous iterate is kept and the contraction stops.
   double areaGrowthGuard = 1.1;
   SparseSolverKind solver = SparseSolverKind::Automatic;
+  // The paper's Fig. 5 and 7: keep the mesh after every iteration with the weights that made it
+  // (ContractionResult::steps). Memory: one copy of the vertices per iteration.
+  bool recordSteps = false;
+};
+
+// One contraction iteration as the paper draws it (Fig. 5: the mesh; Fig. 7: the weights): step 0 is the
+// input with the initial weights, step t the mesh after iteration t with the weights that iteration used.
+struct ContractionStep {
+  Vertices positions;             // in the input's frame
+  Eigen::VectorXd laplacian;      // |L V| per vertex, in the input's units: the curvature-flow pull left
+  double contractionWeight = 0;   // W_L (one value for every vertex, eq. 5), in the normalized frame
+  Eigen::VectorXd attraction;     // W_H,i per vertex (III.A step 3: W_H0 sqrt(A_0 / A_t))
+  double areaRatio = 1, volumeRatio = 1;
 };
 
 struct ContractionResult {
@@ -63,6 +77,7 @@ struct ContractionResult {
   double areaRatio = 1.0;  // final area / initial area
   double volumeRatio = 1.0;
   std::string stopReason;
+  std::vector<ContractionStep> steps;  // with recordSteps: step 0 (the input), then one per iteration
   // Seconds spent in the stages of the iterations.
   double assembleSeconds = 0, analyzeSeconds = 0, factorizeSeconds = 0, solveSeconds = 0;
   std::string error;  // non-empty when the contraction failed (solver breakdown, aborted)

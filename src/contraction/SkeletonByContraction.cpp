@@ -17,6 +17,14 @@ namespace medial {
 
 namespace {
 
+// The curve skeleton's nodes and edges as a Skeleton (no radii).
+Skeleton skeletonOf(const CurveSkeleton& curve) {
+  Skeleton skeleton;
+  for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k) skeleton.nodes.push_back(curve.nodes.row(k).transpose());
+  for (const auto& [a, b] : curve.edges) skeleton.edges.push_back({a, b});
+  return skeleton;
+}
+
 // The root: the node of highest degree, ties broken by the number of vertices it absorbed.
 int chooseRoot(const Skeleton& skeleton, const std::vector<int>& vertexToNode) {
   if (skeleton.nodes.empty()) return -1;
@@ -70,7 +78,9 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   // III.A geometry contraction.
   start.restart();
   const double contractionEnd = p.computeWeights ? 0.6 : 0.75, surgeryEnd = p.computeWeights ? 0.7 : 0.9;
-  ContractionResult contraction = contractMesh(coarse.mesh, p.contraction, report(0.02, contractionEnd));
+  ContractionParameters contractionParameters = p.contraction;
+  contractionParameters.recordSteps = contractionParameters.recordSteps || p.recordStages;
+  ContractionResult contraction = contractMesh(coarse.mesh, contractionParameters, report(0.02, contractionEnd));
   result.contractionSeconds = start.seconds();
   result.factorizationSeconds = contraction.analyzeSeconds + contraction.factorizeSeconds;
   result.contractionIterations = contraction.iterations;
@@ -91,6 +101,11 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
     return result;
   }
   result.curveSkeletonNodes = int(curve.nodes.rows());
+  if (p.recordStages) {
+    result.contractionSteps = std::move(contraction.steps);
+    result.contractedFaces = coarse.mesh.faces;
+    result.surgerySkeleton = skeletonOf(curve);
+  }
   // Back to the input's vertices: each one goes with the coarse vertex that absorbed it.
   result.contracted = mesh.vertices;
   std::vector<int> vertexToNode(coarse.representative.size(), -1);
@@ -120,6 +135,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   }
   result.refinementSeconds = start.seconds();
   start.restart();
+  if (p.recordStages) result.unselectedSkeleton = skeletonOf(curve);
   if (p.targetNodes > 0) {
     selectNodes(curve, p.targetNodes, &inside);
     if (sections) result.centredNodes += centreNodes(curve, *sections, inside);
@@ -129,9 +145,9 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   result.skeleton.radii = nodeRadii(curve, mesh.vertices, inside);
   result.radiiSeconds = start.seconds();
 
-  for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k)
-    result.skeleton.nodes.push_back(curve.nodes.row(k).transpose());
-  for (const auto& [a, b] : curve.edges) result.skeleton.edges.push_back({a, b});
+  const std::vector<double> radii = std::move(result.skeleton.radii);
+  result.skeleton = skeletonOf(curve);
+  result.skeleton.radii = radii;
   result.vertexToNode = std::move(curve.vertexToNode);
   result.skeleton.root = chooseRoot(result.skeleton, result.vertexToNode);
 

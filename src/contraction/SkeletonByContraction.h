@@ -35,6 +35,9 @@ struct SkeletonByContractionParameters {
   int targetNodes = 30;         // node selection; 0 keeps every node of the refined curve skeleton
   bool computeWeights = false;  // III.E: one weight per vertex and bone (skeleton edge)
   HeatWeightParameters weights;
+  // The intermediate results the paper draws: the contraction's steps (contraction.recordSteps, Figs. 5
+  // and 7) and the curve skeleton straight after the surgery and before the selection.
+  bool recordStages = false;
 };
 
 struct SkeletonByContractionResult {
@@ -53,6 +56,11 @@ struct SkeletonByContractionResult {
   CycleRepairResult cycleRepair;  // genus, cycles after surgery, cycles restored
   int splitEdges = 0;             // nodes added inside edges that left the mesh (splitEdgesLeavingTheMesh)
   int centredNodes = 0;           // node moves to their cross-section's centroid (centreNodes)
+  // With recordStages: the contraction's steps on the contracted mesh (its faces: contractedFaces), the
+  // curve skeleton after the surgery (III.B, unrefined) and before the selection (after III.C).
+  std::vector<ContractionStep> contractionSteps;
+  Faces contractedFaces;
+  Skeleton surgerySkeleton, unselectedSkeleton;
   // Seconds per stage, and the share of the contraction spent factorizing.
   double decimationSeconds = 0, contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0,
          refinementSeconds = 0, selectionSeconds = 0, radiiSeconds = 0, weightsSeconds = 0;

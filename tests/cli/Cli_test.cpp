@@ -195,6 +195,32 @@ long skeletonCycles(const std::string& path) {
   return long(skeleton->GetNumberOfCells()) - long(sets.size()) + components;
 }
 
+// --contraction-steps: one VTP per step, a .pvd that lists them in order, the two intermediate skeletons.
+TEST(Cli, SkeletonWritesTheContractionStepsAsATimeSeries) {
+  const std::string dir = scratchDir("cli-contraction-steps");
+  auto r = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir +
+                                    "/torus.vtp --contraction-steps " + dir + "/steps --quiet"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream file(dir + "/steps/contraction.pvd");
+  const std::string pvd((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  int listed = 0;
+  for (size_t at = pvd.find("file=\""); at != std::string::npos; at = pvd.find("file=\"", at + 1)) {
+    const std::string name = pvd.substr(at + 6, pvd.find('"', at + 6) - at - 6);
+    char expected[32];
+    std::snprintf(expected, sizeof expected, "contraction_%03d.vtp", listed++);
+    EXPECT_EQ(name, expected);
+    EXPECT_TRUE(std::filesystem::exists(dir + "/steps/" + name)) << name;
+  }
+  EXPECT_GE(listed, 3);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/steps/surgery-skeleton.vtp"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/steps/unselected-skeleton.vtp"));
+  auto refused = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir +
+                                          "/t.vtp --contraction-steps /proc/no-such-dir --quiet"));
+  EXPECT_EQ(refused.exitCode, 1);
+  EXPECT_NE(refused.err.find("cannot create the directory"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/t.vtp")) << "refused before any output";
+}
+
 TEST(Cli, SkeletonPutsBackTheCyclesSurgeryLostAndSaysSo) {
   const std::string femur = medial::test::externalPath("cgal/meshes/femur.off");
   if (!std::filesystem::exists(femur)) GTEST_SKIP() << femur << " missing: run scripts/fetch-samples";

@@ -2,10 +2,12 @@
 #include "TestPaths.h"
 
 #include "MedialErrorCollector.h"
+#include "MedialSkeletonData.h"
 #include "vtkMedialContractionSkeleton.h"
 #include "vtkMedialReader.h"
 #include "vtkMedialRigWriter.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <vector>
 
@@ -240,4 +242,57 @@ TEST(ContractionSkeleton, RigFilesOpenAgainAsMeshAndSkeleton) {
   notARig->RigSkeletonOn();  // ignored for a plain mesh format: the mesh is read
   notARig->Update();
   EXPECT_FALSE(errors->HasErrors()) << errors->Joined();
+}
+
+// The paper's intermediate results (RecordStages): the contracted mesh after every iteration with its
+// weights (Figs. 5 and 7), shrinking towards the skeleton, and the curve skeletons before refinement and
+// before selection.
+TEST(ContractionSkeleton, RecordedStagesShowTheMeshContractingOntoTheSkeleton) {
+  auto elephant = readMesh(medial::test::sourceDir() + "/data/external/cgal/meshes/elephant.off");
+  ASSERT_TRUE(elephant);
+  auto filter = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
+  filter->SetInputData(elephant);
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfContractionSteps(), 0) << "nothing recorded unless asked";
+  filter->RecordStagesOn();
+  filter->Update();
+  const int steps = filter->GetNumberOfContractionSteps();
+  ASSERT_EQ(steps, filter->GetContractionIterations() + 1);
+  EXPECT_EQ(filter->GetContractionStep(steps), nullptr);
+  vtkPolyData* first = filter->GetContractionStep(0);
+  vtkPolyData* last = filter->GetContractionStep(steps - 1);
+  ASSERT_TRUE(first && last);
+  EXPECT_EQ(first->GetNumberOfPoints(), filter->GetContractedVertices());
+  for (const char* name : {"Laplacian", "AttractionWeight"})
+    EXPECT_EQ(last->GetPointData()->GetArray(name)->GetNumberOfTuples(), last->GetNumberOfPoints()) << name;
+  for (const char* name : {"ContractionWeight", "Iteration", "AreaRatio", "VolumeRatio"})
+    EXPECT_TRUE(last->GetFieldData()->GetArray(name)) << name;
+  // W_L grows by s_L each iteration until its cap; the area shrinks to a sliver.
+  const auto field = [](vtkPolyData* mesh, const char* name) { return mesh->GetFieldData()->GetArray(name)->GetComponent(0, 0); };
+  EXPECT_GT(field(filter->GetContractionStep(2), "ContractionWeight"), field(filter->GetContractionStep(1), "ContractionWeight"));
+  EXPECT_LT(field(last, "AreaRatio"), 0.05);
+
+  // The last step lies on the skeleton the surgery made of it: every vertex near one of its edges.
+  vtkPolyData* surgery = filter->GetSurgerySkeleton();
+  ASSERT_TRUE(surgery && surgery->GetNumberOfLines() > 0);
+  medial::Skeleton curve;
+  std::string error;
+  ASSERT_TRUE(medial::skeletonFromPolyData(surgery, curve, error)) << error;
+  std::vector<double> distances;
+  for (vtkIdType v = 0; v < last->GetNumberOfPoints(); ++v) {
+    const Eigen::Vector3d p(last->GetPoint(v));
+    double nearest = INFINITY;
+    for (const auto& e : curve.edges) {
+      const Eigen::Vector3d a = curve.nodes[size_t(e[0])], b = curve.nodes[size_t(e[1])];
+      const double t = std::clamp((p - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300), 0.0, 1.0);
+      nearest = std::min(nearest, (a + t * (b - a) - p).norm());
+    }
+    distances.push_back(nearest);
+  }
+  std::sort(distances.begin(), distances.end());
+  const double size = elephant->GetLength();
+  EXPECT_LT(distances[distances.size() / 2], 0.01 * size);
+  EXPECT_LT(distances[distances.size() * 9 / 10], 0.03 * size);
+  ASSERT_TRUE(filter->GetUnselectedSkeleton());
+  EXPECT_GE(filter->GetUnselectedSkeleton()->GetNumberOfPoints(), filter->GetOutput(0)->GetNumberOfPoints());
 }
