@@ -1,7 +1,7 @@
 // `medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION] [--skeleton-scale S]
 //                [--mesh-opacity A] [--ghost INPUT]... [--cutaway] [--ghost-opacity A]
 //                [--ghost-importance I,...] [--ghost-conflict gradual|depth] [--ghost-map-scale S]
-//                [--ghost-layers] [--volume-rendering STYLE]`
+//                [--ghost-layers] [--importance-map MAP.png] [--volume-rendering STYLE]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "PrivateDisplay.h"
@@ -15,9 +15,15 @@
 #include "vtkMedialGhostPass.h"
 #include "vtkMedialScene.h"
 
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
 #include <vtkProp3D.h>
 #include <vtkSmartPointer.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -49,6 +55,7 @@ struct GhostOptions {
   bool depthSorting = false;
   double mapScale = 0.5;
   bool layers = false;
+  std::string importanceMap;  // --importance-map: where the last frame's map goes
 };
 
 GhostOptions parseGhostOptions(const ParsedArgs& parsed) {
@@ -71,7 +78,37 @@ GhostOptions parseGhostOptions(const ParsedArgs& parsed) {
   if (conflict != "gradual" && conflict != "depth")
     throw UsageError("--ghost-conflict must be gradual or depth, got '" + conflict + "'");
   ghost.depthSorting = conflict == "depth";
+  ghost.importanceMap = parsed.value("--importance-map");
+  if (parsed.has("--importance-map")) {
+    if (ghost.inputs.empty()) throw UsageError("--importance-map needs --ghost INPUT");
+    if (medial::fileExtension(ghost.importanceMap) != ".png")
+      throw UsageError("--importance-map must be a .png file: " + ghost.importanceMap);
+  }
   return ghost;
+}
+
+// The importance map (the paper's Figs. 2, 4, 6) as a grey PNG at the map's resolution: importance x
+// coverage, white where the most important object projects, 0 where no object of interest does.
+void writeImportanceMap(vtkImageData* map, const std::string& path) {
+  vtkDataArray* values = map ? map->GetPointData()->GetScalars() : nullptr;
+  if (!values) throw Failure(path + ": no importance map was drawn (no object of interest in view)");
+  auto grey = vtkSmartPointer<vtkImageData>::New();
+  grey->SetDimensions(map->GetDimensions());
+  grey->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* pixels = static_cast<unsigned char*>(grey->GetScalarPointer());
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+    pixels[i] = static_cast<unsigned char>(
+        std::lround(255 * std::clamp(values->GetComponent(i, 0) * values->GetComponent(i, 2), 0.0, 1.0)));
+  std::string error;
+  const auto write = [&grey](const std::string& temporary, std::string& why) {
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+    writer->SetFileName(temporary.c_str());
+    writer->SetInputData(grey);
+    writer->Write();
+    if (writer->GetErrorCode() != 0) why = "cannot write the file";
+    return writer->GetErrorCode() == 0;
+  };
+  if (!medial::writeAtomically(path, write, error)) throw Failure(path + ": " + error);
 }
 
 }  // namespace
@@ -80,7 +117,7 @@ int runRender(const std::vector<std::string>& args) {
   const ParsedArgs parsed =
       parseArgs(args, {{"-o", "--output", "--size", "--camera", "--skeleton-scale", "--mesh-opacity",
                         "--ghost", "--ghost-opacity", "--ghost-importance", "--ghost-conflict",
-                        "--ghost-map-scale", "--volume-rendering"},
+                        "--ghost-map-scale", "--importance-map", "--volume-rendering"},
                        {"--quiet", "--timings", "--cutaway", "--ghost-layers"}});
   if (parsed.positional.empty()) throw UsageError("render needs at least one INPUT file");
   std::string output = parsed.value("-o", parsed.value("--output"));
@@ -134,6 +171,7 @@ int runRender(const std::vector<std::string>& args) {
                                          : vtkMedialGhostPass::GradualImportance);
     pass->SetMapScale(ghost.mapScale);
     pass->SetLayeredGhosts(ghost.layers);
+    pass->SetKeepImportanceMap(!ghost.importanceMap.empty());
   }
 
   timings.start("display");
@@ -147,6 +185,7 @@ int runRender(const std::vector<std::string>& args) {
   scene->ResetCamera(static_cast<double>(width) / height, camera[0], camera[1]);
   auto renderErrors = medial::ErrorCollector::Watch(scene);
   if (!scene->RenderToImage(output.c_str(), width, height)) throw Failure(renderErrors->Joined());
+  if (!ghost.importanceMap.empty()) writeImportanceMap(scene->GetGhostPass()->GetImportanceMap(), ghost.importanceMap);
   progress.finish();
   timings.stop();
   if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());

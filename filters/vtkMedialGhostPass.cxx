@@ -24,6 +24,10 @@
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkTextureObject.h>
+#include <vtkPointData.h>
+#include <vtkPixelBufferObject.h>
+#include <vtkImageData.h>
+#include <vtkFloatArray.h>
 #include <vtkTranslucentPass.h>
 #include <vtk_glew.h>
 
@@ -237,6 +241,7 @@ void vtkMedialGhostPass::Render(const vtkRenderState* s) {
   const bool plain = this->Mode == Off || interestCount == 0 || width <= 0 || height <= 0 || !window ||
                      renderer->GetSelector() != nullptr;
   if (plain) {
+    if (this->KeepImportanceMap && renderer->GetSelector() == nullptr) this->KeptMap = nullptr;  // none this frame
     delegate->Render(s);
     this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
     return;
@@ -258,6 +263,7 @@ void vtkMedialGhostPass::Render(const vtkRenderState* s) {
   this->LastInterestCount = interestCount;
   this->LastMapSize[0] = this->Gpu->Width;
   this->LastMapSize[1] = this->Gpu->Height;
+  if (this->KeepImportanceMap) this->CopyImportanceMap();
   this->Gpu->Map->Activate();
   this->Phase = 2;
   delegate->Render(&sorted);
@@ -471,4 +477,39 @@ bool vtkMedialGhostPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstr
     program->SetUniformi("medialGhostWriteDepth",
                          prop && prop->IsRenderingTranslucentPolygonalGeometry() ? 0 : 1);
   return true;
+}
+
+vtkImageData* vtkMedialGhostPass::GetImportanceMap() {
+  if (!this->KeptMap) this->KeptMap = vtkSmartPointer<vtkImageData>::New();
+  return this->KeptMap;
+}
+
+void vtkMedialGhostPass::CopyImportanceMap() {
+  // The map texture back from the GPU; texels outside the scissor were not drawn this frame (they may
+  // hold an earlier frame's values), so they are cleared here as the scene never looks them up.
+  const int width = this->Gpu->Width, height = this->Gpu->Height;
+  std::vector<float> texels(size_t(width) * size_t(height) * 4, 0.0f);
+  vtkPixelBufferObject* buffer = this->Gpu->Map->Download();
+  if (!buffer) return;
+  unsigned int dims[2] = {unsigned(width), unsigned(height)};
+  vtkIdType increments[2] = {0, 0};
+  const bool read = buffer->Download2D(VTK_FLOAT, texels.data(), dims, 4, increments);
+  buffer->Delete();
+  if (!read) return;
+  int scissor[4];
+  this->MapScissor(scissor);
+  auto values = vtkSmartPointer<vtkFloatArray>::New();
+  values->SetName("ImportanceMap");
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(vtkIdType(width) * height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const bool drawn = x >= scissor[0] && x < scissor[0] + scissor[2] && y >= scissor[1] && y < scissor[1] + scissor[3];
+      const float* t = &texels[(size_t(y) * size_t(width) + size_t(x)) * 4];
+      for (int c = 0; c < 3; ++c) values->SetTypedComponent(vtkIdType(y) * width + x, c, drawn ? t[c] : 0.0f);
+    }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->GetPointData()->SetScalars(values);
+  this->KeptMap = image;
 }

@@ -42,6 +42,7 @@
 #include <memory>
 #include <vector>
 
+class vtkImageData;
 class vtkInformationDoubleKey;
 class vtkProp;
 class vtkRenderStepsPass;
@@ -116,6 +117,17 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
   static double GetImportance(vtkProp* prop);
   static vtkInformationDoubleKey* IMPORTANCE();
 
+  /// Keep a copy of each frame's importance map on the CPU (default off: a read-back from the GPU).
+  vtkSetMacro(KeepImportanceMap, bool);
+  vtkGetMacro(KeepImportanceMap, bool);
+  vtkBooleanMacro(KeepImportanceMap, bool);
+  /// The last frame's importance map (the paper's Figs. 2, 4, 6), with KeepImportanceMap: an image of the
+  /// map's size (MapScale of the viewport's), float point data `ImportanceMap` with three components per
+  /// pixel: the winning object's importance, its window depth, and the feathered coverage (0..1; 0 where
+  /// no object of interest projects). Empty before such a frame or when the frame had no object of
+  /// interest.
+  vtkImageData* GetImportanceMap();
+
   /// What the last frame did: objects of interest drawn into the map, and the map's size.
   vtkGetMacro(LastInterestCount, int);
   vtkGetVector2Macro(LastMapSize, int);
@@ -156,6 +168,9 @@ class MEDIALFILTERS_EXPORT vtkMedialGhostPass : public vtkOpenGLRenderPass {
   int BorderWidth = 2;
   int Translucency = Blended;
   bool LayeredGhosts = false;
+  bool KeepImportanceMap = false;
+  vtkSmartPointer<vtkImageData> KeptMap;
+  void CopyImportanceMap();
   int LastInterestCount = 0;
   int LastMapSize[2] = {0, 0};
 

@@ -541,6 +541,34 @@ TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {
   }
 }
 
+// --importance-map: the ghost view's map as a grey PNG at MapScale of the image, white where the ghosted
+// skeleton projects and black around it.
+TEST(Cli, RenderWritesTheImportanceMap) {
+  MEDIAL_REQUIRE_DISPLAY();
+  const std::string dir = scratchDir("cli-importance-map");
+  const std::string skeleton = dataPath("skeletons/figure.vtp"), map = dir + "/map.png";
+  auto r = runCommand(medialCommand("render " + skeleton + " --ghost " + skeleton + " -o " + dir +
+                                    "/ghost.png --size 400x300 --importance-map " + map + " --quiet"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto png = vtkSmartPointer<vtkPNGReader>::New();
+  png->SetFileName(map.c_str());
+  png->Update();
+  vtkImageData* image = png->GetOutput();
+  EXPECT_EQ(image->GetDimensions()[0], 200);
+  EXPECT_EQ(image->GetDimensions()[1], 150);
+  double white = 0, black = 0;
+  for (int y = 0; y < 150; ++y)
+    for (int x = 0; x < 200; ++x) {
+      const double v = image->GetScalarComponentAsDouble(x, y, 0, 0);
+      white += v > 250;
+      black += v < 5;
+    }
+  EXPECT_GT(white, 0.02 * 200 * 150);
+  EXPECT_GT(black, 0.3 * 200 * 150);
+  auto usage = runCommand(medialCommand("render " + skeleton + " -o " + dir + "/x.png --importance-map " + map));
+  EXPECT_EQ(usage.exitCode, 2) << "needs --ghost";
+}
+
 TEST(Cli, RenderFailureIsOneLineAndLeavesNoFile) {
   MEDIAL_REQUIRE_DISPLAY();
   const std::string dir = scratchDir("cli-render-failure");

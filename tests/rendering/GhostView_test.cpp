@@ -10,17 +10,21 @@
 
 #include <vtkActor.h>
 #include <vtkCubeSource.h>
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProp3D.h>
+#include <vtkPropCollection.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkRTAnalyticSource.h>
 #include <vtkSphereSource.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -378,4 +382,63 @@ TEST(GhostView, TranslucentPropsCompositeInEveryTranslucencyMode) {
     EXPECT_GT(hues.red, 0.02) << "translucency " << translucency;
     EXPECT_GT(hues.blue, 0.005) << "translucency " << translucency;
   }
+}
+
+// The importance map (the paper's Figs. 2, 4, 6) read back: non-zero exactly where the object of interest
+// projects, its importance there; nothing kept for a frame without objects of interest.
+TEST(GhostView, ImportanceMapCoversExactlyTheObjectOfInterest) {
+  MEDIAL_REQUIRE_DISPLAY();
+  BoxAndSphere ghost(vtkMedialGhostPass::Ghost);
+  vtkMedialGhostPass* pass = ghost.scene->GetGhostPass();
+  pass->SetMapScale(1.0);
+  pass->SetBorderWidth(0);
+  pass->KeepImportanceMapOn();
+  vtkMedialGhostPass::SetImportance(ghost.interest, 0.8);
+  ASSERT_NE(render(ghost.scene, "ghost.png"), nullptr);
+  const vtkSmartPointer<vtkImageData> map = pass->GetImportanceMap();  // the next frames replace it
+  int dims[3];
+  map->GetDimensions(dims);
+  ASSERT_EQ(dims[0], 320);
+  ASSERT_EQ(dims[1], 240);
+  vtkDataArray* values = map->GetPointData()->GetScalars();
+  ASSERT_TRUE(values && values->GetNumberOfComponents() == 3);
+
+  // The sphere alone, same camera: its pixels are the map's.
+  vtkProp3D* occluder = nullptr;
+  vtkPropCollection* props = ghost.scene->GetRenderer()->GetViewProps();
+  props->InitTraversal();
+  for (vtkProp* prop = props->GetNextProp(); prop; prop = props->GetNextProp())
+    if (prop != ghost.interest && vtkProp3D::SafeDownCast(prop)) occluder = vtkProp3D::SafeDownCast(prop);
+  ASSERT_NE(occluder, nullptr);
+  occluder->VisibilityOff();
+  pass->SetMode(vtkMedialGhostPass::Off);
+  const std::string path = scratchDir("ghost-importance-map") + "/sphere.png";
+  ASSERT_TRUE(ghost.scene->RenderToImage(path.c_str(), 320, 240));
+  vtkSmartPointer<vtkImageData> alone;
+  alone.TakeReference(loadPng(path));
+  ASSERT_NE(alone, nullptr);
+  int both = 0, onlyMap = 0, onlySphere = 0;
+  double importance = 0;
+  for (int y = 0; y < 240; ++y)
+    for (int x = 0; x < 320; ++x) {
+      double difference = 0;
+      for (int c = 0; c < 3; ++c)
+        difference = std::max(difference, std::abs(alone->GetScalarComponentAsDouble(x, y, 0, c) -
+                                                    alone->GetScalarComponentAsDouble(0, y, 0, c)));
+      const vtkIdType i = vtkIdType(y) * 320 + x;
+      const bool inMap = values->GetComponent(i, 2) > 0.5, inSphere = difference > 30;
+      both += inMap && inSphere;
+      onlyMap += inMap && !inSphere;
+      onlySphere += !inMap && inSphere;
+      if (inMap) importance = std::max(importance, values->GetComponent(i, 0));
+    }
+  ASSERT_GT(both, 1000);
+  EXPECT_GT(double(both) / (both + onlyMap + onlySphere), 0.95) << onlyMap << " map-only, " << onlySphere << " sphere-only";
+  EXPECT_NEAR(importance, 0.8, 1e-3);
+
+  // A frame without an object of interest keeps no map.
+  pass->SetMode(vtkMedialGhostPass::Ghost);
+  vtkMedialGhostPass::SetImportance(ghost.interest, 0.0);
+  ASSERT_TRUE(ghost.scene->RenderToImage(path.c_str(), 320, 240));
+  EXPECT_EQ(pass->GetImportanceMap()->GetNumberOfPoints(), 0);
 }
