@@ -20,7 +20,6 @@
 #include <vtkSmartPointer.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 
 namespace medial::cli {
@@ -107,11 +106,8 @@ int runSkeleton(const std::vector<std::string>& args) {
   if (parsed.has("--rig") || parsed.has("--weights")) filter->ComputeWeightsOn();
   const std::string stepsDir = parsed.value("--contraction-steps");
   if (parsed.has("--contraction-steps")) {
-    if (stepsDir.empty()) throw UsageError("--contraction-steps needs a directory");
+    makeOutputDirectory(stepsDir, "--contraction-steps");
     filter->RecordStagesOn();
-    std::error_code error;  // made first: a directory that cannot be made fails before any work or output
-    std::filesystem::create_directories(stepsDir, error);
-    if (error || !std::filesystem::is_directory(stepsDir)) throw Failure(stepsDir + ": cannot create the directory");
   }
 
   Timings timings;

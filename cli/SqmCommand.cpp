@@ -1,6 +1,6 @@
 // `medial sqm SKELETON.vtp|.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME] [--capsule]
 //              [--triangle-fans] [--ring-vertices N] [--subdivide K] [--sharp-scale S] [--no-fold-repair]
-//              [--no-merge]`
+//              [--no-merge] [--stages DIR]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
@@ -39,7 +39,7 @@ void countTable1(vtkMedialSQM* filter, Timings& timings) {
 int runSqm(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args,
-      {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale"},
+      {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale", "--stages"},
        {"--capsule", "--triangle-fans", "--no-fold-repair", "--no-merge", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sqm needs exactly one SKELETON file");
   const std::string input = parsed.positional[0];
@@ -59,6 +59,11 @@ int runSqm(const std::vector<std::string>& args) {
   if (parsed.has("--triangle-fans")) filter->PairTrianglesOff();
   if (parsed.has("--no-fold-repair")) filter->FoldRepairOff();
   if (parsed.has("--no-merge")) filter->MergeNodesOff();
+  const std::string stages = parsed.value("--stages");
+  if (parsed.has("--stages")) {
+    makeOutputDirectory(stages, "--stages");
+    filter->RecordStagesOn();
+  }
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
@@ -84,6 +89,8 @@ int runSqm(const std::vector<std::string>& args) {
 
   timings.start("write");
   writePolyData(filter->GetOutput(), output);
+  for (const std::string& stage : vtkMedialSQM::GetStageMeshNames())  // --stages: the papers' figures
+    if (!stages.empty()) writePolyData(filter->GetStageMesh(stage), stages + "/" + stage + ".vtp");
   timings.stop();
   if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
   return kSuccess;

@@ -13,4 +13,8 @@ void writePolyData(vtkPolyData* data, const std::string& path);
 // Throws UsageError naming `option` when vtkMedialPolyDataWriter cannot write `path`'s extension.
 void requireWritableExtension(const std::string& path, const char* option);
 
+// Makes the directory of an option that writes several files (--contraction-steps, --stages) before any
+// work; throws UsageError for an empty name and Failure when it cannot be made.
+void makeOutputDirectory(const std::string& dir, const char* option);
+
 }  // namespace medial::cli

@@ -28,6 +28,7 @@ void vtkMedialSQM::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "SharpScaling: " << this->SharpScaling << "\n";
   os << indent << "SharpMinimumScale: " << this->SharpMinimumScale << "\n";
   os << indent << "FoldRepair: " << this->FoldRepair << "\n";
+  os << indent << "RecordStages: " << this->RecordStages << "\n";
   os << indent << "MergeNodes: " << this->MergeNodes << "\n";
 }
 
@@ -44,6 +45,7 @@ vtkMedialSQM::vtkMedialSQM() {
   this->FoldRepair = defaults.foldRepair;
   this->MergeNodes = defaults.mergeNodes;
   this->Seconds.assign(GetStageNames().size(), 0.0);
+  this->Stages.clear();
 }
 
 std::vector<std::string> vtkMedialSQM::GetStageNames() {
@@ -69,6 +71,7 @@ medial::SqmParameters vtkMedialSQM::MakeParameters() const {
   p.sharpScaling.minimumScale = this->SharpMinimumScale;
   p.foldRepair = this->FoldRepair;
   p.mergeNodes = this->MergeNodes;
+  p.recordStages = this->RecordStages;
   return p;
 }
 
@@ -113,6 +116,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   this->BranchNodes = this->ConnectionNodes = this->LeafNodes = this->IrregularVertices = 0;
   this->Quads = this->Triangles = 0;
   this->Seconds.assign(GetStageNames().size(), 0.0);
+  this->Stages.clear();
   const medial::SqmResult result = medial::sqmMesh(skeleton, this->MakeParameters(), [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
@@ -138,5 +142,18 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   output->SetPoints(mesh->GetPoints());
   output->SetPolys(mesh->GetPolys());
   output->GetPointData()->AddArray(medial::intArray("SkeletonNode", result.mesh.vertexNode));
+  if (this->RecordStages) {
+    const medial::SqmMesh* stages[] = {&result.polyhedra, &result.refinedPolyhedra, &result.baseMesh};
+    for (size_t k = 0; k < GetStageMeshNames().size(); ++k) {
+      vtkSmartPointer<vtkPolyData> stage = medial::polyDataFromPolygons(stages[k]->vertices, stages[k]->faces);
+      stage->GetPointData()->AddArray(medial::intArray("SkeletonNode", stages[k]->vertexNode));
+      this->Stages[GetStageMeshNames()[k]] = stage;
+    }
+  }
   return 1;
+}
+
+vtkPolyData* vtkMedialSQM::GetStageMesh(const std::string& name) const {
+  const auto found = this->Stages.find(name);
+  return found != this->Stages.end() ? found->second.Get() : nullptr;
 }

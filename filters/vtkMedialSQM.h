@@ -19,6 +19,9 @@
 
 #include "MedialFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h"
+
+#include <map>
 
 #include <string>
 #include <vector>
@@ -79,6 +82,17 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkGetMacro(MergeNodes, bool);
   vtkBooleanMacro(MergeNodes, bool);
 
+  /// Keep the papers' intermediate results (default off): GetStageMesh of "polyhedra" (every branch node
+  /// polyhedron as generated: hull, 1-to-6 split, projection; CESCG Fig. 3), "refined-polyhedra" (after the
+  /// LIE refinement, Fig. 4), both in the bind pose of the straightened skeleton, and "base" (the joined
+  /// mesh before subdivision, in the input pose); point data `SkeletonNode` on each.
+  vtkSetMacro(RecordStages, bool);
+  vtkGetMacro(RecordStages, bool);
+  vtkBooleanMacro(RecordStages, bool);
+  /// A recorded stage by name (see RecordStages); null when not recorded or unknown.
+  vtkPolyData* GetStageMesh(const std::string& name) const;
+  static std::vector<std::string> GetStageMeshNames() { return {"polyhedra", "refined-polyhedra", "base"}; }
+
   // After an update: how many nodes lay inside a neighbouring branch node's sphere and were merged into it
   // (the repair above).
   vtkGetMacro(MergedNodes, int);
@@ -119,6 +133,8 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   double SharpMinimumScale;
   bool FoldRepair;
   bool MergeNodes;
+  bool RecordStages = false;
+  std::map<std::string, vtkSmartPointer<vtkPolyData>> Stages;
   // Figures of the last update.
   int MergedNodes = 0;
   int FoldRepairedVertices = 0;

@@ -357,6 +357,20 @@ std::vector<int> carryAlong(Builder& b, std::vector<int> ring, const std::vector
   return ring;
 }
 
+// A branch node polyhedron's triangles appended to `out` (recordStages), its vertices owned by its node.
+void appendPolyhedron(SqmMesh& out, const BranchNodePolyhedron& bnp) {
+  const int first = int(out.vertices.size());
+  for (auto v : bnp.mesh.vertices()) {
+    out.vertices.push_back(toEigen(bnp.mesh.point(v)));
+    out.vertexNode.push_back(bnp.node);
+  }
+  for (auto f : bnp.mesh.faces()) {
+    std::vector<int> face;
+    for (auto v : bnp.mesh.fv_range(f)) face.push_back(first + v.idx());
+    out.faces.push_back(face);
+  }
+}
+
 std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pose, const SqmParameters& p,
                      Builder& b, SqmResult& result) {
   // Linear skeleton (extension 2): an N-vertex ring at the first connection node.
@@ -404,6 +418,8 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
       return error;
   }
   result.generationSeconds += start.seconds();
+  if (p.recordStages)
+    for (const auto& [k, bnp] : bnps) appendPolyhedron(result.polyhedra, bnp);
   start.restart();
   // For each branch node and each of its intersection vertices: the path's end node, and which of the end
   // BNP's intersection vertices faces back (its parent side: index 0) when the end is a branch node.
@@ -434,6 +450,8 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
     if (!refineBnp(bnp, target, exact, p.smoothing, error)) return error;
   }
   result.refinementSeconds += start.seconds();
+  if (p.recordStages)
+    for (const auto& [k, bnp] : bnps) appendPolyhedron(result.refinedPolyhedra, bnp);
 
   // Steps 3: joining. BNP vertices other than the intersection vertices go to the mesh; every BNP face
   // touches an intersection vertex, so none is kept: tubes take their place.
@@ -618,6 +636,7 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
   result.mesh.vertexNode.resize(builder.owner.size());
   for (size_t v = 0; v < builder.owner.size(); ++v)
     result.mesh.vertexNode[v] = prepared.origin[size_t(builder.owner[v])];
+  if (p.recordStages) result.baseMesh = result.mesh;
   if (p.subdivisionLevels > 0) {
     // The cones of the skeleton the mesh was built on (capsule nodes included, pseudo nodes left out).
     Skeleton cones = s;

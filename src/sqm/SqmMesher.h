@@ -63,6 +63,8 @@ struct SqmParameters {
   // The repair that merges a node lying inside a neighbouring branch node's sphere into it (off: such a
   // skeleton is an error naming the node).
   bool mergeNodes = true;
+  // The papers' intermediate results (SqmResult's polyhedra, refinedPolyhedra, baseMesh).
+  bool recordStages = false;
 };
 
 struct SqmMesh {
@@ -85,6 +87,10 @@ struct SqmResult {
   // (placement), subdivision, and Medial's repairs (orientation, triangle pairing).
   double straighteningSeconds = 0, generationSeconds = 0, refinementSeconds = 0, joiningSeconds = 0,
          placementSeconds = 0, subdivisionSeconds = 0, repairSeconds = 0;
+  // With recordStages: every branch node polyhedron as generated (the hull, 1-to-6 split and projected:
+  // CESCG Fig. 3) and after the LIE refinement (Fig. 4), in the bind pose (the straightened skeleton), a
+  // vertex's node the branch node; and the joined base mesh before the subdivision, in the input pose.
+  SqmMesh polyhedra, refinedPolyhedra, baseMesh;
   std::string error;
   bool ok() const { return error.empty(); }
 };

@@ -221,6 +221,19 @@ TEST(Cli, SkeletonWritesTheContractionStepsAsATimeSeries) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/t.vtp")) << "refused before any output";
 }
 
+TEST(Cli, SqmWritesItsStagesAndRefusesAnUnmakeableDirectory) {
+  const std::string dir = scratchDir("cli-sqm-stages");
+  auto r = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/humanoid.vtp") + " -o " + dir +
+                                    "/h.vtp --stages " + dir + "/stages --quiet"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* name : {"polyhedra.vtp", "refined-polyhedra.vtp", "base.vtp"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/stages/" + name)) << name;
+  auto refused = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/humanoid.vtp") + " -o " + dir +
+                                          "/x.vtp --stages /proc/no-such-dir --quiet"));
+  EXPECT_EQ(refused.exitCode, 1);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.vtp"));
+}
+
 TEST(Cli, SkeletonPutsBackTheCyclesSurgeryLostAndSaysSo) {
   const std::string femur = medial::test::externalPath("cgal/meshes/femur.off");
   if (!std::filesystem::exists(femur)) GTEST_SKIP() << femur << " missing: run scripts/fetch-samples";

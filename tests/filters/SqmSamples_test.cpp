@@ -341,3 +341,35 @@ TEST(SqmFilter, HundredThousandNodesFinishAsAClosedManifold) {
   EXPECT_EQ(t.borderEdges, 0);
   EXPECT_EQ(t.nonManifoldEdges, 0);
 }
+
+// The papers' intermediate meshes (RecordStages): one closed polyhedron per branch node, each owned by its
+// node; the LIE refinement only adds to them; the base mesh is the output when nothing is subdivided.
+TEST(SqmFilter, RecordedStagesArePolyhedraPerBranchNodeAndTheBaseMesh) {
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  reader->SetFileName(medial::test::dataPath("skeletons/sqm/humanoid.vtp").c_str());
+  auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+  sqm->SetInputConnection(reader->GetOutputPort());
+  sqm->Update();
+  EXPECT_EQ(sqm->GetStageMesh("polyhedra"), nullptr) << "nothing kept unless asked";
+  sqm->RecordStagesOn();
+  sqm->Update();
+  vtkPolyData* polyhedra = sqm->GetStageMesh("polyhedra");
+  vtkPolyData* refined = sqm->GetStageMesh("refined-polyhedra");
+  vtkPolyData* base = sqm->GetStageMesh("base");
+  ASSERT_TRUE(polyhedra && refined && base);
+  EXPECT_EQ(sqm->GetStageMesh("nonsense"), nullptr);
+  for (vtkPolyData* stage : {polyhedra, refined}) {
+    const auto topology = medial::computeMeshTopology(stage->GetNumberOfPoints(), polygonsOf(stage));
+    EXPECT_EQ(topology.components, sqm->GetBranchNodes());
+    EXPECT_EQ(topology.borderEdges, 0);
+    EXPECT_EQ(topology.eulerCharacteristic, 2 * sqm->GetBranchNodes()) << "one sphere each";
+    vtkDataArray* owner = stage->GetPointData()->GetArray("SkeletonNode");
+    ASSERT_TRUE(owner);
+    std::set<int> nodes;
+    for (vtkIdType v = 0; v < owner->GetNumberOfTuples(); ++v) nodes.insert(int(owner->GetComponent(v, 0)));
+    EXPECT_EQ(int(nodes.size()), sqm->GetBranchNodes());
+  }
+  EXPECT_GT(refined->GetNumberOfPoints(), polyhedra->GetNumberOfPoints()) << "the LIE refinement splits";
+  EXPECT_EQ(base->GetNumberOfPoints(), sqm->GetOutput()->GetNumberOfPoints());
+  EXPECT_EQ(base->GetNumberOfPolys(), sqm->GetOutput()->GetNumberOfPolys());
+}
