@@ -1,6 +1,6 @@
 // `medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] [--fill-holes]
 //  [--max-gap MM] [--min-part-volume MM3]
-//  [--profile PROFILE.csv] [--terrain TERRAIN.png] [--section-spacing K] [--section-rays N]`
+//  [--profile PROFILE.csv] [--terrain TERRAIN.png] [--section-spacing K] [--section-rays N] [--stages DIR]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
@@ -14,7 +14,9 @@
 #include "MedialFileNames.h"
 #include "vtkMedialTskCenterline.h"
 
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkTable.h>
@@ -23,11 +25,34 @@
 
 namespace medial::cli {
 
+namespace {
+
+// --stages DIR: the paper's intermediate results: voxels.vtp (Layer, Cluster, T), primitive.vtp, the TSK
+// models as tsk-model.vtp (the curve before centring) and tsk-fits.csv (t, x, y, z).
+void writeStages(vtkMedialTskCenterline* filter, const std::string& dir) {
+  for (const std::string& name : vtkMedialTskCenterline::GetStageDataNames())
+    if (vtkPolyData* stage = filter->GetStageData(name)) writePolyData(stage, dir + "/" + name + ".vtp");
+  vtkPolyData* model = filter->GetStageData("tsk-model");
+  if (!model) return;
+  std::string csv = "t,x_mm,y_mm,z_mm\n";
+  vtkDataArray* t = model->GetPointData()->GetArray("T");
+  for (vtkIdType k = 0; k < model->GetNumberOfPoints(); ++k) {
+    double p[3];
+    model->GetPoint(k, p);
+    char row[160];
+    std::snprintf(row, sizeof row, "%.6f,%.4f,%.4f,%.4f\n", t->GetComponent(k, 0), p[0], p[1], p[2]);
+    csv += row;
+  }
+  writeText(csv, dir + "/tsk-fits.csv");
+}
+
+}  // namespace
+
 int runCenterline(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args,
       {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain", "--section-spacing",
-        "--section-rays", "--antecedent-width", "--centering", "--max-gap", "--min-part-volume"},
+        "--section-rays", "--antecedent-width", "--centering", "--max-gap", "--min-part-volume", "--stages"},
        {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1)
     throw UsageError("centerline needs exactly one VOLUME (file or DICOM folder)");
@@ -72,6 +97,12 @@ int runCenterline(const std::vector<std::string>& args) {
   if (!profile.empty() || !terrain.empty()) filter->ComputeSectionsOn();
   MEDIAL_OPTION(parsed, "--section-spacing", filter, SectionSpacing);
   MEDIAL_OPTION(parsed, "--section-rays", filter, SectionRays);
+  const std::string stages = parsed.value("--stages");
+  if (parsed.has("--stages")) {
+    if (parsed.has("--branches")) throw UsageError("--stages follows one tube: not with --branches");
+    makeOutputDirectory(stages, "--stages");
+    filter->RecordStagesOn();
+  }
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
@@ -89,6 +120,7 @@ int runCenterline(const std::vector<std::string>& args) {
   writePolyData(filter->GetOutput(), output);
   if (!profile.empty()) writeProfileCsv(vtkTable::SafeDownCast(filter->GetOutputDataObject(1)), profile);
   if (!terrain.empty()) writeTerrainPng(vtkImageData::SafeDownCast(filter->GetOutputDataObject(2)), terrain);
+  if (!stages.empty()) writeStages(filter, stages);
   timings.stop();
   for (const std::string& stage : vtkMedialTskCenterline::GetStageNames())
     if (filter->GetStageSeconds(stage) > 0)

@@ -11,7 +11,6 @@
 
 #include "MedialErrorCollector.h"
 #include "vtkMedialContractionSkeleton.h"
-#include "MedialFileNames.h"
 #include "vtkMedialRigWriter.h"
 
 #include <vtkPointData.h>
@@ -20,7 +19,6 @@
 #include <vtkSmartPointer.h>
 
 #include <cstdio>
-#include <fstream>
 
 namespace medial::cli {
 
@@ -50,14 +48,7 @@ void writeStages(vtkMedialContractionSkeleton* filter, const std::string& dir) {
     collection += "    <DataSet timestep=\"" + std::to_string(step) + "\" file=\"" + name + "\"/>\n";
   }
   collection += "  </Collection>\n</VTKFile>\n";
-  std::string why;
-  const auto write = [&collection](const std::string& temporary, std::string& reason) {
-    std::ofstream out(temporary);
-    out << collection;
-    if (!out.flush()) reason = "cannot write the file";
-    return bool(out);
-  };
-  if (!medial::writeAtomically(dir + "/contraction.pvd", write, why)) throw Failure(dir + "/contraction.pvd: " + why);
+  writeText(collection, dir + "/contraction.pvd");
   writePolyData(filter->GetSurgerySkeleton(), dir + "/surgery-skeleton.vtp");
   writePolyData(filter->GetUnselectedSkeleton(), dir + "/unselected-skeleton.vtp");
 }

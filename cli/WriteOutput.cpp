@@ -3,12 +3,14 @@
 #include "CommandLine.h"
 
 #include "MedialErrorCollector.h"
+#include "MedialFileNames.h"
 #include "vtkMedialPolyDataWriter.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
 #include <filesystem>
+#include <fstream>
 
 namespace medial::cli {
 
@@ -24,6 +26,17 @@ void requireWritableExtension(const std::string& path, const char* option) {
   if (!vtkMedialPolyDataWriter::CanWriteFile(path.c_str()))
     throw UsageError(std::string(option) + " must end in one of " + vtkMedialPolyDataWriter::GetExtensions() +
                      ": " + path);
+}
+
+void writeText(const std::string& text, const std::string& path) {
+  std::string error;
+  const auto write = [&text](const std::string& temporary, std::string& why) {
+    std::ofstream out(temporary);
+    out << text;
+    if (!out.flush()) why = "cannot write the file";
+    return bool(out);
+  };
+  if (!medial::writeAtomically(path, write, error)) throw Failure(path + ": " + error);
 }
 
 void makeOutputDirectory(const std::string& dir, const char* option) {

@@ -13,6 +13,9 @@ void writePolyData(vtkPolyData* data, const std::string& path);
 // Throws UsageError naming `option` when vtkMedialPolyDataWriter cannot write `path`'s extension.
 void requireWritableExtension(const std::string& path, const char* option);
 
+// Writes `text` to `path` atomically; throws Failure naming the file.
+void writeText(const std::string& text, const std::string& path);
+
 // Makes the directory of an option that writes several files (--contraction-steps, --stages) before any
 // work; throws UsageError for an empty name and Failure when it cannot be made.
 void makeOutputDirectory(const std::string& dir, const char* option);

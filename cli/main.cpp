@@ -145,7 +145,7 @@ const std::vector<Command>& commands() {
        "                         [--branches] [--antecedent-width W] [--centering N]\n"
        "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] [--section-rays "
        "N]\n"
-       "                         [--quiet] [--timings]\n\n"
+       "                         [--stages DIR] [--quiet] [--timings]\n\n"
        "Follows a tube (colon, vessel) in VOLUME (.nii .nii.gz .mha .mhd .nrrd .inr .vti or a DICOM folder) "
        "by\n"
        "the TSK method (WSCG 2008): layers and cylindrical clusters from P0, then three Takagi-Sugeno-Kang\n"
@@ -185,6 +185,11 @@ const std::vector<Command>& commands() {
            "  --section-rays N          angles per section (default " +
            number(tsk->GetSectionRays()) +
            ")\n"
+           "  --stages DIR              the paper's intermediate results in DIR: voxels.vtp (the structure's\n"
+           "                            voxels with Layer, Cluster and the order T: Figs. 3, 7-8),\n"
+           "                            primitive.vtp (the primitive centerline, Figs. 4-6), tsk-model.vtp\n"
+           "                            (the curve before centring) and tsk-fits.csv (x, y, z over t, Figs.\n"
+           "                            9-10)\n"
            "  --quiet                   no progress line\n"
            "  --timings                 print stage times as JSON on stdout\n",
        runCenterline},

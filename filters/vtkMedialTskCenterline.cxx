@@ -133,6 +133,7 @@ medial::TskCenterlineParameters vtkMedialTskCenterline::MakeParameters() const {
   p.detectBranches = this->DetectBranches;
   p.minimumBranchLength = this->MinimumBranchLength;
   p.computeSections = this->ComputeSections;
+  p.recordStages = this->RecordStages;
   p.sections.spacing = this->SectionSpacing;
   p.sections.rays = this->SectionRays;
   return p;
@@ -243,6 +244,7 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
     return 0;
   }
   const medial::TskCenterlineParameters p = this->MakeParameters();
+  this->Stages.clear();
   const medial::TskCenterlineResult result = medial::tskCenterline(volume, p, [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
@@ -261,5 +263,52 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   if (p.computeSections)
     writeSections(result.sections, p.sections.spacing, vtkTable::GetData(outputVector, 1),
                   vtkImageData::GetData(outputVector, 2));
+  if (p.recordStages && !result.stages.voxels.empty()) this->KeepStages(result.stages);
   return 1;
+}
+
+vtkPolyData* vtkMedialTskCenterline::GetStageData(const std::string& name) const {
+  const auto found = this->Stages.find(name);
+  return found != this->Stages.end() ? found->second.Get() : nullptr;
+}
+
+namespace {
+
+// Points as a polydata: one polyline through them (line) or one vertex cell each.
+vtkSmartPointer<vtkPolyData> pointSet(const std::vector<Eigen::Vector3d>& at, bool line) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  if (line) cells->InsertNextCell(vtkIdType(at.size()));
+  for (const Eigen::Vector3d& p : at) {
+    const vtkIdType id = points->InsertNextPoint(p.data());
+    if (line) cells->InsertCellPoint(id);
+    else cells->InsertNextCell(1, &id);
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  if (line) data->SetLines(cells);
+  else data->SetVerts(cells);
+  return data;
+}
+
+}  // namespace
+
+void vtkMedialTskCenterline::KeepStages(const medial::TskStages& stages) {
+  vtkSmartPointer<vtkPolyData> voxels = pointSet(stages.voxels, false);
+  voxels->GetPointData()->AddArray(medial::intArray("Layer", stages.layer));
+  voxels->GetPointData()->AddArray(medial::intArray("Cluster", stages.cluster));
+  std::vector<double> t(stages.voxels.size());
+  for (size_t k = 0; k < t.size(); ++k) t[k] = t.size() > 1 ? double(k) / double(t.size() - 1) : 0.0;
+  voxels->GetPointData()->AddArray(medial::doubleArray("T", t));
+  this->Stages["voxels"] = voxels;
+  vtkSmartPointer<vtkPolyData> primitive = pointSet(stages.primitive, true);
+  primitive->GetPointData()->AddArray(medial::intArray("Layer", stages.primitiveLayer));
+  primitive->GetPointData()->AddArray(
+      medial::doubleArray("BorderDistance", std::vector<double>(stages.primitiveBorderDistance.begin(),
+                                                                stages.primitiveBorderDistance.end())));
+  this->Stages["primitive"] = primitive;
+  vtkSmartPointer<vtkPolyData> model = pointSet(stages.model.point, true);
+  model->GetPointData()->AddArray(medial::doubleArray("T", stages.model.t));
+  this->Stages["tsk-model"] = model;
 }

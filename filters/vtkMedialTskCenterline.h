@@ -22,15 +22,18 @@
  */
 #pragma once
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "MedialFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h"
 
 namespace medial {
 struct TskCenterlineParameters;
+struct TskStages;
 }
 
 class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm {
@@ -111,6 +114,18 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   /// Rays (angles) per section, even (default 72: every 5 degrees).
   vtkSetClampMacro(SectionRays, int, 4, 3600);
   vtkGetMacro(SectionRays, int);
+  /// Keep the paper's intermediate results along the (first) tube (default off; not with DetectBranches),
+  /// then GetStageData of: "voxels" (the followed structure's voxel centres in phase I's total order, as
+  /// vertices with point data Layer - Fig. 3 -, Cluster - Figs. 7-8 - and T, the order parameter),
+  /// "primitive" (the primitive centerline P_0 ... P_n, Figs. 4-6, a polyline with Layer and
+  /// BorderDistance), "tsk-model" (x(t), y(t), z(t) sampled, a polyline with point data T: Figs. 9-10, and
+  /// the curve before the centring passes, the paper's own output).
+  vtkSetMacro(RecordStages, bool);
+  vtkGetMacro(RecordStages, bool);
+  vtkBooleanMacro(RecordStages, bool);
+  vtkPolyData* GetStageData(const std::string& name) const;
+  static std::vector<std::string> GetStageDataNames() { return {"voxels", "primitive", "tsk-model"}; }
+
   /// Figures of the last update.
   vtkGetMacro(PrimitiveCenterlinePoints, int);
   vtkGetMacro(StructureVoxels, vtkIdType);
@@ -140,6 +155,8 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   void operator=(const vtkMedialTskCenterline&) = delete;
   // The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
   medial::TskCenterlineParameters MakeParameters() const;
+  // Keeps the recorded intermediate results as polydata (RecordStages).
+  void KeepStages(const medial::TskStages& stages);
 
   // Parameters: defaults from medial::TskCenterlineParameters (the constructor).
   enum class Selection { NonZero, Label, Threshold };
@@ -160,6 +177,8 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   bool ComputeSections;
   double SectionSpacing;
   int SectionRays;
+  bool RecordStages = false;
+  std::map<std::string, vtkSmartPointer<vtkPolyData>> Stages;
   // Figures of the last update.
   int PrimitiveCenterlinePoints = 0;
   vtkIdType StructureVoxels = 0;

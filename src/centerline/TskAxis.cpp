@@ -241,7 +241,8 @@ std::vector<float> distanceToOutside(const BinaryVolume& volume) {
   return distance;
 }
 
-Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, const TskParameters& p) {
+Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, const TskParameters& p,
+                   TskModelSamples* modelSamples) {
   Centerline result;
   const size_t count = clusters.orderedVoxels.size();
   if (count < 2) return result;
@@ -316,8 +317,10 @@ Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, 
   std::vector<Eigen::Vector3d> curve;
   std::vector<double> length{0};
   for (int s = 0; s <= dense; ++s) {
-    curve.push_back(model(first + (last - first) * double(s) / dense));
+    const double t = first + (last - first) * double(s) / dense;
+    curve.push_back(model(t));
     if (s > 0) length.push_back(length.back() + (curve[size_t(s)] - curve[size_t(s) - 1]).norm());
+    if (modelSamples) modelSamples->t.push_back(t), modelSamples->point.push_back(curve.back());
   }
   // Beyond the paper's two phases: the centricity criterion of its §2 enforced on the TSK curve (each point
   // moved towards the centre of its perpendicular section, the moves smoothed along the curve).

@@ -43,8 +43,16 @@ struct Centerline {
   double length() const { return arcLength.empty() ? 0 : arcLength.back(); }
 };
 
+// The paper's Figs. 9-10: the three TSK models sampled densely over the order parameter t between the
+// first and the last kept cluster's centre; the points are the curve before the centring passes (the
+// paper's own output).
+struct TskModelSamples {
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> point;  // (x(t), y(t), z(t)), mm
+};
+
 Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters,
-                   const TskParameters& parameters = {});
+                   const TskParameters& parameters = {}, TskModelSamples* model = nullptr);
 
 // Euclidean distance (mm) from every voxel centre to the nearest voxel centre outside the structure (0
 // outside), exact, separable (Felzenszwalb and Huttenlocher), anisotropic spacing honoured.

@@ -126,8 +126,23 @@ std::string format(double value) {
   return text.str();
 }
 
+// The paper's intermediate results of one tube (recordStages).
+void keepStages(const BinaryVolume& volume, const TubularClusters& clusters, TskStages& stages) {
+  std::vector<int> layerOf;
+  manhattanLayers(volume, clusters.primitive.front(), layerOf);
+  for (size_t k = 0; k < clusters.orderedVoxels.size(); ++k) {
+    const int64_t voxel = clusters.orderedVoxels[k];
+    stages.voxels.push_back(volume.physical(voxel));
+    stages.layer.push_back(layerOf[size_t(voxel)]);
+    stages.cluster.push_back(clusters.orderedCluster[k]);
+  }
+  for (int64_t voxel : clusters.primitive) stages.primitive.push_back(volume.physical(voxel));
+  stages.primitiveLayer = clusters.primitiveLayer;
+  stages.primitiveBorderDistance = clusters.primitiveBorderDistance;
+}
+
 // Phase I and II along one tube (the paper).
-bool followTube(const BinaryVolume& volume, int64_t seed, const TskParameters& p,
+bool followTube(const BinaryVolume& volume, int64_t seed, const TskParameters& p, bool recordStages,
                 const std::function<bool(double)>& progress, TskCenterlineResult& result) {
   const TubularClusters clusters = structureTube(volume, seed, progress);
   if (!clusters.ok()) {
@@ -135,7 +150,8 @@ bool followTube(const BinaryVolume& volume, int64_t seed, const TskParameters& p
     return false;
   }
   result.primitiveCenterlinePoints = int(clusters.primitive.size());
-  result.branches = {tskAxis(volume, clusters, p)};
+  if (recordStages) keepStages(volume, clusters, result.stages);
+  result.branches = {tskAxis(volume, clusters, p, recordStages ? &result.stages.model : nullptr)};
   result.parent = {-1};
   return true;
 }
@@ -253,9 +269,11 @@ bool followParts(const ScalarVolume& input, const TskCenterlineParameters& p, co
         k == seedPart ? box.index((*seed)[0] - first[0], (*seed)[1] - first[1], (*seed)[2] - first[2]) : -1;
     const int64_t voxels = parts.parts[size_t(k)].voxels;
     TskCenterlineResult one;
+    const bool record = p.recordStages && result.stages.voxels.empty();  // the first part followed
     const bool followed = followTube(
-        box, localSeed, p.tsk,
+        box, localSeed, p.tsk, record,
         [&](double f) { return progress((double(done) + f * double(voxels)) / double(total)); }, one);
+    if (followed && record) result.stages = std::move(one.stages);
     done += voxels;
     if (!followed && one.error == "aborted") {
       result.error = one.error;
@@ -419,7 +437,8 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
         [&report](double f) { return report(0.1 + 0.8 * f); }, result);
   else if (kept.size() == 1)
     followed = followTube(
-        volume, seed, parameters.tsk, [&report](double f) { return report(0.1 + 0.7 * f); }, result);
+        volume, seed, parameters.tsk, parameters.recordStages,
+        [&report](double f) { return report(0.1 + 0.7 * f); }, result);
   else
     followed = followParts(
         input, parameters, frame, runs, parts, kept, parameters.seed ? &seedVoxel : nullptr,

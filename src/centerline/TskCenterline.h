@@ -59,6 +59,19 @@ struct TskCenterlineParameters {
   double minimumBranchLength = 0;       // mm; 0: twice the largest inscribed radius
   bool computeSections = false;         // sections along the first polyline (TubeSections.h)
   SectionParameters sections;
+  // The paper's intermediate results (TskCenterlineResult::stages), along one tube (not with branches).
+  bool recordStages = false;
+};
+
+// What the paper draws on the way (WSCG 2008 Figs. 3-10), in physical coordinates (mm).
+struct TskStages {
+  std::vector<Eigen::Vector3d> voxels;  // the followed structure's voxel centres, in phase I's total order
+  std::vector<int> layer;               // Manhattan layer from P0 of each (Fig. 3)
+  std::vector<int> cluster;             // cluster (primitive point) of each (Figs. 7-8)
+  std::vector<Eigen::Vector3d> primitive;   // phase I's chosen points P_0 ... P_n (Figs. 4-6)
+  std::vector<int> primitiveLayer;
+  std::vector<float> primitiveBorderDistance;  // mm, six directions
+  TskModelSamples model;  // x(t), y(t), z(t) (Figs. 9-10); a voxel's t is its rank / (voxels - 1)
 };
 
 struct TskCenterlineResult {
@@ -71,6 +84,7 @@ struct TskCenterlineResult {
   int partsFollowed = 0;              // parts of the structure followed (more than 1: gaps bridged)
   std::vector<double> bridgedGaps;    // mm, the length of each bridge outside the structure
   std::vector<std::string> notes;     // what a user should know: parts left out, gaps too long
+  TskStages stages;                   // with recordStages, along one tube
   // Seconds of each stage, in order: selection (runs of selected voxels), cleanup (the part to follow in
   // its box, holes), axis (phases I and II, and the branches), sections.
   std::vector<std::pair<std::string, double>> stageSeconds;

@@ -234,6 +234,22 @@ TEST(Cli, SqmWritesItsStagesAndRefusesAnUnmakeableDirectory) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.vtp"));
 }
 
+TEST(Cli, CenterlineWritesThePapersStages) {
+  const std::string dir = scratchDir("cli-centerline-stages");
+  const std::string volume = dataPath("volumes/tubes/u.nii.gz");
+  auto r = runCommand(medialCommand("centerline " + volume + " -o " + dir + "/u.vtp --label 1 --stages " + dir +
+                                    "/stages --quiet"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* name : {"voxels.vtp", "primitive.vtp", "tsk-model.vtp", "tsk-fits.csv"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/stages/" + name)) << name;
+  std::ifstream csv(dir + "/stages/tsk-fits.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "t,x_mm,y_mm,z_mm");
+  auto usage = runCommand(medialCommand("centerline " + volume + " -o " + dir + "/x.vtp --branches --stages " + dir));
+  EXPECT_EQ(usage.exitCode, 2) << usage.err;
+}
+
 TEST(Cli, SkeletonPutsBackTheCyclesSurgeryLostAndSaysSo) {
   const std::string femur = medial::test::externalPath("cgal/meshes/femur.off");
   if (!std::filesystem::exists(femur)) GTEST_SKIP() << femur << " missing: run scripts/fetch-samples";

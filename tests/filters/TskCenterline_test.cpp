@@ -426,3 +426,50 @@ TEST(TskCenterlineFilter, AGapLongerThanTheMaximumSplitsTheCenterline) {
   EXPECT_EQ(filter->GetPartsFollowed(), 1);
   EXPECT_LT(filter->GetOutput()->GetNumberOfPoints(), 0.8 * bothParts) << "the largest part only";
 }
+
+// The paper's intermediate results (RecordStages) on the helix: every structure voxel in the order with its
+// layer and cluster; the primitive centerline inside the structure, one cluster per point, its layers
+// rising from P0; the TSK models over t, whose curve (the paper's own) the centring then improves on.
+TEST(TskCenterlineFilter, RecordedStagesAreThePapersIntermediates) {
+  const std::string folder = medial::test::dataPath("volumes/tubes/");
+  const auto imageData = read(folder + "helix.nii.gz");
+  const auto axis = vtkPolyData::SafeDownCast(read(folder + "helix-axis.vtp"));
+  ASSERT_TRUE(axis);
+  auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  filter->SetInputData(imageData);
+  filter->SetLabel(1);
+  filter->RecordStagesOn();
+  filter->Update();
+  vtkPolyData* voxels = filter->GetStageData("voxels");
+  vtkPolyData* primitive = filter->GetStageData("primitive");
+  vtkPolyData* model = filter->GetStageData("tsk-model");
+  ASSERT_TRUE(voxels && primitive && model);
+  EXPECT_EQ(voxels->GetNumberOfPoints(), filter->GetStructureVoxels());
+  EXPECT_EQ(primitive->GetNumberOfPoints(), filter->GetPrimitiveCenterlinePoints());
+  vtkDataArray* cluster = voxels->GetPointData()->GetArray("Cluster");
+  vtkDataArray* layer = voxels->GetPointData()->GetArray("Layer");
+  ASSERT_TRUE(cluster && layer && voxels->GetPointData()->GetArray("T"));
+  EXPECT_EQ(int(cluster->GetRange()[1]), primitive->GetNumberOfPoints() - 1);
+  EXPECT_EQ(layer->GetRange()[0], 0.0) << "P0's layer";
+  vtkDataArray* primitiveLayer = primitive->GetPointData()->GetArray("Layer");
+  for (vtkIdType k = 1; k < primitive->GetNumberOfPoints(); ++k)
+    EXPECT_GT(primitiveLayer->GetComponent(k, 0), primitiveLayer->GetComponent(k - 1, 0)) << k;
+  // Inside: each chosen point is a voxel of the structure (label 1 there).
+  auto* image = vtkImageData::SafeDownCast(imageData);
+  for (vtkIdType k = 0; k < primitive->GetNumberOfPoints(); ++k) {
+    double p[3], index[3];
+    primitive->GetPoint(k, p);
+    image->TransformPhysicalPointToContinuousIndex(p, index);
+    EXPECT_EQ(image->GetScalarComponentAsDouble(int(std::lround(index[0])), int(std::lround(index[1])),
+                                                int(std::lround(index[2])), 0), 1.0) << k;
+  }
+  vtkDataArray* t = model->GetPointData()->GetArray("T");
+  for (vtkIdType k = 1; k < model->GetNumberOfPoints(); ++k) EXPECT_GT(t->GetComponent(k, 0), t->GetComponent(k - 1, 0));
+  // The paper's curve (before centring) against the output (centred), both measured against the true axis.
+  const auto meanError = [&](vtkPolyData* line) {
+    double sum = 0;
+    for (vtkIdType i = 0; i < line->GetNumberOfPoints(); ++i) sum += distanceToLine(line->GetPoint(i), axis);
+    return sum / double(std::max<vtkIdType>(line->GetNumberOfPoints(), 1));
+  };
+  EXPECT_LT(meanError(filter->GetOutput()), meanError(model));
+}
