@@ -1,5 +1,5 @@
 // `medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp] [--simplify ES] [--merge EM] [--prune ET]
-//                [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U] [--thickness C] [--separate-parts]`
+//                [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U] [--thickness C] [--separate-parts] [--stages DIR]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
@@ -20,7 +20,8 @@
 namespace medial::cli {
 int runSketch(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(args, {{"-o", "--output", "--mesh", "--simplify", "--merge", "--prune",
-                                              "--collapse", "--part", "--unit", "--thickness", "--resample"},
+                                              "--collapse", "--part", "--unit", "--thickness", "--resample",
+                                              "--stages"},
                                              {"--separate-parts", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sketch needs exactly one POLYGON file");
   const std::string input = parsed.positional[0];
@@ -51,6 +52,11 @@ int runSketch(const std::vector<std::string>& args) {
   }
   if (meshOutput.empty()) filter->InflateOff();
   if (parsed.has("--separate-parts")) filter->MergePartsOff();
+  const std::string stages = parsed.value("--stages");
+  if (parsed.has("--stages")) {
+    makeOutputDirectory(stages, "--stages");
+    filter->RecordStagesOn();
+  }
 
   Timings timings;
   ProgressLine progress(parsed.has("--quiet"));
@@ -64,6 +70,8 @@ int runSketch(const std::vector<std::string>& args) {
   timings.start("write");
   writePolyData(filter->GetOutput(0), output);
   if (!meshOutput.empty()) writePolyData(filter->GetOutput(1), meshOutput);
+  for (const std::string& stage : vtkMedialSketchSkeleton::GetStageSkeletonNames())  // --stages
+    if (!stages.empty()) writePolyData(filter->GetStageSkeleton(stage), stages + "/" + stage + ".vtp");
   timings.stop();
   if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
   return kSuccess;

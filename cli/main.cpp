@@ -238,7 +238,8 @@ const std::vector<Command>& commands() {
       {"sketch", "animatable skeleton and inflated mesh of closed 2-D strokes",
        "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp] [--simplify ES] [--merge EM]\n"
        "                     [--prune ET] [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U]\n"
-       "                     [--resample STEP] [--thickness C] [--separate-parts] [--quiet] [--timings]\n\n"
+       "                     [--resample STEP] [--thickness C] [--separate-parts] [--stages DIR]\n"
+       "                     [--quiet] [--timings]\n\n"
        "Skeletonizes sketched outlines (Ma et al. 2021): each closed stroke of POLYGON.txt ('x y' lines, "
        "parts\n"
        "separated by a blank line, each optionally followed by four rows of its 4x4 placement matrix) gets "
@@ -272,6 +273,8 @@ const std::vector<Command>& commands() {
            "  --thickness C             inflation thickness (default " +
            number(sketch->GetThickness()) +
            ": round tubes)\n"
+           "  --stages DIR              the skeleton after each step in DIR: straight-skeleton.vtp, bounded-dp.vtp,\n"
+           "                            connected.vtp, pruned.vtp, merged.vtp (with Part and Branch)\n"
            "  --quiet                   no progress line\n"
            "  --timings                 print stage times as JSON on stdout\n",
        runSketch},

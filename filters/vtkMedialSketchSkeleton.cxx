@@ -47,6 +47,7 @@ medial::SketchParameters vtkMedialSketchSkeleton::MakeParameters() const {
   p.meshEdgeLength = this->MeshEdgeLength;
   p.inflate = this->Inflate;
   p.mergeParts = this->MergeParts;
+  p.recordStages = this->RecordStages;
   return p;
 }
 
@@ -69,6 +70,7 @@ void vtkMedialSketchSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "MeshEdgeLength: " << this->MeshEdgeLength << "\n";
   os << indent << "Inflate: " << this->Inflate << "\n";
   os << indent << "MergeParts: " << this->MergeParts << "\n";
+  os << indent << "RecordStages: " << this->RecordStages << "\n";
 }
 
 void vtkMedialSketchSkeleton::SetPartThresholds(int part, double simplification, double merging,
@@ -123,7 +125,21 @@ bool readStrokes(vtkPolyData* input, std::vector<medial::SketchPart>& parts, std
   return true;
 }
 
+// A sketch graph as a skeleton polydata with its labels: point data Part, cell data Part and Branch.
+vtkSmartPointer<vtkPolyData> polyDataFromGraph(const medial::SketchGraph& graph) {
+  vtkSmartPointer<vtkPolyData> data = medial::polyDataFromSkeleton(graph.skeleton);
+  data->GetPointData()->AddArray(medial::intArray("Part", graph.nodePart));
+  data->GetCellData()->AddArray(medial::intArray("Part", graph.edgePart));
+  data->GetCellData()->AddArray(medial::intArray("Branch", graph.edgeBranch));
+  return data;
+}
+
 }  // namespace
+
+vtkPolyData* vtkMedialSketchSkeleton::GetStageSkeleton(const std::string& name) const {
+  const auto found = this->Stages.find(name);
+  return found != this->Stages.end() ? found->second.Get() : nullptr;
+}
 
 int vtkMedialSketchSkeleton::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                          vtkInformationVector* outputVector) {
@@ -150,11 +166,9 @@ int vtkMedialSketchSkeleton::RequestData(vtkInformation*, vtkInformationVector**
     vtkErrorMacro(<< result.error);
     return 0;
   }
-  const medial::SketchGraph& graph = result.graph;
-  skeletonOutput->ShallowCopy(medial::polyDataFromSkeleton(graph.skeleton));
-  skeletonOutput->GetPointData()->AddArray(medial::intArray("Part", graph.nodePart));
-  skeletonOutput->GetCellData()->AddArray(medial::intArray("Part", graph.edgePart));
-  skeletonOutput->GetCellData()->AddArray(medial::intArray("Branch", graph.edgeBranch));
+  skeletonOutput->ShallowCopy(polyDataFromGraph(result.graph));
+  this->Stages.clear();
+  for (const auto& [name, graph] : result.stages) this->Stages[name] = polyDataFromGraph(graph);
   if (this->Inflate) {
     const vtkSmartPointer<vtkPolyData> mesh = medial::polyDataFromMesh(result.mesh);
     meshOutput->SetPoints(mesh->GetPoints());  // the input's field data, passed on by the pipeline, stays

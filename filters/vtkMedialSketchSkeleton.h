@@ -23,6 +23,7 @@
 
 #include "MedialFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h"
 
 #include <array>
 #include <map>
@@ -81,6 +82,17 @@ class MEDIALFILTERS_EXPORT vtkMedialSketchSkeleton : public vtkPolyDataAlgorithm
   vtkSetMacro(MergeParts, bool);
   vtkGetMacro(MergeParts, bool);
   vtkBooleanMacro(MergeParts, bool);
+  /// Keep the skeleton after each step (default off; the paper's Figs. 3-9), then GetStageSkeleton of
+  /// GetStageSkeletonNames(): "straight-skeleton" (each part's, peripheral edges removed), "bounded-dp"
+  /// (its branches simplified), "connected" (the parts joined, eq. 3), "pruned", "merged" (the refinement's
+  /// first two operations; the third, collapsing, gives port 0). Each with Part and Branch like port 0.
+  vtkSetMacro(RecordStages, bool);
+  vtkGetMacro(RecordStages, bool);
+  vtkBooleanMacro(RecordStages, bool);
+  vtkPolyData* GetStageSkeleton(const std::string& name) const;
+  static std::vector<std::string> GetStageSkeletonNames() {
+    return {"straight-skeleton", "bounded-dp", "connected", "pruned", "merged"};
+  }
 
  protected:
   vtkMedialSketchSkeleton();
@@ -106,6 +118,8 @@ class MEDIALFILTERS_EXPORT vtkMedialSketchSkeleton : public vtkPolyDataAlgorithm
   double MeshEdgeLength;
   bool Inflate;
   bool MergeParts;
+  bool RecordStages = false;
+  std::map<std::string, vtkSmartPointer<vtkPolyData>> Stages;
   std::map<int, std::array<double, 4>> PartThresholds;
   std::map<std::pair<int, int>, double> BranchThresholds;
 };

@@ -55,7 +55,7 @@ void appendPieces(const std::vector<TriangleMesh>& pieces, SketchResult& result)
 }
 
 bool extractPart(const SketchPart& part, int partIndex, const SketchParameters& p, double unit,
-                 SketchGraph& graph, SketchPartResult& out, std::string& error) {
+                 SketchGraph& graph, SketchPartResult& out, std::string& error, SketchGraph* straight) {
   out.stroke = prepareStroke(part.stroke, {p.resampleStep * unit, p.polygonTolerance * unit});
   if (!out.stroke.ok()) {
     error = out.stroke.error;
@@ -75,6 +75,12 @@ bool extractPart(const SketchPart& part, int partIndex, const SketchParameters& 
     if (nodeOf[v] < 0) nodeOf[v] = addNode(local.nodes[v]);
     return nodeOf[v];
   };
+  if (straight) {  // recordStages: the straight skeleton as it is, before BoundedDP
+    const int first = straight->skeleton.nodeCount();
+    for (const Eigen::Vector2d& q : local.nodes)
+      straight->addNode(place(part.placement, q), scale * distanceToBoundary(out.stroke.resampled, q), partIndex);
+    for (const auto& e : local.edges) straight->addEdge(first + e[0], first + e[1], partIndex, -1);
+  }
   if (local.edges.empty()) {  // e.g. a triangle: one inscribed ball
     jointNode(0);
     return true;
@@ -151,12 +157,13 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
   }
   Stopwatch localStart;
   result.parts.resize(parts.size());
+  SketchGraph straight;
   for (int k = 0; k < int(parts.size()); ++k) {
     std::string error;
     if (!validPlacement(parts[k].placement))
       error = "the placement matrix must be finite, with last row 0 0 0 1 and a non-degenerate plane";
     else
-      extractPart(parts[k], k, p, unit, result.graph, result.parts[k], error);
+      extractPart(parts[k], k, p, unit, result.graph, result.parts[k], error, p.recordStages ? &straight : nullptr);
     if (!error.empty()) {
       result.error = "stroke " + std::to_string(k + 1) + ": " + error;
       return result;
@@ -165,6 +172,11 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
   }
   result.localSeconds = localStart.seconds();
 
+  const auto record = [&](const char* name) {
+    if (p.recordStages) result.stages.emplace_back(name, result.graph);
+  };
+  if (p.recordStages) result.stages.emplace_back("straight-skeleton", straight);
+  record("bounded-dp");
   Stopwatch connectionStart;
   const auto attachments = connectParts(result.graph, int(parts.size()));
   for (size_t k = 0; k < parts.size(); ++k) result.parts[k].attachment = attachments[k];
@@ -173,8 +185,11 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
   Stopwatch refinementStart;
   SketchGraph& g = result.graph;
   // Pruning first: the junctions at the base of spurs and twigs are not real junctions to merge.
+  record("connected");
   pruneBranches(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::pruning));
+  record("pruned");
   mergeJunctions(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::merging));
+  record("merged");
   collapseEdges(g, nodeThresholds(g, parts, p, unit, &RefinementThresholds::collapsing));
   // The root: the widest joint of the first part (the torso of a character drawn torso first).
   for (int v = 0; v < g.skeleton.nodeCount(); ++v)

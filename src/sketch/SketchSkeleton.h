@@ -28,6 +28,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace medial {
@@ -60,6 +61,7 @@ struct SketchParameters {
   double thickness = 2;        // c of the inflation (2: round tubes)
   double meshEdgeLength = 10;  // largest edge of the inflation's triangulation
   bool mergeParts = true;      // one watertight mesh, the union of the parts (else one component each)
+  bool recordStages = false;   // SketchResult::stages: the skeleton after each step
 };
 
 struct SketchPartResult {
@@ -76,6 +78,10 @@ struct SketchResult {
   std::vector<SketchPartResult> parts;
   double unitLength = 1;  // the unit used
   double localSeconds = 0, connectionSeconds = 0, refinementSeconds = 0, inflationSeconds = 0;
+  // With recordStages, in order (the paper's Figs. 3-9): "straight-skeleton" (each part's, peripheral
+  // edges removed and short edges collapsed), "bounded-dp" (each branch simplified), "connected" (the parts
+  // joined by eq. 3), "pruned", "merged" (the refinement's first two operations; the collapse gives graph).
+  std::vector<std::pair<std::string, SketchGraph>> stages;
   std::string error;  // names the part ("stroke 2: ...") when one is bad
   bool ok() const { return error.empty(); }
 };

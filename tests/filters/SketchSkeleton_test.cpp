@@ -89,3 +89,28 @@ TEST(SketchSkeleton, EmptyInputIsAnErrorWithEmptyOutputs) {
 }
 
 }  // namespace
+
+// The skeleton after each step (RecordStages, the paper's Figs. 3-9): every stage there with its labels,
+// the refinement never adding nodes, the connection joining the bird's three parts into one tree.
+TEST(SketchSkeleton, RecordedStagesFollowThePipeline) {
+  auto reader = vtkSmartPointer<vtkMedialSketchReader>::New();
+  reader->SetFileName(medial::test::dataPath("sketches/bird.txt").c_str());
+  auto filter = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
+  filter->SetInputConnection(reader->GetOutputPort());
+  filter->InflateOff();
+  filter->RecordStagesOn();
+  filter->Update();
+  vtkIdType previous = -1;
+  for (const std::string& name : vtkMedialSketchSkeleton::GetStageSkeletonNames()) {
+    vtkPolyData* stage = filter->GetStageSkeleton(name);
+    ASSERT_TRUE(stage) << name;
+    EXPECT_TRUE(stage->GetPointData()->GetArray("Part") && stage->GetCellData()->GetArray("Branch")) << name;
+    EXPECT_EQ(int(stage->GetPointData()->GetArray("Part")->GetRange()[1]), 2) << name;
+    if (name == "connected")
+      EXPECT_EQ(stage->GetNumberOfLines(), stage->GetNumberOfPoints() - 1) << "one tree";
+    if (name == "pruned" || name == "merged") EXPECT_LE(stage->GetNumberOfPoints(), previous) << name;
+    previous = stage->GetNumberOfPoints();
+  }
+  EXPECT_LE(filter->GetOutput(0)->GetNumberOfPoints(), previous) << "collapsing never adds a node";
+  EXPECT_EQ(filter->GetStageSkeleton("nonsense"), nullptr);
+}
