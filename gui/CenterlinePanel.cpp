@@ -93,6 +93,8 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
   seedRow->addWidget(seedLabel_, 1);
   seedRow->addWidget(clear);
   extraLayout()->addLayout(seedRow);
+  enableSteps("Keep the structure's voxels (Manhattan layers, clusters), the primitive centerline and the "
+              "TSK curve before centring (the paper's Figs. 3-10)");
   clearSeed();
 
   minDiameter_ = new QLineSeries;
@@ -195,7 +197,19 @@ vtkSmartPointer<vtkAlgorithm> CenterlinePanel::makeFilter(SceneObject* input, QS
   if (seed_) filter->SetSeed((*seed_)[0], (*seed_)[1], (*seed_)[2]);
   filter->ComputeSectionsOn();
   filter->SetSectionSpacing(form()->value("SectionSpacing"));
+  filter->SetRecordStages(recordSteps());
   return filter;
+}
+
+FilterPanel::Steps CenterlinePanel::steps(vtkAlgorithm* filter) {
+  auto* tsk = static_cast<vtkMedialTskCenterline*>(filter);
+  const QStringList names = {"structure voxels (layers, clusters)", "primitive centerline",
+                             "TSK curve before centring"};
+  Steps steps;
+  for (size_t k = 0; k < vtkMedialTskCenterline::GetStageDataNames().size(); ++k)
+    if (vtkPolyData* stage = tsk->GetStageData(vtkMedialTskCenterline::GetStageDataNames()[k]))
+      steps.emplace_back(names[int(k)], stage);
+  return steps;
 }
 
 void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {

@@ -55,6 +55,7 @@ class CenterlinePanel : public FilterPanel {
  protected:
   vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) override;
   void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) override;
+  Steps steps(vtkAlgorithm* filter) override;
 
  private:
   void buildProfile(vtkTable* profile);

@@ -2,15 +2,20 @@
 
 #include "ObjectList.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
 #include <QVBoxLayout>
 
 #include <vtkDataObject.h>
+
+#include <algorithm>
 
 namespace medial::gui {
 
@@ -132,6 +137,15 @@ void FilterPanel::onFinished(vtkAlgorithm* filter, bool ok, const QString& text,
   lastOk_ = ok && live;
   if (ok && live) {
     collect(filter, object, seconds);
+    if (record_ && record_->isChecked()) {
+      recorded_ = steps(filter);
+      stepsInput_ = object->name;
+      const QSignalBlocker block(stepSlider_);
+      stepSlider_->setRange(0, std::max(0, stepCount() - 1));
+      stepSlider_->setValue(0);
+      stepSlider_->setEnabled(stepCount() > 0);
+      stepLabel_->setText(stepCount() > 0 ? QString("%1 steps").arg(stepCount()) : QString("no steps"));
+    }
     emit message(QString("%1: done in %2 s").arg(title_).arg(seconds, 0, 'f', 2));
   } else if (text == "cancelled") {
     emit message(title_ + ": cancelled");
@@ -145,6 +159,49 @@ void FilterPanel::onFinished(vtkAlgorithm* filter, bool ok, const QString& text,
     runAgainPending_ = false;
     run();
   }
+}
+
+void FilterPanel::enableSteps(const QString& tooltip) {
+  record_ = new QCheckBox("Record steps", this);
+  record_->setObjectName("recordSteps");
+  record_->setToolTip(tooltip);
+  stepSlider_ = new QSlider(Qt::Horizontal, this);
+  stepSlider_->setObjectName("steps");
+  stepSlider_->setEnabled(false);
+  stepSlider_->setPageStep(1);
+  stepLabel_ = new QLabel("Run with \"Record steps\" on", this);
+  stepLabel_->setWordWrap(true);
+  auto* rows = new QFormLayout;
+  rows->addRow(record_);
+  rows->addRow("Show step", stepSlider_);
+  rows->addRow(stepLabel_);
+  extra_->addLayout(rows);
+  connect(stepSlider_, &QSlider::valueChanged, this, [this](int index) { showStep(index); });
+}
+
+bool FilterPanel::recordSteps() const { return record_ && record_->isChecked(); }
+
+void FilterPanel::setRecordSteps(bool on) {
+  if (record_) record_->setChecked(on);
+}
+
+QString FilterPanel::stepName(int index) const {
+  return index >= 0 && index < stepCount() ? recorded_[size_t(index)].first : QString();
+}
+
+bool FilterPanel::showStep(int index) {
+  if (index < 0 || index >= stepCount()) return false;
+  const QString name = stepsInput_ + " step";
+  if (SceneObject* previous = objects_->findByName(name)) objects_->remove(previous);
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->ShallowCopy(recorded_[size_t(index)].second);
+  const bool shown = objects_->add(name, data, QString(), kComputedRadiusScale) != nullptr;
+  stepLabel_->setText(QString("%1 of %2: %3").arg(index + 1).arg(stepCount()).arg(stepName(index)));
+  if (stepSlider_->value() != index) {
+    const QSignalBlocker block(stepSlider_);
+    stepSlider_->setValue(index);
+  }
+  return shown;
 }
 
 }  // namespace medial::gui

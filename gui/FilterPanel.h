@@ -10,9 +10,16 @@
 #include <QWidget>
 
 #include <vtkAlgorithm.h>
+#include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <utility>
+#include <vector>
+
+class QCheckBox;
 class QComboBox;
+class QLabel;
+class QSlider;
 class QProgressBar;
 class QPushButton;
 class QVBoxLayout;
@@ -45,6 +52,12 @@ class FilterPanel : public QWidget {
   void wait() { runner_.wait(); }
   // Whether the last run ended well (false before any run).
   bool lastRunSucceeded() const { return lastOk_; }
+  // "Show steps": the intermediate results of the last run (the papers' figures) when "Record steps" was
+  // on; showStep puts one in the scene as "<input> step" (false out of range).
+  int stepCount() const { return int(recorded_.size()); }
+  QString stepName(int index) const;
+  bool showStep(int index);
+  void setRecordSteps(bool on);
   // The filter run() would start on `input`, with the form's values (null when the panel refuses it).
   vtkSmartPointer<vtkAlgorithm> configuredFilter(SceneObject* input) {
     QString error;
@@ -63,6 +76,13 @@ class FilterPanel : public QWidget {
   virtual void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) = 0;
   // Called when another input is selected (e.g. to suggest parameter values that suit it).
   virtual void inputChanged(SceneObject* /*input*/) {}
+  // A panel whose filter records its steps calls this once: it adds the "Show steps" controls.
+  void enableSteps(const QString& tooltip);
+  // Whether the next run records its steps (for makeFilter).
+  bool recordSteps() const;
+  // The recorded steps of a successful run, in order (name, data).
+  using Steps = std::vector<std::pair<QString, vtkSmartPointer<vtkPolyData>>>;
+  virtual Steps steps(vtkAlgorithm* /*filter*/) { return {}; }
   // Extra controls go below the Run/Cancel row.
   QVBoxLayout* extraLayout() const { return extra_; }
   ObjectList* objects() const { return objects_; }
@@ -86,6 +106,11 @@ class FilterPanel : public QWidget {
   SceneObject* runningInput_ = nullptr;
   bool runAgainPending_ = false;
   bool lastOk_ = false;
+  QCheckBox* record_ = nullptr;
+  QSlider* stepSlider_ = nullptr;
+  QLabel* stepLabel_ = nullptr;
+  Steps recorded_;
+  QString stepsInput_;  // the input the recorded steps belong to
 };
 
 }  // namespace medial::gui

@@ -102,6 +102,8 @@ SkeletonPanel::SkeletonPanel(ObjectList* objects, QWidget* parent)
   auto* row = new QFormLayout;
   row->addRow("Show weights of bone", bone_);
   extraLayout()->addLayout(row);
+  enableSteps("Keep the contracted mesh after every iteration (the paper's Fig. 5, with |LV| and the "
+              "weights of Fig. 7) and the skeleton after the surgery and before the selection");
   connect(bone_, &QSpinBox::valueChanged, this, [this](int bone) {
     if (lastSkeleton_) selectBone(lastSkeleton_, bone);
   });
@@ -134,7 +136,20 @@ vtkSmartPointer<vtkAlgorithm> SkeletonPanel::makeFilter(SceneObject* input, QStr
   filter->SetComputeWeights(f->isOn("ComputeWeights"));
   filter->SetHeatConstant(f->value("HeatConstant"));
   filter->SetSolver(f->choice("Solver").toStdString());
+  filter->SetRecordStages(recordSteps());
   return filter;
+}
+
+FilterPanel::Steps SkeletonPanel::steps(vtkAlgorithm* filter) {
+  auto* contraction = static_cast<vtkMedialContractionSkeleton*>(filter);
+  Steps steps;
+  for (int t = 0; t < contraction->GetNumberOfContractionSteps(); ++t)
+    steps.emplace_back(QString("contraction iteration %1").arg(t), contraction->GetContractionStep(t));
+  if (contraction->GetSurgerySkeleton())
+    steps.emplace_back("skeleton after the surgery (III.B)", contraction->GetSurgerySkeleton());
+  if (contraction->GetUnselectedSkeleton())
+    steps.emplace_back("skeleton before the selection (III.C)", contraction->GetUnselectedSkeleton());
+  return steps;
 }
 
 void SkeletonPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {

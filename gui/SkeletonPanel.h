@@ -32,6 +32,7 @@ class SkeletonPanel : public FilterPanel {
  protected:
   vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) override;
   void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) override;
+  Steps steps(vtkAlgorithm* filter) override;
 
  private:
   QSpinBox* bone_ = nullptr;

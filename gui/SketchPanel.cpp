@@ -137,6 +137,7 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
   });
   rows->addRow(exportButton);
   extraLayout()->addLayout(rows);
+  enableSteps("Keep the skeleton after each step: straight skeleton, BoundedDP, connection, pruning, merging");
   connect(form(), &ParameterForm::valueChanged, this, &SketchPanel::parameterChanged);
   connect(draw_, &QCheckBox::toggled, this, &SketchPanel::drawingToggled);
 }
@@ -294,7 +295,16 @@ vtkSmartPointer<vtkAlgorithm> SketchPanel::makeFilter(SceneObject* input, QStrin
   filter->SetThickness(form()->value("Thickness"));
   filter->SetInflate(form()->isOn("Inflate"));
   filter->SetMergeParts(form()->isOn("MergeParts"));
+  filter->SetRecordStages(recordSteps());
   return filter;
+}
+
+FilterPanel::Steps SketchPanel::steps(vtkAlgorithm* filter) {
+  auto* sketch = static_cast<vtkMedialSketchSkeleton*>(filter);
+  Steps steps;
+  for (const std::string& name : vtkMedialSketchSkeleton::GetStageSkeletonNames())
+    if (vtkPolyData* stage = sketch->GetStageSkeleton(name)) steps.emplace_back(QString::fromStdString(name), stage);
+  return steps;
 }
 
 void SketchPanel::collect(vtkAlgorithm* filter, SceneObject* input, double seconds) {

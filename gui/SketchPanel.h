@@ -58,6 +58,7 @@ class SketchPanel : public FilterPanel {
  protected:
   vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) override;
   void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) override;
+  Steps steps(vtkAlgorithm* filter) override;
   void inputChanged(SceneObject* input) override;
 
  private:

@@ -67,6 +67,8 @@ SqmPanel::SqmPanel(ObjectList* objects, QWidget* parent)
   rows->addRow("Subdivision", subdivision_);
   rows->addRow(live_);
   extraLayout()->addLayout(rows);
+  enableSteps("Keep the branch node polyhedra as generated and after the LIE refinement (bind pose), and the "
+              "joined mesh before subdivision, coloured by node");
   connect(subdivision_, &QSlider::valueChanged, this, &SqmPanel::parameterChanged);
   connect(form(), &ParameterForm::valueChanged, this, &SqmPanel::parameterChanged);
 }
@@ -90,7 +92,19 @@ vtkSmartPointer<vtkAlgorithm> SqmPanel::makeFilter(SceneObject* input, QString&)
   filter->SetFoldRepair(form()->isOn("FoldRepair"));
   filter->SetMergeNodes(form()->isOn("MergeNodes"));
   filter->SetSharpMinimumScale(form()->value("SharpMinimumScale"));
+  filter->SetRecordStages(recordSteps());
   return filter;
+}
+
+FilterPanel::Steps SqmPanel::steps(vtkAlgorithm* filter) {
+  auto* sqm = static_cast<vtkMedialSQM*>(filter);
+  const QStringList names = {"branch node polyhedra (generated)", "branch node polyhedra (LIE refined)",
+                             "base mesh before subdivision"};
+  Steps steps;
+  for (size_t k = 0; k < vtkMedialSQM::GetStageMeshNames().size(); ++k)
+    if (vtkPolyData* stage = sqm->GetStageMesh(vtkMedialSQM::GetStageMeshNames()[k]))
+      steps.emplace_back(names[int(k)], stage);
+  return steps;
 }
 
 void SqmPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {

@@ -19,6 +19,7 @@ class SqmPanel : public FilterPanel {
  protected:
   vtkSmartPointer<vtkAlgorithm> makeFilter(SceneObject* input, QString& error) override;
   void collect(vtkAlgorithm* filter, SceneObject* input, double seconds) override;
+  Steps steps(vtkAlgorithm* filter) override;
 
  private:
   void parameterChanged();

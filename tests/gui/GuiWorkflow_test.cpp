@@ -797,6 +797,41 @@ TEST_F(GuiWorkflow, SketchPartsMoveTurnMirrorAndReconnect) {
   EXPECT_GT(screenshot("bird-mirrored"), 0.02);
 }
 
+// "Show steps" (issue 29): a run with "Record steps" on, then a slider over its intermediate results, each
+// shown in the 3-D view; the contraction's iterations and the sketch's stages.
+TEST_F(GuiWorkflow, ShowStepsStepsThroughTheStagesOfOneRun) {
+  open(dataPath("meshes/torus.off"));
+  SkeletonPanel* skeleton = window->skeletonPanel();
+  skeleton->setRecordSteps(true);
+  ASSERT_TRUE(runThroughUi(skeleton)) << errors.join("\n").toStdString();
+  ASSERT_GE(skeleton->stepCount(), 4);
+  EXPECT_TRUE(skeleton->stepName(0).contains("iteration 0"));
+  EXPECT_TRUE(skeleton->stepName(skeleton->stepCount() - 1).contains("before the selection"));
+  vtkIdType firstPoints = -1;
+  double firstLength = 0, lastMeshLength = 0;
+  for (int step = 0; step < skeleton->stepCount(); ++step) {
+    ASSERT_TRUE(skeleton->showStep(step)) << step;
+    SceneObject* shown = object("torus.off step");
+    ASSERT_NE(shown, nullptr) << step;
+    EXPECT_GT(shown->polyData()->GetNumberOfPoints(), 0) << step;
+    if (step == 0) firstPoints = shown->polyData()->GetNumberOfPoints(), firstLength = shown->polyData()->GetLength();
+    if (shown->polyData()->GetNumberOfPolys() > 0) lastMeshLength = shown->polyData()->GetLength();
+  }
+  EXPECT_EQ(firstPoints, object("torus.off")->polyData()->GetNumberOfPoints()) << "step 0 is the mesh itself";
+  EXPECT_LT(lastMeshLength, firstLength) << "the contraction shrinks the mesh";
+  EXPECT_FALSE(skeleton->showStep(skeleton->stepCount()));
+  EXPECT_GT(screenshot("torus-contraction-step"), 0.01);
+
+  open(dataPath("sketches/hand.txt"));
+  SketchPanel* sketch = window->sketchPanel();
+  sketch->setRecordSteps(true);
+  ASSERT_TRUE(runThroughUi(sketch)) << errors.join("\n").toStdString();
+  ASSERT_EQ(sketch->stepCount(), 5);
+  EXPECT_EQ(sketch->stepName(0), "straight-skeleton");
+  ASSERT_TRUE(sketch->showStep(1));
+  EXPECT_GT(object("hand.txt step")->polyData()->GetNumberOfLines(), 0);
+}
+
 TEST(GuiDialogs, UnreadableFileShowsAnErrorDialog) {
   if (!medial::test::hasDisplay()) GTEST_SKIP() << "no X display: run the tests under xvfb-run -a";
   MainWindow window;  // no error handler: errors go to a QMessageBox
