@@ -56,12 +56,17 @@
 #include <vtkImageSlice.h>
 #include <vtkImageSliceMapper.h>
 #include <vtkMath.h>
+#include <vtkPointData.h>
 #include <vtkProp3DCollection.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkScalarsToColors.h>
 #include <vtkVersion.h>
 #include <vtkVolume.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
 
 namespace medial::gui {
 
@@ -265,6 +270,25 @@ void MainWindow::buildGhostToolBar() {
   ghostOpacity_->setMaximumWidth(160);
   ghostOpacity_->setToolTip("Opacity of an occluder in front of an object of interest (default 0.25)");
   bar->addWidget(ghostOpacity_);
+  bar->addWidget(new QLabel(" Conflicts ", bar));
+  ghostConflict_ = new QComboBox(bar);
+  ghostConflict_->setObjectName("ghostConflict");
+  ghostConflict_->addItems({"Depth sorting", "Gradual importance"});
+  ghostConflict_->setCurrentIndex(scene_->GetGhostPass()->GetConflict());
+  ghostConflict_->setToolTip(
+      "Where objects of interest hide each other (the paper's Fig. 2): the nearest one wins, or the more "
+      "important one shows through the less important, which is ghosted by its importance");
+  bar->addWidget(ghostConflict_);
+  connect(ghostConflict_, &QComboBox::currentIndexChanged, this, [this](int conflict) {
+    scene_->GetGhostPass()->SetConflict(conflict);
+    render();
+  });
+  QAction* map = bar->addAction("Map");
+  map->setObjectName("importanceMap");
+  map->setCheckable(true);
+  map->setToolTip("Show the importance map over the view (the paper's Figs. 2, 4, 6): where the objects of "
+                  "interest project, brighter for the more important");
+  connect(map, &QAction::toggled, this, &MainWindow::setImportanceMapShown);
   QAction* layers = bar->addAction("Layers");
   layers->setObjectName("ghostLayers");
   layers->setCheckable(true);
@@ -277,6 +301,30 @@ void MainWindow::buildGhostToolBar() {
   });
   connect(ghostMode_, &QComboBox::currentIndexChanged, this, &MainWindow::setGhostMode);
   connect(ghostOpacity_, &QSlider::valueChanged, this, [this](int v) { setGhostOpacity(v / 100.0); });
+}
+
+void MainWindow::setImportanceMapShown(bool shown) {
+  scene_->GetGhostPass()->SetKeepImportanceMap(shown);
+  view_->setOverlay(shown ? std::function<QImage()>([this] { return importanceMapImage(); }) : nullptr);
+  render();
+}
+
+QImage MainWindow::importanceMapImage() const {
+  vtkImageData* map = scene_->GetGhostPass()->GetImportanceMap();
+  vtkDataArray* values = map ? map->GetPointData()->GetScalars() : nullptr;
+  if (!values) return {};
+  const int width = map->GetDimensions()[0], height = map->GetDimensions()[1];
+  // Translucent amber, as opaque as importance x coverage; rows flipped (GL's first row is the bottom).
+  QImage image(width, height, QImage::Format_ARGB32_Premultiplied);
+  for (int y = 0; y < height; ++y) {
+    auto* row = reinterpret_cast<QRgb*>(image.scanLine(height - 1 - y));
+    for (int x = 0; x < width; ++x) {
+      const vtkIdType i = vtkIdType(y) * width + x;
+      const double a = 0.7 * std::clamp(values->GetComponent(i, 0) * values->GetComponent(i, 2), 0.0, 1.0);
+      row[x] = qPremultiply(qRgba(255, 180, 0, int(std::lround(255 * a))));
+    }
+  }
+  return image;
 }
 
 void MainWindow::setGhostMode(int mode) {

@@ -4,6 +4,7 @@
 
 #include "SliceViews.h"
 
+#include <QImage>
 #include <QMainWindow>
 
 #include <vtkSmartPointer.h>
@@ -58,6 +59,10 @@ class MainWindow : public QMainWindow {
   int objectCount() const;
   VtkView* view() const { return view_; }
   vtkMedialScene* scene() const;
+  // The ghost view's importance map over the 3-D view (toolbar "Map"), and the last frame's map as an
+  // image (null when none was kept or no object of interest was in view).
+  void setImportanceMapShown(bool shown);
+  QImage importanceMapImage() const;
   ObjectList* objects() const { return objects_; }
   SliceViews* sliceViews() const { return slices_; }
   SkeletonPanel* skeletonPanel() const { return skeleton_; }
@@ -122,6 +127,7 @@ class MainWindow : public QMainWindow {
   QTabWidget* tabs_ = nullptr;
   QPlainTextEdit* log_ = nullptr;
   QProgressBar* progress_ = nullptr;
+  QComboBox* ghostConflict_ = nullptr;
   QComboBox* ghostMode_ = nullptr;
   QSlider* ghostOpacity_ = nullptr;
   QMenu* recentMenu_ = nullptr;

@@ -6,6 +6,7 @@
 #include "MedialErrorCollector.h"
 #include "vtkMedialPolyDataWriter.h"
 #include "vtkMedialRigWriter.h"
+#include "vtkMedialGhostPass.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialSkinBinding.h"
 
@@ -28,6 +29,9 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkXMLImageDataWriter.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace medial::gui {
 
@@ -81,6 +85,11 @@ ObjectList::ObjectList(vtkMedialScene* scene, QWidget* parent) : QWidget(parent)
       const QSignalBlocker block(opacity_);
       opacity_->setValue(static_cast<int>(actor->GetProperty()->GetOpacity() * 100 + 0.5));
     }
+    importance_->setEnabled(object && object->kind != SceneObject::Kind::Volume);
+    if (object) {
+      const QSignalBlocker block(importance_);
+      importance_->setValue(static_cast<int>(std::lround(10 * vtkMedialGhostPass::GetImportance(object->prop))));
+    }
     emit currentChanged(object);
   });
 
@@ -94,11 +103,26 @@ ObjectList::ObjectList(vtkMedialScene* scene, QWidget* parent) : QWidget(parent)
     if (SceneObject* object = current()) setOpacity(object, value / 100.0);
   });
 
+  // The ghost view's importance levels (the paper's Fig. 2): 0 context, 0.1 .. 1 objects of interest; a
+  // more important object shows through a less important one in front of it (gradual conflict rule).
+  importance_ = new QSlider(Qt::Horizontal, this);
+  importance_->setObjectName("objectImportance");
+  importance_->setRange(0, 10);
+  importance_->setPageStep(1);
+  importance_->setTickPosition(QSlider::TicksBelow);
+  importance_->setEnabled(false);
+  importance_->setToolTip("Importance of the selected object in the ghost view: 0 context, 1 most important");
+  connect(importance_, &QSlider::valueChanged, this, [this](int value) {
+    if (SceneObject* object = current()) setImportance(object, value / 10.0);
+  });
+
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   layout->addWidget(tree_);
   layout->addWidget(new QLabel("Opacity", this));
   layout->addWidget(opacity_);
+  layout->addWidget(new QLabel("Importance (ghost view)", this));
+  layout->addWidget(importance_);
 }
 
 ObjectList::~ObjectList() = default;
@@ -232,13 +256,20 @@ void ObjectList::setVisible(SceneObject* object, bool visible) {
   emit sceneChanged();
 }
 
-void ObjectList::setInterest(SceneObject* object, bool interest) {
+void ObjectList::setInterest(SceneObject* object, bool interest) { setImportance(object, interest ? 1.0 : 0.0); }
+
+void ObjectList::setImportance(SceneObject* object, double importance) {
   if (object->kind == SceneObject::Kind::Volume) return;  // the ghost pass cannot use an assembly
-  object->interest = interest;
-  scene_->SetImportance(object->prop, interest ? 1.0 : 0.0);
+  importance = std::clamp(importance, 0.0, 1.0);
+  object->interest = importance > 0;
+  scene_->SetImportance(object->prop, importance);
   if (QTreeWidgetItem* item = itemOf(object)) {
     const QSignalBlocker block(tree_);
-    item->setCheckState(kInterestColumn, interest ? Qt::Checked : Qt::Unchecked);
+    item->setCheckState(kInterestColumn, object->interest ? Qt::Checked : Qt::Unchecked);
+  }
+  if (object == current()) {
+    const QSignalBlocker block(importance_);
+    importance_->setValue(static_cast<int>(std::lround(10 * importance)));
   }
   emit sceneChanged();
 }

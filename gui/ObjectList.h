@@ -44,7 +44,9 @@ class ObjectList : public QWidget {
   std::vector<SceneObject*> ofKind(SceneObject::Kind kind) const;
 
   void setVisible(SceneObject* object, bool visible);
-  void setInterest(SceneObject* object, bool interest);
+  void setInterest(SceneObject* object, bool interest);  // importance 1 or 0
+  // The object's importance in the ghost view, 0 (context) to 1; above 0 it is an object of interest.
+  void setImportance(SceneObject* object, double importance);
   void setColor(SceneObject* object, double r, double g, double b);
   void setOpacity(SceneObject* object, double opacity);
   // Writes the object (mesh: VTP VTK OBJ PLY STL; skeleton also SWC; volume VTI). False on failure.
@@ -78,6 +80,7 @@ class ObjectList : public QWidget {
 
   vtkMedialScene* scene_;
   QTreeWidget* tree_ = nullptr;
+  QSlider* importance_ = nullptr;
   QSlider* opacity_ = nullptr;
   std::vector<std::unique_ptr<SceneObject>> objects_;
   std::function<void(const QString&, const QString&)> report_;

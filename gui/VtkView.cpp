@@ -142,6 +142,13 @@ void VtkView::paintGL() {
   state->Pop();
   state->vtkglBindFramebuffer(kDrawFramebuffer, defaultFramebufferObject());
 
+  if (overlay_) {
+    const QImage image = overlay_();
+    if (!image.isNull()) {
+      QPainter painter(this);
+      painter.drawImage(rect(), image);
+    }
+  }
   if (stroke_.size() > 1) {  // the stroke being drawn, over the picture
     QPainter painter(this);
     painter.setRenderHint(QPainter::Antialiasing);

@@ -3,11 +3,14 @@
 // into its own framebuffers inside Qt's context, and paintGL blits the result into the widget's.
 #pragma once
 
+#include <QImage>
 #include <QOpenGLWidget>
 #include <QPointF>
 #include <QVector>
 
 #include <vtkNew.h>
+
+#include <functional>
 
 class vtkGenericOpenGLRenderWindow;
 class vtkGenericRenderWindowInteractor;
@@ -48,6 +51,9 @@ class VtkView : public QOpenGLWidget {
   bool drawingMode() const { return drawing_; }
   // Events go to `interaction` first (null: the camera only). The view does not own it.
   void setInteraction(ViewInteraction* interaction) { interaction_ = interaction; }
+  // An image painted over the rendered frame, stretched to the view (e.g. the ghost view's importance
+  // map), asked for after each render; null function or null image: none.
+  void setOverlay(std::function<QImage()> overlay) { overlay_ = std::move(overlay); }
 
  signals:
   // Key R: the owner resets the camera its own way.
@@ -82,6 +88,7 @@ class VtkView : public QOpenGLWidget {
   bool initialized_ = false;
   bool drawing_ = false;
   ViewInteraction* interaction_ = nullptr;
+  std::function<QImage()> overlay_;
   QVector<QPointF> stroke_;  // the stroke being drawn
   QPointF pressPosition_;    // where the left button went down (click detection)
   int wheelRemainder_ = 0;   // angle delta not yet turned into wheel steps

@@ -832,6 +832,47 @@ TEST_F(GuiWorkflow, ShowStepsStepsThroughTheStagesOfOneRun) {
   EXPECT_GT(object("hand.txt step")->polyData()->GetNumberOfLines(), 0);
 }
 
+// The ghost view's controls of the paper's Fig. 2: importance levels per object, the conflict rule, and
+// the importance map shown over the view.
+TEST_F(GuiWorkflow, GhostImportanceLevelsConflictRuleAndMap) {
+  open(dataPath("meshes/torus.off"));
+  ASSERT_TRUE(runThroughUi(window->skeletonPanel())) << errors.join("\n").toStdString();
+  SceneObject* skeleton = object("torus.off skeleton");
+  ASSERT_TRUE(skeleton && skeleton->interest);
+  window->objects()->setCurrent(skeleton);
+  auto* importance = window->findChild<QSlider*>("objectImportance");
+  ASSERT_NE(importance, nullptr);
+  EXPECT_EQ(importance->value(), 10);
+  importance->setValue(4);
+  EXPECT_NEAR(vtkMedialGhostPass::GetImportance(skeleton->prop), 0.4, 1e-9);
+  EXPECT_TRUE(skeleton->interest);
+  importance->setValue(0);
+  EXPECT_FALSE(skeleton->interest) << "importance 0 is context";
+  window->objects()->setImportance(skeleton, 0.8);
+  EXPECT_EQ(importance->value(), 8);
+
+  auto* conflict = window->findChild<QComboBox*>("ghostConflict");
+  ASSERT_NE(conflict, nullptr);
+  conflict->setCurrentIndex(vtkMedialGhostPass::DepthSorting);
+  EXPECT_EQ(window->scene()->GetGhostPass()->GetConflict(), vtkMedialGhostPass::DepthSorting);
+  conflict->setCurrentIndex(vtkMedialGhostPass::GradualImportance);
+
+  auto* map = window->findChild<QAction*>("importanceMap");
+  ASSERT_NE(map, nullptr);
+  EXPECT_TRUE(window->importanceMapImage().isNull()) << "no map kept before asked";
+  map->setChecked(true);
+  EXPECT_GT(screenshot("torus-importance-map"), 0.05);
+  const QImage image = window->importanceMapImage();
+  ASSERT_FALSE(image.isNull());
+  int covered = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) covered += qAlpha(image.pixel(x, y)) > 100;
+  EXPECT_GT(covered, image.width() * image.height() / 100) << "the skeleton's projection";
+  EXPECT_LT(covered, image.width() * image.height() / 2);
+  window->view()->grabFramebuffer().save(QString::fromStdString(dir + "/map-overlay.png"));
+  map->setChecked(false);
+}
+
 TEST(GuiDialogs, UnreadableFileShowsAnErrorDialog) {
   if (!medial::test::hasDisplay()) GTEST_SKIP() << "no X display: run the tests under xvfb-run -a";
   MainWindow window;  // no error handler: errors go to a QMessageBox
