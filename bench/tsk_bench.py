@@ -3,6 +3,8 @@
 
 Peers: scikit-image's 3-D skeletonize (Lee et al. thinning), and a distance-map minimal path (Dijkstra on
 26-connected voxels, step cost length / distance-to-wall^2) between the same end points as Medial's axis.
+Beside Medial's centerline, the paper's own curve (the TSK models without Medial's centring passes,
+--centering 0): the paper's Table 2 and Medial's improvement on the same phantoms.
 Per phantom: median seconds of each (over --repeat runs), mean and max distance to the true axis (mm,
 voxels and % of the axis length as in the paper's Table 2), leaving out one radius at each end.
 "colon" is the CT-like colon phantom (build/bin/medial-make-colon-phantom, made in a temporary folder and
@@ -102,10 +104,12 @@ def errors(points, lines, radius, spacing):
     return d.mean(), d.max(), d.mean() / voxel, 100 * d.mean() / length
 
 
-def medial_centerline(image, threshold=None, branches=False):
+def medial_centerline(image, threshold=None, branches=False, centering=None):
     """Medial's points, and the first and last point of each polyline (the peers' path ends)."""
     f = medial.vtkMedialTskCenterline()
     f.SetInputData(image)
+    if centering is not None:
+        f.SetCenteringIterations(centering)
     if threshold:
         f.SetThreshold(*threshold)
     else:
@@ -200,7 +204,8 @@ def main():
     parser.add_argument("names", nargs="*", default=list(RADIUS))
     args = parser.parse_args()
     print("TSK centerline (Medial) vs skimage skeletonize_3d vs distance-map minimal path; median of %d runs" % args.repeat)
-    print("%-12s | %-34s | %-34s | %-34s" % ("phantom", "Medial: s, mean/max mm, vox, %", "skeletonize", "minimal path"))
+    print("%-12s | %-34s | %-34s | %-34s | %-34s" % ("phantom", "Medial: s, mean/max mm, vox, %",
+                                                  "the paper's curve (no centring)", "skeletonize", "minimal path"))
     for name in args.names:
         threshold = None
         if name == "colon":
@@ -219,6 +224,8 @@ def main():
         branches = name == "tree"
         t, (ours, ends) = timed(args.repeat, lambda: medial_centerline(image, threshold, branches))
         row.append((t, errors(ours, axis, radius, spacing)))
+        t, (paper, _) = timed(args.repeat, lambda: medial_centerline(image, threshold, branches, centering=0))
+        row.append((t, errors(paper, axis, radius, spacing)))
         t, skel = timed(args.repeat, lambda: skeleton_points(inside, spacing, origin))
         row.append((t, errors(skel, axis, radius, spacing)))
         t, path = timed(args.repeat, lambda: minimal_path(inside, spacing, origin, ends[0][0], [e[1] for e in ends]))
