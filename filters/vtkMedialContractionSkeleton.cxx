@@ -140,6 +140,8 @@ void vtkMedialContractionSkeleton::KeepStages(const medial::SkeletonByContractio
     mesh->GetFieldData()->AddArray(number("Iteration", double(t)));
     mesh->GetFieldData()->AddArray(number("AreaRatio", step.areaRatio));
     mesh->GetFieldData()->AddArray(number("VolumeRatio", step.volumeRatio));
+    if (t + 1 == result.contractionSteps.size())  // the mesh the surgery collapsed: in which order
+      mesh->GetPointData()->AddArray(medial::intArray("CollapseOrder", result.collapseOrder));
     this->Steps.push_back(mesh);
   }
   this->SurgerySkeleton = medial::polyDataFromSkeleton(result.surgerySkeleton);

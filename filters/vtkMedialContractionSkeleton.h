@@ -110,7 +110,8 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   /// With RecordStages, after an update: step 0 is the contracted mesh as it started (the input, or its
   /// decimation), step t the mesh after iteration t: triangles with point data `Laplacian` (|L V|, the
   /// curvature-flow pull left) and `AttractionWeight` (W_H,i), field data `ContractionWeight` (W_L),
-  /// `Iteration`, `AreaRatio`, `VolumeRatio`. Null out of range.
+  /// `Iteration`, `AreaRatio`, `VolumeRatio`; the last step also `CollapseOrder` (int: when the surgery
+  /// collapsed each vertex, 1 first, 0 for the vertices that became nodes). Null out of range.
   int GetNumberOfContractionSteps() const { return static_cast<int>(this->Steps.size()); }
   vtkPolyData* GetContractionStep(int step) const;
   /// With RecordStages: the curve skeleton straight after the connectivity surgery (III.B), and after the

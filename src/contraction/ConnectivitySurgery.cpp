@@ -22,6 +22,7 @@ class CollapsibleComplex {
         alive_(n_, true),
         version_(n_, 0),
         owner_(n_),
+        collapsedAt_(n_, 0),
         neighbours_(n_),
         vertexFaces_(n_),
         quadric_(n_, Eigen::Matrix4d::Zero()) {
@@ -48,6 +49,8 @@ class CollapsibleComplex {
   }
 
   int vertexCount() const { return n_; }
+  // When vertex i was collapsed (1: first, 0: never: a skeleton node).
+  int collapsedAt(int i) const { return collapsedAt_[i]; }
   int aliveFaces() const { return aliveFaces_; }
   int initialFaces() const { return int(faces_.size()); }
   bool alive(int i) const { return alive_[i]; }
@@ -96,6 +99,7 @@ class CollapsibleComplex {
     unlinkOneWay(j, i);
     quadric_[j] += quadric_[i];
     owner_[i] = j;
+    collapsedAt_[i] = ++collapses_;
     alive_[i] = false;
     neighbours_[i].clear();
     vertexFaces_[i].clear();
@@ -151,6 +155,8 @@ class CollapsibleComplex {
   std::vector<bool> alive_;
   std::vector<unsigned> version_;
   std::vector<int> owner_;
+  std::vector<int> collapsedAt_;
+  int collapses_ = 0;
   std::vector<std::vector<int>> neighbours_;
   std::vector<std::vector<int>> vertexFaces_;
   std::vector<Eigen::Matrix4d> quadric_;
@@ -249,6 +255,8 @@ CurveSkeleton collapseToCurveSkeleton(const Vertices& contracted, const Faces& f
     if (complex.alive(v))
       for (int k : complex.neighbours(v))
         if (v < k) skeleton.edges.emplace_back(nodeOf[size_t(v)], nodeOf[size_t(k)]);
+  skeleton.collapseOrder.resize(size_t(complex.vertexCount()));
+  for (int v = 0; v < complex.vertexCount(); ++v) skeleton.collapseOrder[size_t(v)] = complex.collapsedAt(v);
   skeleton.vertexToNode.resize(size_t(complex.vertexCount()));
   for (int v = 0; v < complex.vertexCount(); ++v)
     skeleton.vertexToNode[size_t(v)] = used[size_t(v)] ? nodeOf[size_t(complex.finalOwner(v))] : -1;

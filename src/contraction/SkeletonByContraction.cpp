@@ -105,6 +105,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
     result.contractionSteps = std::move(contraction.steps);
     result.contractedFaces = coarse.mesh.faces;
     result.surgerySkeleton = skeletonOf(curve);
+    result.collapseOrder = curve.collapseOrder;
   }
   // Back to the input's vertices: each one goes with the coarse vertex that absorbed it.
   result.contracted = mesh.vertices;

@@ -293,6 +293,16 @@ TEST(ContractionSkeleton, RecordedStagesShowTheMeshContractingOntoTheSkeleton) {
   const double size = elephant->GetLength();
   EXPECT_LT(distances[distances.size() / 2], 0.01 * size);
   EXPECT_LT(distances[distances.size() * 9 / 10], 0.03 * size);
+  // The surgery's collapse order on the last step: every vertex but the nodes collapsed once, numbered
+  // 1, 2, ... in order.
+  vtkDataArray* order = last->GetPointData()->GetArray("CollapseOrder");
+  ASSERT_TRUE(order);
+  std::vector<int> collapsed;
+  for (vtkIdType v = 0; v < order->GetNumberOfTuples(); ++v)
+    if (order->GetComponent(v, 0) > 0) collapsed.push_back(int(order->GetComponent(v, 0)));
+  EXPECT_EQ(vtkIdType(collapsed.size()) + surgery->GetNumberOfPoints(), last->GetNumberOfPoints());
+  std::sort(collapsed.begin(), collapsed.end());
+  for (size_t k = 0; k < collapsed.size(); ++k) ASSERT_EQ(collapsed[k], int(k) + 1);
   ASSERT_TRUE(filter->GetUnselectedSkeleton());
   EXPECT_GE(filter->GetUnselectedSkeleton()->GetNumberOfPoints(), filter->GetOutput(0)->GetNumberOfPoints());
 }
