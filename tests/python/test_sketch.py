@@ -40,6 +40,27 @@ class SketchFromPython(unittest.TestCase):
         self.assertGreater(sketch.GetOutput(1).GetNumberOfPolys(), 0, "the inflated mesh")
         self.assertGreater(sqm.GetOutput().GetNumberOfPolys(), 0, "the SQM mesh")
 
+    def test_bird_is_one_watertight_mesh_bound_to_its_skeleton(self):
+        """The character pipeline from Python: sketch -> one mesh -> skin binding -> rig file; and the steps."""
+        reader = medial.vtkMedialReader()
+        reader.SetFileName(os.path.join(SKETCHES, "bird.txt"))
+        sketch = medial.vtkMedialSketchSkeleton()
+        sketch.SetInputConnection(reader.GetOutputPort())
+        sketch.RecordStagesOn()
+        binding = medial.vtkMedialSkinBinding()
+        binding.SetInputConnection(0, sketch.GetOutputPort(1))
+        binding.SetSkeletonConnection(sketch.GetOutputPort(0))
+        binding.Update()
+        regions = vtk.vtkPolyDataConnectivityFilter()
+        regions.SetInputData(sketch.GetOutput(1))
+        regions.SetExtractionModeToAllRegions()
+        regions.Update()
+        self.assertEqual(regions.GetNumberOfExtractedRegions(), 1, "body and wings joined")
+        weights = binding.GetOutput(0).GetPointData().GetArray("SkinWeights")
+        self.assertEqual(weights.GetNumberOfTuples(), sketch.GetOutput(1).GetNumberOfPoints())
+        self.assertEqual(binding.GetNodesOutside(), 0)
+        self.assertIsNotNone(sketch.GetStageSkeleton("straight-skeleton"))
+
     def test_input_without_strokes_is_an_error_with_empty_outputs(self):
         failing = medial.vtkMedialSketchSkeleton()
         failing.SetInputData(vtk.vtkPolyData())
