@@ -20,6 +20,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkTable.h>
+#include <vtkXMLImageDataWriter.h>
 
 #include <cstdio>
 
@@ -27,11 +28,23 @@ namespace medial::cli {
 
 namespace {
 
-// --stages DIR: the paper's intermediate results: voxels.vtp (Layer, Cluster, T), primitive.vtp, the TSK
-// models as tsk-model.vtp (the curve before centring) and tsk-fits.csv (t, x, y, z).
+// --stages DIR: the paper's intermediate results: voxels.vtp (Layer, Cluster, T), labels.vti (the same as
+// label volumes), primitive.vtp, the TSK models as tsk-model.vtp (the curve before centring) and
+// tsk-fits.csv (t, x, y, z).
 void writeStages(vtkMedialTskCenterline* filter, const std::string& dir) {
   for (const std::string& name : vtkMedialTskCenterline::GetStageDataNames())
     if (vtkPolyData* stage = filter->GetStageData(name)) writePolyData(stage, dir + "/" + name + ".vtp");
+  if (vtkImageData* labels = filter->GetStageLabels()) {
+    std::string error;
+    const auto write = [labels](const std::string& temporary, std::string& why) {
+      auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
+      writer->SetFileName(temporary.c_str());
+      writer->SetInputData(labels);
+      if (writer->Write() != 1) why = "cannot write the file";
+      return why.empty();
+    };
+    if (!medial::writeAtomically(dir + "/labels.vti", write, error)) throw Failure(dir + "/labels.vti: " + error);
+  }
   vtkPolyData* model = filter->GetStageData("tsk-model");
   if (!model) return;
   std::string csv = "t,x_mm,y_mm,z_mm\n";

@@ -186,7 +186,8 @@ const std::vector<Command>& commands() {
            number(tsk->GetSectionRays()) +
            ")\n"
            "  --stages DIR              the paper's intermediate results in DIR: voxels.vtp (the structure's\n"
-           "                            voxels with Layer, Cluster and the order T: Figs. 3, 7-8),\n"
+           "                            voxels with Layer, Cluster and the order T: Figs. 3, 7-8), labels.vti\n"
+           "                            (the same as label volumes),\n"
            "                            primitive.vtp (the primitive centerline, Figs. 4-6), tsk-model.vtp\n"
            "                            (the curve before centring) and tsk-fits.csv (x, y, z over t, Figs.\n"
            "                            9-10)\n"

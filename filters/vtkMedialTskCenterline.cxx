@@ -245,6 +245,7 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   }
   const medial::TskCenterlineParameters p = this->MakeParameters();
   this->Stages.clear();
+  this->StageLabels = nullptr;
   const medial::TskCenterlineResult result = medial::tskCenterline(volume, p, [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
@@ -266,6 +267,8 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   if (p.recordStages && !result.stages.voxels.empty()) this->KeepStages(result.stages);
   return 1;
 }
+
+vtkImageData* vtkMedialTskCenterline::GetStageLabels() const { return this->StageLabels; }
 
 vtkPolyData* vtkMedialTskCenterline::GetStageData(const std::string& name) const {
   const auto found = this->Stages.find(name);
@@ -311,4 +314,15 @@ void vtkMedialTskCenterline::KeepStages(const medial::TskStages& stages) {
   vtkSmartPointer<vtkPolyData> model = pointSet(stages.model.point, true);
   model->GetPointData()->AddArray(medial::doubleArray("T", stages.model.t));
   this->Stages["tsk-model"] = model;
+  auto labels = vtkSmartPointer<vtkImageData>::New();
+  labels->SetDimensions(stages.boxSize.data());
+  labels->SetOrigin(stages.boxOrigin.data());
+  labels->SetSpacing(stages.boxSpacing.data());
+  double direction[9];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) direction[3 * r + c] = stages.boxDirection(r, c);
+  labels->SetDirectionMatrix(direction);
+  labels->GetPointData()->SetScalars(medial::intArray("Layer", stages.layerVolume));
+  labels->GetPointData()->AddArray(medial::intArray("Cluster", stages.clusterVolume));
+  this->StageLabels = labels;
 }

@@ -36,6 +36,8 @@ struct TskCenterlineParameters;
 struct TskStages;
 }
 
+class vtkImageData;
+
 class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm {
  public:
   static vtkMedialTskCenterline* New();
@@ -124,6 +126,9 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   vtkGetMacro(RecordStages, bool);
   vtkBooleanMacro(RecordStages, bool);
   vtkPolyData* GetStageData(const std::string& name) const;
+  /// With RecordStages: the Manhattan layers (scalars `Layer`, Fig. 3) and the clusters (`Cluster`, Figs.
+  /// 7-8) as an int label volume over the followed part's box (-1 outside), for the slice views.
+  vtkImageData* GetStageLabels() const;
   static std::vector<std::string> GetStageDataNames() { return {"voxels", "primitive", "tsk-model"}; }
 
   /// Figures of the last update.
@@ -179,6 +184,7 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   int SectionRays;
   bool RecordStages = false;
   std::map<std::string, vtkSmartPointer<vtkPolyData>> Stages;
+  vtkSmartPointer<vtkImageData> StageLabels;
   // Figures of the last update.
   int PrimitiveCenterlinePoints = 0;
   vtkIdType StructureVoxels = 0;

@@ -137,6 +137,14 @@ void keepStages(const BinaryVolume& volume, const TubularClusters& clusters, Tsk
     stages.cluster.push_back(clusters.orderedCluster[k]);
   }
   for (int64_t voxel : clusters.primitive) stages.primitive.push_back(volume.physical(voxel));
+  stages.boxSize = volume.size;
+  stages.boxOrigin = volume.origin;
+  stages.boxSpacing = volume.spacing;
+  stages.boxDirection = volume.direction;
+  stages.layerVolume = layerOf;
+  stages.clusterVolume.assign(layerOf.size(), -1);
+  for (size_t k = 0; k < clusters.orderedVoxels.size(); ++k)
+    stages.clusterVolume[size_t(clusters.orderedVoxels[k])] = clusters.orderedCluster[k];
   stages.primitiveLayer = clusters.primitiveLayer;
   stages.primitiveBorderDistance = clusters.primitiveBorderDistance;
 }

@@ -72,6 +72,12 @@ struct TskStages {
   std::vector<int> primitiveLayer;
   std::vector<float> primitiveBorderDistance;  // mm, six directions
   TskModelSamples model;  // x(t), y(t), z(t) (Figs. 9-10); a voxel's t is its rank / (voxels - 1)
+  // The same layers and clusters as label volumes over the followed part's box (-1 outside the structure
+  // or unreached), for the slice views: voxel (i, j, k) at origin + direction * (spacing .* (i, j, k)).
+  std::array<int, 3> boxSize{0, 0, 0};
+  Eigen::Vector3d boxOrigin = Eigen::Vector3d::Zero(), boxSpacing = Eigen::Vector3d::Ones();
+  Eigen::Matrix3d boxDirection = Eigen::Matrix3d::Identity();
+  std::vector<int> layerVolume, clusterVolume;
 };
 
 struct TskCenterlineResult {

@@ -240,7 +240,7 @@ TEST(Cli, CenterlineWritesThePapersStages) {
   auto r = runCommand(medialCommand("centerline " + volume + " -o " + dir + "/u.vtp --label 1 --stages " + dir +
                                     "/stages --quiet"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const char* name : {"voxels.vtp", "primitive.vtp", "tsk-model.vtp", "tsk-fits.csv"})
+  for (const char* name : {"voxels.vtp", "labels.vti", "primitive.vtp", "tsk-model.vtp", "tsk-fits.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/stages/" + name)) << name;
   std::ifstream csv(dir + "/stages/tsk-fits.csv");
   std::string header;
