@@ -794,6 +794,7 @@ TEST_F(GuiWorkflow, SketchPartsMoveTurnMirrorAndReconnect) {
   const medial::RigSummary summary = medial::readRigSummary(rig);
   ASSERT_TRUE(summary.error.empty()) << summary.error;
   EXPECT_EQ(summary.unweightedVertices, 0);
+  window->resetCamera();
   EXPECT_GT(screenshot("bird-mirrored"), 0.02);
 }
 
