@@ -53,6 +53,8 @@ bool InsideTest::contains(const Eigen::Vector3d& point) const {
 }
 
 bool InsideTest::segmentIsClear(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  // A point sees itself (a mesh vertex lying on a bone: CGAL's segment test refuses a degenerate segment).
+  if (!((b - a).squaredNorm() > 0)) return true;
   // Shrink the segment a little at both ends so that touching the surface at an end point is allowed.
   const Eigen::Vector3d shrink = 1e-6 * (b - a);
   return !tree_->tree.do_intersect(Kernel::Segment_3(toPoint(a + shrink), toPoint(b - shrink)));

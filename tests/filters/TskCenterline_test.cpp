@@ -433,7 +433,8 @@ TEST(TskCenterlineFilter, AGapLongerThanTheMaximumSplitsTheCenterline) {
 TEST(TskCenterlineFilter, RecordedStagesAreThePapersIntermediates) {
   const std::string folder = medial::test::dataPath("volumes/tubes/");
   const auto imageData = read(folder + "helix.nii.gz");
-  const auto axis = vtkPolyData::SafeDownCast(read(folder + "helix-axis.vtp"));
+  const auto axisData = read(folder + "helix-axis.vtp");  // kept: the cast below does not own it
+  auto* axis = vtkPolyData::SafeDownCast(axisData);
   ASSERT_TRUE(axis);
   auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
   filter->SetInputData(imageData);
