@@ -13,6 +13,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QElapsedTimer>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QKeyEvent>
@@ -141,10 +142,12 @@ SkeletonEditor::SkeletonEditor(ObjectList* objects, vtkMedialScene* scene, VtkVi
   auto* redo = new QPushButton("Redo", this);
   auto* remove = new QPushButton("Delete node", this);
   auto* root = new QPushButton("Set root", this);
+  auto* saveButton = new QPushButton("Save...", this);
+  saveButton->setToolTip("Save the edited skeleton (VTP keeps radii and root; SWC for neuron tools)");
   auto* done = new QPushButton("Done", this);
   done->setToolTip("Add the edited skeleton and its mesh to the objects (save or rig them from there)");
   auto* buttons = new QHBoxLayout;
-  for (QPushButton* b : {undo, redo, remove, root, done}) buttons->addWidget(b);
+  for (QPushButton* b : {undo, redo, remove, root, saveButton, done}) buttons->addWidget(b);
   status_ = new QLabel(this);
   status_->setWordWrap(true);
   auto* help = new QLabel(
@@ -181,6 +184,12 @@ SkeletonEditor::SkeletonEditor(ObjectList* objects, vtkMedialScene* scene, VtkVi
     commit(before, "Set root");
   });
   connect(done, &QPushButton::clicked, this, [this] { edit_->setChecked(false); });
+  connect(saveButton, &QPushButton::clicked, this, [this] {
+    if (!editing_) return;
+    const QString path = QFileDialog::getSaveFileName(this, "Save skeleton", sourceName_ + " edited.vtp",
+                                                      "Skeletons (*.vtp *.swc)");
+    if (!path.isEmpty()) save(path);
+  });
 
   skeletonShown_ = vtkSmartPointer<vtkPolyData>::New();
   selectionShown_ = vtkSmartPointer<vtkPolyData>::New();
