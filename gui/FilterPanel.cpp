@@ -1,5 +1,6 @@
 #include "FilterPanel.h"
 
+#include "NodeColours.h"
 #include "ObjectList.h"
 
 #include <QCheckBox>
@@ -13,7 +14,10 @@
 #include <QSlider>
 #include <QVBoxLayout>
 
+#include <vtkActor.h>
+#include <vtkDataArray.h>
 #include <vtkDataObject.h>
+#include <vtkPointData.h>
 
 #include <algorithm>
 
@@ -195,13 +199,19 @@ bool FilterPanel::showStep(int index) {
   if (SceneObject* previous = objects_->findByName(name)) objects_->remove(previous);
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->ShallowCopy(recorded_[size_t(index)].second);
-  const bool shown = objects_->add(name, data, QString(), kComputedRadiusScale) != nullptr;
+  SceneObject* shown = objects_->add(name, data, QString(), kComputedRadiusScale);
+  // A stage labelled per point (SQM's polyhedra by node, the TSK voxels by cluster) in a colour per label.
+  for (const char* label : {"SkeletonNode", "Cluster"})
+    if (vtkDataArray* ids = data->GetPointData()->GetArray(label); ids && shown && data->GetNumberOfPolys() + data->GetNumberOfVerts() > 0) {
+      colourByLabel(vtkActor::SafeDownCast(shown->prop), label, int(ids->GetRange()[1]) + 1);
+      break;
+    }
   stepLabel_->setText(QString("%1 of %2: %3").arg(index + 1).arg(stepCount()).arg(stepName(index)));
   if (stepSlider_->value() != index) {
     const QSignalBlocker block(stepSlider_);
     stepSlider_->setValue(index);
   }
-  return shown;
+  return shown != nullptr;
 }
 
 }  // namespace medial::gui

@@ -1,5 +1,7 @@
 #include "SkeletonPanel.h"
 
+#include "NodeColours.h"
+
 #include "FilterDefaults.h"
 #include "ObjectList.h"
 #include "vtkMedialContractionSkeleton.h"
@@ -65,21 +67,6 @@ std::vector<Parameter> contractionParameters() {
       choiceOf("Solver", "Solver", vtkMedialContractionSkeleton::GetSolverNames(), f->GetSolver(),
                "Sparse solver of the normal equations (5)"),
   };
-}
-
-// Distinct colours for segment ids (golden-ratio hues), so that neighbouring nodes differ.
-vtkSmartPointer<vtkLookupTable> segmentColours(int count) {
-  auto table = vtkSmartPointer<vtkLookupTable>::New();
-  table->SetNumberOfTableValues(std::max(count, 1));
-  double hue = 0.1;
-  for (int i = 0; i < std::max(count, 1); ++i, hue += 0.618034) {
-    hue -= static_cast<int>(hue);
-    double rgb[3];
-    vtkMath::HSVToRGB(hue, 0.55, 0.95, rgb, rgb + 1, rgb + 2);
-    table->SetTableValue(i, rgb[0], rgb[1], rgb[2]);
-  }
-  table->SetTableRange(0, std::max(count - 1, 1));
-  return table;
 }
 
 vtkSmartPointer<vtkLookupTable> weightColours() {
@@ -204,10 +191,7 @@ bool SkeletonPanel::selectBone(SceneObject* skeleton, int bone) {
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SetColorModeToMapScalars();
   if (bone < 0) {
-    const int nodes = static_cast<int>(skeleton->polyData()->GetNumberOfPoints());
-    mapper->SetLookupTable(segmentColours(nodes));
-    mapper->ColorByArrayComponent("SkeletonNode", 0);
-    mapper->SetScalarRange(0, std::max(nodes - 1, 1));
+    colourByLabel(actor, "SkeletonNode", static_cast<int>(skeleton->polyData()->GetNumberOfPoints()));
   } else {
     mapper->SetLookupTable(weightColours());
     mapper->ColorByArrayComponent("SkinWeights", bone);

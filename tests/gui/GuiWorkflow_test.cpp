@@ -823,6 +823,19 @@ TEST_F(GuiWorkflow, ShowStepsStepsThroughTheStagesOfOneRun) {
   EXPECT_FALSE(skeleton->showStep(skeleton->stepCount()));
   EXPECT_GT(screenshot("torus-contraction-step"), 0.01);
 
+  // SQM's branch node polyhedra of the torus's skeleton, coloured by node.
+  SqmPanel* sqm = window->sqmPanel();
+  sqm->setInput(object("torus.off skeleton"));
+  sqm->setRecordSteps(true);
+  ASSERT_TRUE(runThroughUi(sqm)) << errors.join("\n").toStdString();
+  ASSERT_EQ(sqm->stepCount(), 3);
+  ASSERT_TRUE(sqm->showStep(2));
+  SceneObject* base = object("torus.off skeleton step");
+  ASSERT_NE(base, nullptr);
+  vtkMapper* mapper = vtkActor::SafeDownCast(base->prop)->GetMapper();
+  EXPECT_TRUE(mapper->GetScalarVisibility());
+  EXPECT_STREQ(mapper->GetArrayName(), "SkeletonNode");
+
   open(dataPath("sketches/hand.txt"));
   SketchPanel* sketch = window->sketchPanel();
   sketch->setRecordSteps(true);
