@@ -10,7 +10,6 @@
 #include "Timings.h"
 #include "WriteOutput.h"
 
-#include "MedialErrorCollector.h"
 #include "vtkMedialRigWriter.h"
 #include "vtkMedialSkinBinding.h"
 
@@ -59,11 +58,7 @@ int runRig(const std::vector<std::string>& args) {
 
   timings.start("write");
   if (!weights.empty()) writePolyData(binding->GetOutput(0), weights);
-  auto errors = medial::ErrorCollector::Watch(writer);
-  writer->SetFileName(output.c_str());
-  writer->SetInputData(0, binding->GetOutput(0));
-  writer->SetSkeletonData(binding->GetOutput(1));
-  if (!writer->Write() || errors->HasErrors()) throw Failure(errors->Joined());
+  writeRig(writer, binding->GetOutput(0), binding->GetOutput(1), output);
   timings.stop();
   if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
   return kSuccess;

@@ -9,7 +9,6 @@
 #include "WriteOutput.h"
 #include "Timings.h"
 
-#include "MedialErrorCollector.h"
 #include "vtkMedialContractionSkeleton.h"
 #include "vtkMedialRigWriter.h"
 
@@ -123,14 +122,8 @@ int runSkeleton(const std::vector<std::string>& args) {
   if (!segmentation.empty()) writePolyData(filter->GetOutput(1), segmentation);
   if (!contracted.empty()) writePolyData(contractedMesh(filter->GetOutput(1)), contracted);
   if (!stepsDir.empty()) writeStages(filter, stepsDir);
-  if (!rig.empty()) {
-    auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
-    auto rigErrors = medial::ErrorCollector::Watch(writer);
-    writer->SetFileName(rig.c_str());
-    writer->SetInputData(0, filter->GetOutput(1));
-    writer->SetSkeletonData(filter->GetOutput(0));
-    if (!writer->Write() || rigErrors->HasErrors()) throw Failure(rigErrors->Joined());
-  }
+  if (!rig.empty())
+    writeRig(vtkSmartPointer<vtkMedialRigWriter>::New(), filter->GetOutput(1), filter->GetOutput(0), rig);
   timings.stop();
   if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
   return kSuccess;

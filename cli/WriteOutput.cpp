@@ -5,6 +5,7 @@
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"
 #include "vtkMedialPolyDataWriter.h"
+#include "vtkMedialRigWriter.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -26,6 +27,14 @@ void requireWritableExtension(const std::string& path, const char* option) {
   if (!vtkMedialPolyDataWriter::CanWriteFile(path.c_str()))
     throw UsageError(std::string(option) + " must end in one of " + vtkMedialPolyDataWriter::GetExtensions() +
                      ": " + path);
+}
+
+void writeRig(vtkMedialRigWriter* writer, vtkPolyData* mesh, vtkPolyData* skeleton, const std::string& path) {
+  auto errors = medial::ErrorCollector::Watch(writer);
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(0, mesh);
+  writer->SetSkeletonData(skeleton);
+  if (!writer->Write() || errors->HasErrors()) throw Failure(errors->Joined());
 }
 
 void writeText(const std::string& text, const std::string& path) {

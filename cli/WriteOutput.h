@@ -3,6 +3,7 @@
 
 #include <string>
 
+class vtkMedialRigWriter;
 class vtkPolyData;
 
 namespace medial::cli {
@@ -12,6 +13,10 @@ void writePolyData(vtkPolyData* data, const std::string& path);
 
 // Throws UsageError naming `option` when vtkMedialPolyDataWriter cannot write `path`'s extension.
 void requireWritableExtension(const std::string& path, const char* option);
+
+// Writes the skinned mesh (point data SkinWeights) and its skeleton as a rig through `writer` (configured
+// by the caller: MaxInfluences); throws Failure with the writer's errors.
+void writeRig(vtkMedialRigWriter* writer, vtkPolyData* mesh, vtkPolyData* skeleton, const std::string& path);
 
 // Writes `text` to `path` atomically; throws Failure naming the file.
 void writeText(const std::string& text, const std::string& path);

@@ -6,11 +6,11 @@
 #include "MedialFileNames.h"
 #include "MedialSketchData.h"
 #include "MedialSkeletonData.h"
+#include "MedialSkeletonTubes.h"
 #include "MedialXDisplay.h"
 #include "vtkMedialGhostPass.h"
 
 #include <vtkActor.h>
-#include <vtkAppendPolyData.h>
 #include <vtkAssembly.h>
 #include <vtkVolume.h>
 #include <vtkCamera.h>
@@ -18,7 +18,6 @@
 #include <vtkCleanPolyData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
-#include <vtkGlyph3D.h>
 #include <vtkImageData.h>
 #include <vtkImageDataOutlineFilter.h>
 #include <vtkImageProperty.h>
@@ -35,8 +34,6 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkSphereSource.h>
-#include <vtkTubeFilter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
@@ -196,30 +193,7 @@ vtkProp3D* vtkMedialScene::AddSkeleton(vtkPolyData* skeleton, const double rgb[3
   withRadius->GetPointData()->SetScalars(radius);
 
   // Edges as truncated cones (radius interpolated between the two nodes), nodes as spheres.
-  auto tubes = vtkSmartPointer<vtkTubeFilter>::New();
-  tubes->SetInputData(withRadius);
-  tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
-  tubes->SetNumberOfSides(24);
-  tubes->CappingOn();
-  auto sphere = vtkSmartPointer<vtkSphereSource>::New();
-  sphere->SetRadius(1.0);
-  sphere->SetThetaResolution(24);
-  sphere->SetPhiResolution(16);
-  auto balls = vtkSmartPointer<vtkGlyph3D>::New();
-  balls->SetInputData(withRadius);
-  balls->SetSourceConnection(sphere->GetOutputPort());
-  balls->SetScaleModeToScaleByScalar();
-  balls->SetScaleFactor(1.0);
-  balls->OrientOff();
-  auto both = vtkSmartPointer<vtkAppendPolyData>::New();
-  both->AddInputConnection(tubes->GetOutputPort());
-  both->AddInputConnection(balls->GetOutputPort());
-
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputConnection(both->GetOutputPort());
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
+  vtkSmartPointer<vtkActor> actor = medial::skeletonTubesActor(withRadius, 24);
   actor->GetProperty()->SetColor(rgb[0], rgb[1], rgb[2]);
   actor->GetProperty()->SetSpecular(0.4);
   actor->GetProperty()->SetSpecularPower(40);

@@ -5,6 +5,7 @@
 
 #include "MedialErrorCollector.h"
 #include "MedialSkeletonData.h"
+#include "MedialSkeletonTubes.h"
 #include "skeleton/SkeletonEdits.h"
 #include "vtkMedialPolyDataWriter.h"
 #include "vtkMedialSQM.h"
@@ -26,19 +27,15 @@
 #include <QWheelEvent>
 
 #include <vtkActor.h>
-#include <vtkAppendPolyData.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
-#include <vtkGlyph3D.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
-#include <vtkSphereSource.h>
-#include <vtkTubeFilter.h>
 
 #include <cmath>
 
@@ -72,34 +69,6 @@ class EditStep : public QUndoCommand {
   int node_;
   bool radius_;
 };
-
-// The pipeline that draws a skeleton polydata (points, lines, point scalars = drawn radius) as tubes and
-// balls.
-vtkSmartPointer<vtkActor> tubesAndBalls(vtkPolyData* skeleton, int sides) {
-  auto tubes = vtkSmartPointer<vtkTubeFilter>::New();
-  tubes->SetInputData(skeleton);
-  tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
-  tubes->SetNumberOfSides(sides);
-  tubes->CappingOn();
-  auto sphere = vtkSmartPointer<vtkSphereSource>::New();
-  sphere->SetThetaResolution(sides);
-  sphere->SetPhiResolution(sides / 2 + 2);
-  auto balls = vtkSmartPointer<vtkGlyph3D>::New();
-  balls->SetInputData(skeleton);
-  balls->SetSourceConnection(sphere->GetOutputPort());
-  balls->SetScaleModeToScaleByScalar();
-  balls->SetScaleFactor(2.0);  // the sphere source's radius is 0.5
-  balls->OrientOff();
-  auto both = vtkSmartPointer<vtkAppendPolyData>::New();
-  both->AddInputConnection(tubes->GetOutputPort());
-  both->AddInputConnection(balls->GetOutputPort());
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputConnection(both->GetOutputPort());
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  return actor;
-}
 
 // Points, lines and a drawn radius (scale x Radius) of `nodes` of the skeleton.
 void fillShown(vtkPolyData* shown, const Skeleton& s, const std::vector<int>& nodes, double scale, bool lines) {
@@ -194,9 +163,9 @@ SkeletonEditor::SkeletonEditor(ObjectList* objects, vtkMedialScene* scene, VtkVi
   skeletonShown_ = vtkSmartPointer<vtkPolyData>::New();
   selectionShown_ = vtkSmartPointer<vtkPolyData>::New();
   meshShown_ = vtkSmartPointer<vtkPolyData>::New();
-  skeletonActor_ = tubesAndBalls(skeletonShown_, 16);
+  skeletonActor_ = skeletonTubesActor(skeletonShown_, 16);
   skeletonActor_->GetProperty()->SetColor(0.85, 0.3, 0.25);
-  selectionActor_ = tubesAndBalls(selectionShown_, 16);
+  selectionActor_ = skeletonTubesActor(selectionShown_, 16);
   selectionActor_->GetProperty()->SetColor(1.0, 0.85, 0.1);
   auto meshMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   meshMapper->SetInputData(meshShown_);
