@@ -1,6 +1,6 @@
 // `medial sqm SKELETON.vtp|.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing NAME] [--capsule]
 //              [--triangle-fans] [--ring-vertices N] [--subdivide K] [--sharp-scale S] [--no-fold-repair]
-//              [--no-merge] [--stages DIR]`
+//              [--no-merge] [--union] [--stages DIR]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
@@ -32,6 +32,25 @@ void countTable1(vtkMedialSQM* filter, Timings& timings) {
   timings.count("sqm", "quads", filter->GetQuads());
   timings.count("sqm", "triangles", filter->GetTriangles());
   timings.count("sqm", "irregular_vertices", filter->GetIrregularVertices());
+  timings.count("sqm", "overlapping_face_pairs", filter->GetOverlappingFacePairs());
+  timings.count("sqm", "overlapping_node_pairs", filter->GetOverlappingNodePairs());
+}
+
+// Overlapping tubes make a mesh that bounds no volume: say so, and what --union did or would do.
+void noteOverlaps(vtkMedialSQM* filter) {
+  const int nodes = filter->GetOverlappingNodePairs(), faces = filter->GetOverlappingFacePairs();
+  if (faces == 0) return;
+  if (filter->GetUnion())
+    std::fprintf(stderr,
+                 "medial sqm: note: tubes overlapped at %d pair%s of nodes (%d pairs of faces cutting each other); "
+                 "the union cut %d polygons along the intersection curves and removed %d inside it\n",
+                 nodes, nodes == 1 ? "" : "s", faces, filter->GetUnionCutPolygons(),
+                 filter->GetUnionRemovedPolygons());
+  else
+    std::fprintf(stderr,
+                 "medial sqm: note: tubes overlap at %d pair%s of nodes (%d pairs of faces cut each other): the "
+                 "mesh bounds no volume; --union makes it one closed surface without self-intersections\n",
+                 nodes, nodes == 1 ? "" : "s", faces);
 }
 
 }  // namespace
@@ -40,7 +59,7 @@ int runSqm(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
       args,
       {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale", "--stages"},
-       {"--capsule", "--triangle-fans", "--no-fold-repair", "--no-merge", "--quiet", "--timings"}});
+       {"--capsule", "--triangle-fans", "--no-fold-repair", "--no-merge", "--union", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sqm needs exactly one SKELETON file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -59,6 +78,8 @@ int runSqm(const std::vector<std::string>& args) {
   if (parsed.has("--triangle-fans")) filter->PairTrianglesOff();
   if (parsed.has("--no-fold-repair")) filter->FoldRepairOff();
   if (parsed.has("--no-merge")) filter->MergeNodesOff();
+  filter->CountOverlapsOn();
+  if (parsed.has("--union")) filter->UnionOn();
   const std::string stages = parsed.value("--stages");
   if (parsed.has("--stages")) {
     makeOutputDirectory(stages, "--stages");
@@ -86,6 +107,8 @@ int runSqm(const std::vector<std::string>& args) {
     std::fprintf(stderr,
                  "medial sqm: note: %d refined vert%s moved off the swept spheres, where faces cut each other\n",
                  filter->GetFoldRepairedVertices(), filter->GetFoldRepairedVertices() == 1 ? "ex" : "ices");
+
+  noteOverlaps(filter);
 
   timings.start("write");
   writePolyData(filter->GetOutput(), output);

@@ -198,7 +198,7 @@ const std::vector<Command>& commands() {
        "usage: medial sqm SKELETON.vtp|SKELETON.swc -o MESH.vtp|.obj|.ply [--smoothing NAME] [--pairing "
        "NAME]\n"
        "                  [--capsule] [--triangle-fans] [--ring-vertices N] [--subdivide K]\n"
-       "                  [--sharp-scale S] [--no-fold-repair] [--no-merge] [--stages DIR]\n"
+       "                  [--sharp-scale S] [--no-fold-repair] [--no-merge] [--union] [--stages DIR]\n"
        "                  [--quiet] [--timings]\n\n"
        "Turns a skeleton with a Radius per node into a closed manifold mesh of quads (a triangle only where\n"
        "a leaf's or a cycle's ring is odd), by SQM with the extensions of the CESCG 2014 paper (re-rooting,\n"
@@ -226,15 +226,19 @@ const std::vector<Command>& commands() {
            "                            the base mesh until none do)\n"
            "  --no-merge                do not merge a node lying inside a neighbouring branch node's\n"
            "                            sphere into it: such a skeleton is then an error naming the node\n"
+           "  --union                   where tubes of parts that are not neighbours overlap, output the\n"
+           "                            boundary of their union: one closed surface without self-\n"
+           "                            intersections, triangles along the intersection curves (without\n"
+           "                            it, overlaps are counted and noted on stderr)\n"
            "  --stages DIR              the papers' intermediate meshes in DIR: polyhedra.vtp (every branch\n"
            "                            node polyhedron as generated), refined-polyhedra.vtp (after the LIE\n"
            "                            refinement; both in the straightened bind pose), base.vtp (joined,\n"
            "                            before subdivision); point data SkeletonNode\n"
            "  --quiet                   no progress line\n"
            "  --timings                 print stage times (straightening, generation, refinement, joining,\n"
-           "                            skinning, subdivision, repairs) and the paper's Table 1 counts\n"
-           "                            (branch, connection, leaf and merged nodes, quads, triangles,\n"
-           "                            irregular vertices) as JSON on stdout\n",
+           "                            skinning, subdivision, repairs, union) and the paper's Table 1\n"
+           "                            counts (branch, connection, leaf and merged nodes, quads, triangles,\n"
+           "                            irregular vertices; overlapping face and node pairs) as JSON on stdout\n",
        runSqm},
       {"sketch", "animatable skeleton and inflated mesh of closed 2-D strokes",
        "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp] [--simplify ES] [--merge EM]\n"

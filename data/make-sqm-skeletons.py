@@ -9,9 +9,15 @@
     leafroot.vtp    a branching skeleton whose Root is a leaf (extension 1)
     cycle.vtp       14 nodes: a loop of 10 with a tail of 4 (extension 5)
     pretzel.vtp     34 nodes, three independent cycles: a loop crossed by two chords at different heights
+
+and the skeletons whose tubes overlap (under data/skeletons/overlapping/, for `medial sqm --union`):
+
+    crossing.vtp    two straight tubes of radius 0.5 crossing each other (two components)
+    dense-tree.vtp  150 nodes, a random tree grown in a box, radii 0.2-1.0: branches pass through others
 """
 import math
 import os
+import random
 
 import vtk
 
@@ -211,6 +217,42 @@ def pretzel():
     return b.polydata(ring[0])
 
 
+def crossing():
+    b = Builder()
+    first = b.node((-3, 0, 0), 0.5)
+    b.chain(first, line((-3, 0, 0), (1, 0, 0), 6, 1.0), [0.5] * 6)
+    second = b.node((0.5, -3, 0.3), 0.5)
+    b.chain(second, line((0.5, -3, 0.3), (0, 1, 0), 6, 1.0), [0.5] * 6)
+    return b.polydata(first)
+
+
+def dense_tree(count=150, seed=7):
+    """A tree grown by attaching each node to a random earlier one (recent ones more often, so that branches
+    grow long), a step of 1.4-2.0 in a direction at least 45 degrees from the node's other edges, kept
+    inside a box of side 9: branches of different parts cross. Radii uniform in [0.2, 1.0]."""
+    rng = random.Random(seed)
+    b = Builder()
+    b.node((0, 0, 0), rng.uniform(0.2, 1.0))
+    directions = {0: []}
+    while len(b.nodes) < count:
+        parent = len(b.nodes) - 1 - int(len(b.nodes) * rng.random() ** 3)
+        if len(directions[parent]) >= 3:
+            continue
+        d = [rng.gauss(0, 1) for _ in range(3)]
+        n = math.sqrt(sum(c * c for c in d))
+        d = [c / n for c in d]
+        if any(sum(a * c for a, c in zip(d, e)) > math.cos(math.radians(45)) for e in directions[parent]):
+            continue
+        step = rng.uniform(1.4, 2.0)
+        p = [b.nodes[parent][i] + step * d[i] for i in range(3)]
+        if any(abs(c) > 4.5 for c in p):
+            continue
+        child = b.node(p, rng.uniform(0.2, 1.0), parent)
+        directions[parent].append(d)
+        directions[child] = [[-c for c in d]]
+    return b.polydata(0)
+
+
 def write_vtp(polydata, path):
     writer = vtk.vtkXMLPolyDataWriter()
     writer.SetFileName(path)
@@ -224,6 +266,12 @@ if __name__ == "__main__":
     os.makedirs(folder, exist_ok=True)
     for name, make in (("worm", worm), ("humanoid", humanoid), ("octopus", octopus), ("quadruped", quadruped),
                        ("fish", fish), ("leafroot", leafroot), ("cycle", cycle), ("pretzel", pretzel)):
+        skeleton = make()
+        write_vtp(skeleton, os.path.join(folder, name + ".vtp"))
+        print("%-10s %4d nodes" % (name, skeleton.GetNumberOfPoints()))
+    folder = os.path.join(HERE, "skeletons", "overlapping")
+    os.makedirs(folder, exist_ok=True)
+    for name, make in (("crossing", crossing), ("dense-tree", dense_tree)):
         skeleton = make()
         write_vtp(skeleton, os.path.join(folder, name + ".vtp"))
         print("%-10s %4d nodes" % (name, skeleton.GetNumberOfPoints()))

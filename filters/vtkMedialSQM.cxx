@@ -30,6 +30,8 @@ void vtkMedialSQM::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "FoldRepair: " << this->FoldRepair << "\n";
   os << indent << "RecordStages: " << this->RecordStages << "\n";
   os << indent << "MergeNodes: " << this->MergeNodes << "\n";
+  os << indent << "Union: " << this->Union << "\n";
+  os << indent << "CountOverlaps: " << this->CountOverlaps << "\n";
 }
 
 vtkMedialSQM::vtkMedialSQM() {
@@ -44,12 +46,14 @@ vtkMedialSQM::vtkMedialSQM() {
   this->SharpMinimumScale = defaults.sharpScaling.minimumScale;
   this->FoldRepair = defaults.foldRepair;
   this->MergeNodes = defaults.mergeNodes;
+  this->Union = defaults.unite;
+  this->CountOverlaps = defaults.countOverlaps;
   this->Seconds.assign(GetStageNames().size(), 0.0);
   this->Stages.clear();
 }
 
 std::vector<std::string> vtkMedialSQM::GetStageNames() {
-  return {"straightening", "generation", "refinement", "joining", "skinning", "subdivision", "repairs"};
+  return {"straightening", "generation", "refinement", "joining", "skinning", "subdivision", "repairs", "union"};
 }
 
 double vtkMedialSQM::GetStageSeconds(const std::string& stage) const {
@@ -71,6 +75,8 @@ medial::SqmParameters vtkMedialSQM::MakeParameters() const {
   p.sharpScaling.minimumScale = this->SharpMinimumScale;
   p.foldRepair = this->FoldRepair;
   p.mergeNodes = this->MergeNodes;
+  p.unite = this->Union;
+  p.countOverlaps = this->CountOverlaps;
   p.recordStages = this->RecordStages;
   return p;
 }
@@ -115,16 +121,21 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   this->MergedNodes = this->FoldRepairedVertices = 0;
   this->BranchNodes = this->ConnectionNodes = this->LeafNodes = this->IrregularVertices = 0;
   this->Quads = this->Triangles = 0;
+  this->OverlappingFacePairs = this->OverlappingNodePairs = this->UnionCutPolygons = this->UnionRemovedPolygons = 0;
   this->Seconds.assign(GetStageNames().size(), 0.0);
   this->Stages.clear();
   const medial::SqmResult result = medial::sqmMesh(skeleton, this->MakeParameters(), [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
   });
+  this->OverlappingFacePairs = result.overlaps.facePairs;
+  this->OverlappingNodePairs = result.overlaps.nodePairs;
   if (!result.ok()) {
     vtkErrorMacro(<< result.error);
     return 0;
   }
+  this->UnionCutPolygons = result.unionResult.cutPolygons;
+  this->UnionRemovedPolygons = result.unionResult.removedPolygons;
   this->MergedNodes = result.mergedNodes;
   this->FoldRepairedVertices = result.foldRepairedVertices;
   this->BranchNodes = result.branchNodes;
@@ -135,7 +146,7 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   this->Triangles = result.mesh.triangleCount();
   this->Seconds = {result.straighteningSeconds, result.generationSeconds, result.refinementSeconds,
                    result.joiningSeconds,       result.placementSeconds,  result.subdivisionSeconds,
-                   result.repairSeconds};
+                   result.repairSeconds,        result.unionSeconds};
   // Points and polygons only: the field data the pipeline passed on from the input (`Root`) stays.
   const vtkSmartPointer<vtkPolyData> mesh =
       medial::polyDataFromPolygons(result.mesh.vertices, result.mesh.faces);

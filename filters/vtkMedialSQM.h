@@ -76,6 +76,20 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkGetMacro(FoldRepair, bool);
   vtkBooleanMacro(FoldRepair, bool);
 
+  /// Where tubes of parts that are not neighbours overlap (their faces cut each other, so that the mesh
+  /// bounds no volume), replace the mesh by the boundary of the union of the tubes' volumes: one closed
+  /// 2-manifold without self-intersection, quads kept away from the intersection curves, triangles along
+  /// them, `SkeletonNode` carried over (default off; a mesh without overlaps is left as it is). An overlap
+  /// the union cannot resolve (tubes touching along a line) is an error. Implements medial::unionSqmMesh.
+  vtkSetMacro(Union, bool);
+  vtkGetMacro(Union, bool);
+  vtkBooleanMacro(Union, bool);
+  /// Count the faces that cut each other (GetOverlappingFacePairs, GetOverlappingNodePairs) without the
+  /// union (default off: it costs a self-intersection test; Union counts them anyway).
+  vtkSetMacro(CountOverlaps, bool);
+  vtkGetMacro(CountOverlaps, bool);
+  vtkBooleanMacro(CountOverlaps, bool);
+
   /// The repair that merges a node lying inside a neighbouring branch node's sphere into it (default on).
   /// Off, such a skeleton is an error naming the node (SQM cannot join its tube to the polyhedron).
   vtkSetMacro(MergeNodes, bool);
@@ -106,8 +120,16 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkGetMacro(IrregularVertices, int);
   vtkGetMacro(Quads, int);
   vtkGetMacro(Triangles, int);
+  // After an update with Union or CountOverlaps: the pairs of polygons that cut each other and the pairs of
+  // skeleton nodes they belong to (before the union); with Union, the polygons cut along the intersection
+  // curves and those removed (inside the union).
+  vtkGetMacro(OverlappingFacePairs, int);
+  vtkGetMacro(OverlappingNodePairs, int);
+  vtkGetMacro(UnionCutPolygons, int);
+  vtkGetMacro(UnionRemovedPolygons, int);
   /// After an update: the seconds of a stage of GetStageNames() (the paper's Table 1: straightening,
-  /// generation and refinement of the branch node polyhedra, joining, skinning, subdivision; and repairs).
+  /// generation and refinement of the branch node polyhedra, joining, skinning, subdivision; and repairs,
+  /// and the union with the counting of overlaps).
   double GetStageSeconds(const std::string& stage) const;
   static std::vector<std::string> GetStageNames();
 
@@ -133,11 +155,14 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   double SharpMinimumScale;
   bool FoldRepair;
   bool MergeNodes;
+  bool Union;
+  bool CountOverlaps;
   bool RecordStages = false;
   std::map<std::string, vtkSmartPointer<vtkPolyData>> Stages;
   // Figures of the last update.
   int MergedNodes = 0;
   int FoldRepairedVertices = 0;
   int BranchNodes = 0, ConnectionNodes = 0, LeafNodes = 0, IrregularVertices = 0, Quads = 0, Triangles = 0;
+  int OverlappingFacePairs = 0, OverlappingNodePairs = 0, UnionCutPolygons = 0, UnionRemovedPolygons = 0;
   std::vector<double> Seconds;  // per stage of GetStageNames()
 };

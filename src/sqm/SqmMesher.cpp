@@ -571,6 +571,13 @@ int SqmMesh::quadCount() const {
       std::count_if(faces.begin(), faces.end(), [](const std::vector<int>& f) { return f.size() == 4; }));
 }
 
+int SqmMesh::faceNode(size_t f) const {
+  std::map<int, int> votes;
+  for (const int v : faces[f]) ++votes[vertexNode[size_t(v)]];
+  return std::max_element(votes.begin(), votes.end(), [](const auto& a, const auto& b) { return a.second < b.second; })
+      ->first;
+}
+
 SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
                   const std::function<bool(double)>& progress) {
   SqmResult result;
@@ -632,6 +639,8 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
   if (p.pairTriangles)
     result.pairedTriangles = pairStripTriangles(builder.mesh.vertices, builder.mesh.faces, builder.strips);
   result.repairSeconds += repairs.seconds();
+  // Each vertex's node in the input's numbering, which the prepared skeleton (the refinement's) extends
+  // by its capsule and cycle-cut nodes.
   result.mesh = std::move(builder.mesh);
   result.mesh.vertexNode.resize(builder.owner.size());
   for (size_t v = 0; v < builder.owner.size(); ++v)
@@ -650,6 +659,18 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
                   &result.foldRepairedVertices);
     for (int& node : result.mesh.vertexNode) node = prepared.origin[size_t(node)];
     result.subdivisionSeconds += clock.seconds();
+  }
+  if (p.unite || p.countOverlaps) {
+    Stopwatch clock;
+    if (p.unite) {
+      result.unionResult = unionSqmMesh(result.mesh);
+      result.overlaps = result.unionResult.before;
+      if (!result.unionResult.ok()) result.error = result.unionResult.error;
+    } else {
+      result.overlaps = sqmOverlaps(result.mesh);
+    }
+    result.unionSeconds = clock.seconds();
+    if (!result.error.empty()) return result;
   }
   result.irregularVertices = countIrregularVertices(result.mesh);
   return result;

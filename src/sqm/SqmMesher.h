@@ -22,6 +22,8 @@
 
 #include "skeleton/Skeleton.h"
 #include "sqm/BranchNodePolyhedron.h"
+#include "sqm/SqmMesh.h"
+#include "sqm/SqmUnion.h"
 
 #include <Eigen/Core>
 
@@ -63,16 +65,13 @@ struct SqmParameters {
   // The repair that merges a node lying inside a neighbouring branch node's sphere into it (off: such a
   // skeleton is an error naming the node).
   bool mergeNodes = true;
+  // Where tubes of parts that are not neighbours overlap, their faces cut each other: count the pairs
+  // (SqmResult::overlaps), and with `unite` replace the mesh by the boundary of the union of its volumes
+  // (SqmUnion; beyond the papers). `unite` implies counting.
+  bool countOverlaps = false;
+  bool unite = false;
   // The papers' intermediate results (SqmResult's polyhedra, refinedPolyhedra, baseMesh).
   bool recordStages = false;
-};
-
-struct SqmMesh {
-  std::vector<Eigen::Vector3d> vertices;
-  std::vector<std::vector<int>> faces;  // quads and triangles, outward oriented
-  std::vector<int> vertexNode;          // the skeleton node each vertex belongs to (-1: a capsule node)
-  int quadCount() const;
-  int triangleCount() const;
 };
 
 struct SqmResult {
@@ -83,6 +82,9 @@ struct SqmResult {
   int pairedTriangles = 0;  // quads made of two fan or band triangles (SqmParameters::pairTriangles)
   int foldRepairedVertices = 0;  // refined vertices moved off their cones by the fold repair
   int irregularVertices = 0;      // vertices of the output where other than four edges meet
+  SqmOverlaps overlaps;           // with countOverlaps or unite: the faces cutting each other (before the union)
+  SqmUnionResult unionResult;     // with unite: what the union cut and removed
+  double unionSeconds = 0;        // counting the overlaps and the union
   // The paper's Table 1 stages: straightening, BNP generation and refinement, joining, skinning
   // (placement), subdivision, and Medial's repairs (orientation, triangle pairing).
   double straighteningSeconds = 0, generationSeconds = 0, refinementSeconds = 0, joiningSeconds = 0,

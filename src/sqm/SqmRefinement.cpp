@@ -1,6 +1,7 @@
 #include "sqm/SqmRefinement.h"
 
 #include "mesh/SelfIntersections.h"
+#include "sqm/FoldPairs.h"
 #include "sqm/SweptSpheres.h"
 
 #include <Eigen/Geometry>
@@ -12,6 +13,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <thread>
 #include <vector>
 
@@ -143,20 +145,25 @@ std::vector<std::vector<int>> vertexNeighbours(const std::vector<std::vector<int
   return neighbours;
 }
 
-// Finds the vertices of faces that cut others. After the first test over the whole mesh, only the faces
-// around vertices that were folded are tested again (a full test on 250k faces took about 0.4 s, and the
-// repair tests up to 17 times), and a last full test confirms that no fold is left elsewhere.
+// Finds the vertices of faces that cut others, where the two are a fold (FoldPairs: not tubes of other
+// parts overlapping). After the first test over the whole mesh, only the faces around vertices that were
+// folded are tested again (a full test on 250k faces took about 0.4 s, and the repair tests up to 17
+// times), and a last full test confirms that no fold is left elsewhere.
 class FoldFinder {
  public:
-  FoldFinder(const std::vector<std::vector<int>>& faces, size_t vertices) : faces_(faces), facesOf_(vertices) {
+  using IsFold = std::function<bool(int, int)>;  // of two faces that cut each other
+  FoldFinder(const std::vector<std::vector<int>>& faces, size_t vertices, IsFold isFold)
+      : faces_(faces), facesOf_(vertices), isFold_(std::move(isFold)) {
     for (size_t f = 0; f < faces.size(); ++f)
       for (int v : faces[f]) facesOf_[size_t(v)].push_back(int(f));
+    everyFace_.resize(faces.size());
+    std::iota(everyFace_.begin(), everyFace_.end(), 0);
   }
-  // Every vertex of a face that cuts another (empty when none does).
+  // Every vertex of a face that folds over another (empty when none does).
   std::vector<bool> all(const std::vector<Eigen::Vector3d>& points) {
     local_.clear();
     inRegion_.assign(faces_.size(), false);
-    return folded(points, faces_);
+    return folded(points, everyFace_);
   }
   // The same, testing only the faces near the vertices folded so far; a full test when none is left.
   std::vector<bool> again(const std::vector<Eigen::Vector3d>& points, const std::vector<bool>& foldedBefore) {
@@ -167,35 +174,41 @@ class FoldFinder {
             for (int g : facesOf_[size_t(w)])
               if (!inRegion_[size_t(g)]) {
                 inRegion_[size_t(g)] = true;
-                local_.push_back(faces_[size_t(g)]);
+                local_.push_back(g);
               }
     const std::vector<bool> found = folded(points, local_);
     return found.empty() ? all(points) : found;
   }
 
  private:
-  static std::vector<bool> folded(const std::vector<Eigen::Vector3d>& points,
-                                  const std::vector<std::vector<int>>& faces) {
-    const auto pairs = selfIntersectingFaces(points, faces);
-    if (pairs.empty()) return {};
-    std::vector<bool> result(points.size(), false);
-    for (const auto& [a, b] : pairs)
-      for (int f : {a, b})
-        for (int v : faces[size_t(f)]) result[size_t(v)] = true;
+  std::vector<bool> folded(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& tested) const {
+    std::vector<std::vector<int>> faces;
+    faces.reserve(tested.size());
+    for (int f : tested) faces.push_back(faces_[size_t(f)]);
+    std::vector<bool> result;
+    for (const auto& [a, b] : selfIntersectingFaces(points, faces)) {
+      const int f = tested[size_t(a)], g = tested[size_t(b)];
+      if (!isFold_(f, g)) continue;
+      result.resize(points.size(), false);
+      for (int h : {f, g})
+        for (int v : faces_[size_t(h)]) result[size_t(v)] = true;
+    }
     return result;
   }
   const std::vector<std::vector<int>>& faces_;
-  std::vector<std::vector<int>> facesOf_, local_;  // the faces of each vertex; those tested again
+  std::vector<std::vector<int>> facesOf_;  // the faces of each vertex
+  IsFold isFold_;
+  std::vector<int> everyFace_, local_;  // all faces; those tested again
   std::vector<bool> inRegion_;
 };
 
 // Returns the vertices moved; *settled tells whether no face cuts another any more.
 int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& flat,
-                std::vector<Eigen::Vector3d>& points, bool* settled) {
+                std::vector<Eigen::Vector3d>& points, const FoldFinder::IsFold& isFold, bool* settled) {
   const std::vector<Eigen::Vector3d> projected = points;
   std::vector<double> weight(points.size(), 1.0);  // 1: projected, 0: on the base mesh
   int moved = 0;
-  FoldFinder finder(faces, points.size());
+  FoldFinder finder(faces, points.size(), isFold);
   std::vector<bool> folded = finder.all(points);
   for (int step = 0; step <= kFoldRepairSteps && !folded.empty(); ++step) {
     for (size_t v = 0; v < points.size(); ++v) {
@@ -284,7 +297,10 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
   const auto refiner = bilinearRefiner(mesh, levels);
   if (!refiner) return 0;
   const SweptSpheres spheres(skeleton);
-  // The edges each base face can project onto: those whose swept volume comes within a radius of it.
+  const FoldPairs folds(mesh, skeleton);
+  // The edges each base face can project onto: those whose swept volume comes within a radius of it, and
+  // which are near its node on the skeleton (a tube of another part passing through is not its surface:
+  // the overlap is SqmUnion's work).
   const double largestRadius = *std::max_element(skeleton.radii.begin(), skeleton.radii.end());
   std::vector<std::vector<int>> nearEdges;
   for (size_t f = 0; f < mesh.faces.size(); ++f) {
@@ -297,6 +313,14 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
       radius = std::max(radius, node >= 0 ? skeleton.radii[size_t(node)] : largestRadius);
     }
     nearEdges.push_back(spheres.edgesNear(low, high, radius));
+    const int node = folds.faceNode(int(f));
+    if (node >= 0)
+      nearEdges.back().erase(std::remove_if(nearEdges.back().begin(), nearEdges.back().end(),
+                                            [&](int e) {
+                                              return !folds.near(node, skeleton.edges[size_t(e)][0]) &&
+                                                     !folds.near(node, skeleton.edges[size_t(e)][1]);
+                                            }),
+                             nearEdges.back().end());
   }
   const std::vector<Eigen::Vector3d> sharp = scaling.enabled ? sharpVertices(mesh) : std::vector<Eigen::Vector3d>{};
 
@@ -341,7 +365,10 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
         projected[v] = q;
       });
       if (foldRepair && (repairEveryLevel || level == levels)) {
-        const int moved = repairFolds(levelFaces(topology), flat, projected, &settled);
+        const auto isFold = [&](int f, int g) {
+          return folds.isFold(nextBaseFace[size_t(f)], nextBaseFace[size_t(g)]);
+        };
+        const int moved = repairFolds(levelFaces(topology), flat, projected, isFold, &settled);
         if (repairedVertices && level == levels) *repairedVertices = moved;
       }
       for (size_t v = 0; v < next.size(); ++v) next[v].p = projected[v];

@@ -1,0 +1,264 @@
+#include "sqm/SqmUnion.h"
+
+#include "mesh/MeshTopology.h"
+#include "mesh/SelfIntersections.h"
+#include "common/UnionFind.h"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <Eigen/Geometry>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <set>
+#include <thread>
+
+namespace medial {
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
+using Surface = CGAL::Surface_mesh<Exact::Point_3>;
+using Face = Surface::Face_index;
+using Vertex = Surface::Vertex_index;
+
+// Marks every triangle the autorefinement cuts, and gives each piece the polygon of the triangle it came
+// from. CGAL copies the visitor: the state is shared.
+struct CutTracker : PMP::Corefinement::Default_visitor<Surface> {
+  Surface::Property_map<Face, int> polygon;
+  Surface::Property_map<Face, bool> cut;
+  std::shared_ptr<int> current = std::make_shared<int>(-1);
+  void before_subface_creations(Face old, Surface&) {
+    *current = polygon[old];
+    cut[old] = true;
+  }
+  void after_subface_created(Face piece, Surface&) {
+    polygon[piece] = *current;
+    cut[piece] = true;
+  }
+};
+
+// The generalized winding number of a closed triangle mesh at q: the solid angles of its triangles seen
+// from q over 4 pi (Van Oosterom and Strackee's formula), an integer away from the surface: how many times
+// the surface wraps q, 1 inside one tube, 2 inside two, 0 outside.
+double windingNumber(const Eigen::Vector3d& q, const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<std::array<int, 3>>& triangles) {
+  double sum = 0;
+  for (const auto& t : triangles) {
+    const Eigen::Vector3d a = points[size_t(t[0])] - q, b = points[size_t(t[1])] - q, c = points[size_t(t[2])] - q;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    sum += 2 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb);
+  }
+  return sum / (4 * M_PI);
+}
+
+// Runs work(i) for i in [0, count) on every core.
+void inParallel(size_t count, const std::function<void(size_t)>& work) {
+  const size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 16);
+  std::vector<std::thread> pool;
+  for (size_t t = 0; t < threads; ++t)
+    pool.emplace_back([&, t] {
+      for (size_t i = t; i < count; i += threads) work(i);
+    });
+  for (auto& thread : pool) thread.join();
+}
+
+}  // namespace
+
+SqmOverlaps sqmOverlaps(const SqmMesh& mesh) {
+  SqmOverlaps overlaps;
+  const auto pairs = selfIntersectingFaces(mesh.vertices, mesh.faces);
+  overlaps.facePairs = int(pairs.size());
+  std::set<std::pair<int, int>> nodes;
+  for (const auto& [a, b] : pairs) {
+    const int p = mesh.faceNode(size_t(a)), q = mesh.faceNode(size_t(b));
+    nodes.emplace(std::min(p, q), std::max(p, q));
+  }
+  overlaps.nodePairs = int(nodes.size());
+  return overlaps;
+}
+
+SqmUnionResult unionSqmMesh(SqmMesh& mesh) {
+  SqmUnionResult result;
+  result.before = sqmOverlaps(mesh);
+  if (result.before.facePairs == 0) return result;
+
+  // The polygons as triangles fanned from their first vertex, each knowing its polygon.
+  Surface surface;
+  auto source = surface.add_property_map<Vertex, int>("v:source", -1).first;
+  std::vector<Vertex> handles;
+  handles.reserve(mesh.vertices.size());
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const Eigen::Vector3d& p = mesh.vertices[v];
+    handles.push_back(surface.add_vertex(Exact::Point_3(p.x(), p.y(), p.z())));
+    source[handles.back()] = int(v);
+  }
+  CutTracker tracker;
+  tracker.polygon = surface.add_property_map<Face, int>("f:polygon", -1).first;
+  tracker.cut = surface.add_property_map<Face, bool>("f:cut", false).first;
+  for (size_t f = 0; f < mesh.faces.size(); ++f)
+    for (size_t k = 1; k + 1 < mesh.faces[f].size(); ++k) {
+      const Face t = surface.add_face(handles[size_t(mesh.faces[f][0])], handles[size_t(mesh.faces[f][k])],
+                                      handles[size_t(mesh.faces[f][k + 1])]);
+      if (t == Surface::null_face()) {
+        result.error = "the mesh is not a manifold (polygon " + std::to_string(f) + "): no union";
+        return result;
+      }
+      tracker.polygon[t] = int(f);
+    }
+  // Every intersection curve becomes edges (marked), no two triangles cut each other any more.
+  auto curve = surface.add_property_map<Surface::Edge_index, bool>("e:curve", false).first;
+  PMP::experimental::autorefine(surface, CGAL::parameters::visitor(tracker).edge_is_constrained_map(curve));
+
+  // Doubles, once; a vertex on an intersection curve has no source.
+  // (Indices of their own: the surface may hold removed elements.)
+  std::vector<int> vertexIndex(surface.number_of_vertices() + surface.number_of_removed_vertices(), -1);
+  std::vector<int> triangleIndex(surface.number_of_faces() + surface.number_of_removed_faces(), -1);
+  std::vector<Eigen::Vector3d> points;
+  std::vector<int> node;
+  for (const Vertex v : surface.vertices()) {
+    vertexIndex[size_t(v)] = int(points.size());
+    const auto& p = surface.point(v);
+    points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    node.push_back(source[v] >= 0 ? mesh.vertexNode[size_t(source[v])] : -2);
+  }
+  // Curve vertices take the smallest node among their neighbours that have one.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const Vertex v : surface.vertices()) {
+      int& mine = node[size_t(vertexIndex[size_t(v)])];
+      if (mine != -2) continue;
+      for (const Vertex u : CGAL::vertices_around_target(surface.halfedge(v), surface)) {
+        const int theirs = node[size_t(vertexIndex[size_t(u)])];
+        if (theirs != -2 && (mine == -2 || theirs < mine)) mine = theirs;
+      }
+      changed |= mine != -2;
+    }
+  }
+  // The autorefinement leaves each intersection curve once in each of the two sheets that cross there:
+  // vertices at the same point become one (the exact points round to the same doubles).
+  std::map<std::array<double, 3>, int> atPoint;
+  std::vector<int> merged(points.size());
+  for (size_t v = 0; v < points.size(); ++v)
+    merged[v] = atPoint.emplace(std::array<double, 3>{points[v].x(), points[v].y(), points[v].z()}, int(v)).first->second;
+  for (const Vertex v : surface.vertices()) vertexIndex[size_t(v)] = merged[size_t(vertexIndex[size_t(v)])];
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<Face> faceOf;
+  for (const Face f : surface.faces()) {
+    triangleIndex[size_t(f)] = int(triangles.size());
+    faceOf.push_back(f);
+    std::array<int, 3> t;
+    int k = 0;
+    for (const Vertex v : CGAL::vertices_around_face(surface.halfedge(f), surface))
+      t[size_t(k++)] = vertexIndex[size_t(v)];
+    triangles.push_back(t);
+  }
+
+  // Patches: triangles joined across edges that are not on an intersection curve. A patch bounds the
+  // union where the winding number is >= 1 on one side of it and 0 on the other (tested just off its
+  // largest triangle); it is turned over where the solid lies in front of it (a fold's pocket).
+  UnionFind patchOf(triangles.size());
+  for (const Surface::Edge_index e : surface.edges())
+    if (!curve[e])
+      patchOf.join(triangleIndex[size_t(surface.face(surface.halfedge(e)))],
+                   triangleIndex[size_t(surface.face(surface.opposite(surface.halfedge(e))))]);
+  std::map<int, int> largest;  // patch root -> its largest triangle
+  std::vector<double> area(triangles.size());
+  std::vector<Eigen::Vector3d> normal(triangles.size());
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const auto& [a, b, c] = triangles[t];
+    normal[t] = (points[size_t(b)] - points[size_t(a)]).cross(points[size_t(c)] - points[size_t(a)]);
+    area[t] = normal[t].norm();
+    const auto [it, added] = largest.emplace(patchOf.find(int(t)), int(t));
+    if (!added && area[t] > area[size_t(it->second)]) it->second = int(t);
+  }
+  std::vector<std::pair<int, int>> patches(largest.begin(), largest.end());
+  std::vector<int> side(patches.size());  // 1: keep, -1: keep turned over, 0: drop
+  inParallel(patches.size(), [&](size_t k) {
+    const size_t t = size_t(patches[k].second);
+    const Eigen::Vector3d centre = (points[size_t(triangles[t][0])] + points[size_t(triangles[t][1])] +
+                                    points[size_t(triangles[t][2])]) / 3;
+    const Eigen::Vector3d offset = 1e-3 * std::sqrt(area[t]) * normal[t].normalized();
+    const bool solidBehind = std::lround(windingNumber(centre - offset, points, triangles)) >= 1;
+    const bool solidInFront = std::lround(windingNumber(centre + offset, points, triangles)) >= 1;
+    side[k] = solidBehind == solidInFront ? 0 : solidBehind ? 1 : -1;
+  });
+  std::map<int, int> sideOf;
+  for (size_t k = 0; k < patches.size(); ++k) sideOf[patches[k].first] = side[k];
+
+  // Whole polygons back where all their triangles are kept, uncut and the same way round.
+  std::vector<int> keptTriangles(mesh.faces.size(), 0), turnedTriangles(mesh.faces.size(), 0);
+  std::vector<bool> polygonCut(mesh.faces.size(), false);
+  std::vector<int> triangleSide(triangles.size());
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const Face f = faceOf[t];
+    const size_t p = size_t(tracker.polygon[f]);
+    triangleSide[t] = sideOf[patchOf.find(int(t))];
+    if (tracker.cut[f]) polygonCut[p] = true;
+    else if (triangleSide[t] != 0) ++(triangleSide[t] > 0 ? keptTriangles[p] : turnedTriangles[p]);
+  }
+  const auto whole = [&](size_t p) {
+    const int needed = int(mesh.faces[p].size()) - 2;
+    return !polygonCut[p] && (keptTriangles[p] == needed || turnedTriangles[p] == needed);
+  };
+  SqmMesh united;
+  united.vertices = points;
+  united.vertexNode.assign(node.begin(), node.end());
+  for (int& n : united.vertexNode) n = std::max(n, -1);
+  std::vector<bool> emitted(mesh.faces.size(), false);
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    if (triangleSide[t] == 0) continue;
+    const size_t p = size_t(tracker.polygon[faceOf[t]]);
+    std::vector<int> polygon;
+    if (!whole(p)) {
+      polygon.assign(triangles[t].begin(), triangles[t].end());
+    } else if (!emitted[p]) {
+      emitted[p] = true;
+      for (const int v : mesh.faces[p]) polygon.push_back(vertexIndex[size_t(handles[size_t(v)])]);
+    } else {
+      continue;
+    }
+    if (triangleSide[t] < 0) std::reverse(polygon.begin(), polygon.end());
+    united.faces.push_back(polygon);
+  }
+  for (size_t p = 0; p < mesh.faces.size(); ++p) {
+    if (polygonCut[p]) ++result.cutPolygons;
+    else if (keptTriangles[p] + turnedTriangles[p] == 0) ++result.removedPolygons;
+    if (!polygonCut[p] && turnedTriangles[p] > 0) ++result.turnedPolygons;
+  }
+
+  // Drop the vertices of removed parts.
+  std::vector<int> used(united.vertices.size(), -1);
+  SqmMesh compact;
+  for (auto& face : united.faces)
+    for (int& v : face) {
+      if (used[size_t(v)] < 0) {
+        used[size_t(v)] = int(compact.vertices.size());
+        compact.vertices.push_back(united.vertices[size_t(v)]);
+        compact.vertexNode.push_back(united.vertexNode[size_t(v)]);
+      }
+      v = used[size_t(v)];
+    }
+  compact.faces = std::move(united.faces);
+
+  std::vector<std::vector<int64_t>> faces64;
+  for (const auto& face : compact.faces) faces64.emplace_back(face.begin(), face.end());
+  const MeshTopology topology = computeMeshTopology(int64_t(compact.vertices.size()), faces64);
+  if (!topology.isClosedManifold()) {
+    result.error = "the union is not a closed manifold (" + std::to_string(topology.borderEdges) + " border and " +
+                   std::to_string(topology.nonManifoldEdges) + " non-manifold edges): no union";
+    return result;
+  }
+  result.intersectingAfter = int(selfIntersectingFaces(compact.vertices, compact.faces).size());
+  mesh = std::move(compact);
+  return result;
+}
+
+}  // namespace medial

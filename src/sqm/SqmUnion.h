@@ -1,0 +1,50 @@
+// SqmUnion: where the tubes of parts of a skeleton that are not neighbours overlap (a dense tree whose
+// branches pass through each other, a sketch whose fingers touch), SQM's mesh is closed and manifold but
+// its faces cut each other, so that it bounds no volume. The union replaces it by the surface of the
+// volume its tubes enclose together: one closed 2-manifold without self-intersection (issue 27, beyond
+// the papers, which assume tubes that do not meet).
+//
+// How (the outer-hull idea of Zhou et al., "Mesh arrangements for solid geometry", 2016): the faces are
+// split into triangles (fanned from their first vertex, as VTK draws them); CGAL's autorefinement
+// (Polygon_mesh_processing::experimental::autorefine, exact constructions) cuts them along every
+// intersection curve, which splits the surface into patches; a patch is kept where the generalized winding
+// number of the whole mesh is >= 1 (solid) on one side of it and 0 on the other, and turned over if the
+// solid lies in front of it (a fold's pocket). So a tube inside another disappears, a cavity enclosed by
+// tubes stays (facing into it), and folds of the refinement are resolved with the overlaps. A polygon
+// none of whose triangles was cut or dropped comes back whole, so quads stay quads away from the
+// intersection curves; the cut ones stay as CGAL's triangles. A vertex keeps its skeleton node; a vertex
+// created on an intersection curve takes the smallest node among its neighbours. Coordinates are rounded
+// to doubles once (CGAL's are exact), and the result is tested again for faces cutting each other.
+#pragma once
+
+#include "sqm/SqmMesh.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace medial {
+
+struct SqmOverlaps {
+  int facePairs = 0;  // pairs of polygons that cut each other
+  int nodePairs = 0;  // distinct pairs of skeleton nodes whose faces cut each other
+};
+
+/// The self-intersections of an SQM mesh, counted by polygons and by the skeleton nodes they belong to.
+SqmOverlaps sqmOverlaps(const SqmMesh& mesh);
+
+struct SqmUnionResult {
+  SqmOverlaps before;          // what the mesh had
+  int cutPolygons = 0;         // polygons cut along an intersection curve or removed in part
+  int removedPolygons = 0;     // polygons wholly inside the volume, removed
+  int turnedPolygons = 0;      // polygons turned over (the solid lay in front of them)
+  int intersectingAfter = 0;   // face pairs still cutting each other after rounding (0 expected)
+  std::string error;           // when the union is not a closed manifold (tubes touching along a line)
+  bool ok() const { return error.empty(); }
+};
+
+/// Replaces `mesh` by the boundary of the union of the volumes its overlapping parts enclose. A mesh
+/// without self-intersections is left as it is. On error `mesh` is left as it was.
+SqmUnionResult unionSqmMesh(SqmMesh& mesh);
+
+}  // namespace medial
