@@ -6,6 +6,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 namespace medial {
@@ -40,14 +41,31 @@ InsideTest::InsideTest(const TriangleMesh& mesh) : tree_(std::make_unique<Tree>(
 
 InsideTest::~InsideTest() = default;
 
+namespace {
+const Kernel::Vector_3 kDirections[3] = {{0.5773, 0.5821, 0.5727}, {-0.7071, 0.1013, 0.6998}, {0.2113, -0.9349, 0.2851}};
+}  // namespace
+
 bool InsideTest::contains(const Eigen::Vector3d& point) const {
   if (tree_->triangles.empty()) return false;
-  static const Kernel::Vector_3 directions[3] = {
-      {0.5773, 0.5821, 0.5727}, {-0.7071, 0.1013, 0.6998}, {0.2113, -0.9349, 0.2851}};
   int insideVotes = 0;
-  for (const auto& direction : directions) {
+  for (const auto& direction : kDirections) {
     const Kernel::Ray_3 ray(toPoint(point), direction);
     if (tree_->tree.number_of_intersected_primitives(ray) % 2 == 1) ++insideVotes;
+  }
+  return insideVotes >= 2;
+}
+
+bool InsideTest::wrapped(const Eigen::Vector3d& point) const {
+  if (tree_->triangles.empty()) return false;
+  int insideVotes = 0;
+  std::vector<Primitive::Id> hits;
+  for (const auto& direction : kDirections) {
+    hits.clear();
+    tree_->tree.all_intersected_primitives(Kernel::Ray_3(toPoint(point), direction), std::back_inserter(hits));
+    int winding = 0;
+    for (const auto& t : hits)
+      winding += CGAL::cross_product(t->vertex(1) - t->vertex(0), t->vertex(2) - t->vertex(0)) * direction > 0 ? 1 : -1;
+    if (winding >= 1) ++insideVotes;
   }
   return insideVotes >= 2;
 }

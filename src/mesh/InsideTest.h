@@ -17,6 +17,10 @@ class InsideTest {
   InsideTest& operator=(const InsideTest&) = delete;
 
   bool contains(const Eigen::Vector3d& point) const;
+  // For a closed, consistently oriented mesh that may cut itself (overlapping tubes): whether its winding
+  // number at the point is >= 1, i.e. it lies inside at least one of the volumes the surface wraps.
+  // Crossings along a ray are counted +1 through a face seen from behind, -1 from the front.
+  bool wrapped(const Eigen::Vector3d& point) const;
   // True when the open segment a-b crosses no triangle (its end points may lie on the surface).
   bool segmentIsClear(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
   double squaredDistanceToSurface(const Eigen::Vector3d& point) const;

@@ -663,7 +663,10 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
   if (p.unite || p.countOverlaps) {
     Stopwatch clock;
     if (p.unite) {
-      result.unionResult = unionSqmMesh(result.mesh);
+      // Components smaller than a tenth of the smallest input node's ball are pockets between tubes (the
+      // smallest part, a lone node, is a sphere of six quads: 0.37 of its ball).
+      const double r = *std::min_element(input.radii.begin(), input.radii.end());
+      result.unionResult = unionSqmMesh(result.mesh, 0.1 * 4.0 / 3.0 * M_PI * r * r * r);
       result.overlaps = result.unionResult.before;
       if (!result.unionResult.ok()) result.error = result.unionResult.error;
     } else {

@@ -7,10 +7,12 @@
 // How (the outer-hull idea of Zhou et al., "Mesh arrangements for solid geometry", 2016): the faces are
 // split into triangles (fanned from their first vertex, as VTK draws them); CGAL's autorefinement
 // (Polygon_mesh_processing::experimental::autorefine, exact constructions) cuts them along every
-// intersection curve, which splits the surface into patches; a patch is kept where the generalized winding
-// number of the whole mesh is >= 1 (solid) on one side of it and 0 on the other, and turned over if the
-// solid lies in front of it (a fold's pocket). So a tube inside another disappears, a cavity enclosed by
-// tubes stays (facing into it), and folds of the refinement are resolved with the overlaps. A polygon
+// intersection curve, which splits the surface into patches; a patch is kept where the winding number of
+// the whole mesh (crossings counted along rays) is >= 1 (solid) on one side of it and 0 on the other, and
+// turned over if the solid lies in front of it (a fold's pocket). So a tube inside another disappears, a
+// cavity enclosed by tubes stays (facing into it), and folds of the refinement are resolved with the
+// overlaps; closed components that enclose no volume (sheets that only touch) or less than a given
+// volume (a cavity where three tubes meet, a bubble of a fold) are dropped. A polygon
 // none of whose triangles was cut or dropped comes back whole, so quads stay quads away from the
 // intersection curves; the cut ones stay as CGAL's triangles. A vertex keeps its skeleton node; a vertex
 // created on an intersection curve takes the smallest node among its neighbours. Coordinates are rounded
@@ -38,6 +40,8 @@ struct SqmUnionResult {
   int cutPolygons = 0;         // polygons cut along an intersection curve or removed in part
   int removedPolygons = 0;     // polygons wholly inside the volume, removed
   int turnedPolygons = 0;      // polygons turned over (the solid lay in front of them)
+  int droppedPockets = 0;      // closed components enclosing no volume or less than the smallest part, dropped
+  double autorefineSeconds = 0, selectionSeconds = 0;  // CGAL's cutting; the winding numbers
   int intersectingAfter = 0;   // face pairs still cutting each other after rounding (0 expected)
   std::string error;           // when the union is not a closed manifold (tubes touching along a line)
   bool ok() const { return error.empty(); }
@@ -45,6 +49,8 @@ struct SqmUnionResult {
 
 /// Replaces `mesh` by the boundary of the union of the volumes its overlapping parts enclose. A mesh
 /// without self-intersections is left as it is. On error `mesh` is left as it was.
-SqmUnionResult unionSqmMesh(SqmMesh& mesh);
+/// @param smallestPart a closed component (cavity or bubble) of less volume than this is dropped (SqmMesher
+///        passes a tenth of the ball of the smallest input radius)
+SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart = 0);
 
 }  // namespace medial
