@@ -1,0 +1,178 @@
+// vtkMedialSQM's Union (issue 27): skeletons whose tubes of parts that are not neighbours overlap (two
+// crossing tubes, a dense random tree, the hand sketch) give one closed 2-manifold without
+// self-intersections that keeps every node inside and encloses the volume of the swept spheres' union.
+#include "TestPaths.h"
+
+#include "MedialErrorCollector.h"
+#include "MedialMeshData.h"
+#include "MedialSkeletonData.h"
+#include "mesh/InsideTest.h"
+#include "mesh/MeshTopology.h"
+#include "mesh/SelfIntersections.h"
+#include "skeleton/Skeleton.h"
+#include "sqm/SweptSpheres.h"
+#include "vtkMedialReader.h"
+#include "vtkMedialSQM.h"
+#include "vtkMedialSketchSkeleton.h"
+
+#include <vtkDataArray.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <random>
+#include <string>
+
+namespace {
+
+struct OverlapCase {
+  const char* name;
+  std::string path;  // a skeleton file, or a sketch (.txt) whose skeleton is meshed
+  int levels;
+  bool capsules;  // the swept spheres' union has round ends: compare volumes with capsules only
+};
+
+std::ostream& operator<<(std::ostream& os, const OverlapCase& c) { return os << c.name; }
+
+class SqmUnion : public ::testing::TestWithParam<OverlapCase> {};
+
+vtkSmartPointer<vtkPolyData> skeletonOf(const std::string& path) {
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (path.size() < 4 || path.substr(path.size() - 4) != ".txt")
+    return vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  auto sketch = vtkSmartPointer<vtkMedialSketchSkeleton>::New();
+  sketch->SetInputConnection(reader->GetOutputPort());
+  sketch->Update();
+  return sketch->GetOutput();
+}
+
+// The volume of the union of the swept spheres, by 200,000 samples in the skeleton's box.
+double sweptVolume(const medial::Skeleton& s) {
+  const medial::SweptSpheres swept(s);
+  Eigen::Vector3d low = s.nodes[0], high = low;
+  for (size_t n = 0; n < s.nodes.size(); ++n) {
+    low = low.cwiseMin(s.nodes[n] - Eigen::Vector3d::Constant(s.radii[n]));
+    high = high.cwiseMax(s.nodes[n] + Eigen::Vector3d::Constant(s.radii[n]));
+  }
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const int samples = 200000;
+  int inside = 0;
+  for (int k = 0; k < samples; ++k) {
+    const Eigen::Vector3d p = low + (high - low).cwiseProduct(Eigen::Vector3d(unit(random), unit(random), unit(random)));
+    inside += swept.signedDistance(p) < 0;
+  }
+  return (high - low).prod() * inside / samples;
+}
+
+double enclosedVolume(const std::vector<Eigen::Vector3d>& points, const std::vector<std::vector<int64_t>>& faces) {
+  double volume = 0;
+  for (const auto& f : faces)
+    for (size_t k = 1; k + 1 < f.size(); ++k)
+      volume += points[size_t(f[0])].dot(points[size_t(f[k])].cross(points[size_t(f[k + 1])])) / 6;
+  return volume;
+}
+
+}  // namespace
+
+TEST_P(SqmUnion, OverlapsBecomeOneClosedSurfaceAroundTheSkeleton) {
+  const OverlapCase c = GetParam();
+  const vtkSmartPointer<vtkPolyData> input = skeletonOf(medial::test::dataPath(c.path));
+  ASSERT_GT(input->GetNumberOfPoints(), 0);
+  medial::Skeleton skeleton;
+  std::string error;
+  ASSERT_TRUE(medial::skeletonFromPolyData(input, skeleton, error)) << error;
+
+  auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+  auto errors = medial::ErrorCollector::Watch(sqm);
+  sqm->SetInputData(input);
+  sqm->SetSubdivisionLevels(c.levels);
+  sqm->SetCapsules(c.capsules);
+  sqm->CountOverlapsOn();
+  sqm->Update();
+  ASSERT_FALSE(errors->HasErrors()) << errors->Joined();
+  const int overlapping = sqm->GetOverlappingFacePairs();
+  EXPECT_GT(overlapping, 0) << "the skeleton's tubes should overlap without the union";
+  EXPECT_GT(medial::selfIntersectingFaces(medial::pointsOf(sqm->GetOutput()), medial::polygonsOf(sqm->GetOutput())).size(), 0u);
+
+  sqm->UnionOn();
+  sqm->Update();
+  ASSERT_FALSE(errors->HasErrors()) << errors->Joined();
+  EXPECT_EQ(sqm->GetOverlappingFacePairs(), overlapping);
+  EXPECT_GT(sqm->GetUnionCutPolygons(), 0);
+  vtkPolyData* mesh = sqm->GetOutput();
+  const auto points = medial::pointsOf(mesh);
+  const auto faces = medial::polygonsOf(mesh);
+  const medial::MeshTopology topology = medial::computeMeshTopology(mesh->GetNumberOfPoints(), faces);
+  EXPECT_TRUE(topology.isClosedManifold()) << topology.borderEdges << " border, " << topology.nonManifoldEdges << " non-manifold";
+  EXPECT_EQ(topology.components, 1);
+  EXPECT_EQ(medial::selfIntersectingFaces(points, faces).size(), 0u);
+  // Quads stay quads away from the intersection curves (refined: the base mesh's cut quads are most of it).
+  const double quads = double(std::count_if(faces.begin(), faces.end(), [](const auto& f) { return f.size() == 4; }));
+  if (c.levels > 0) {
+    EXPECT_GE(quads / double(faces.size()), 0.4);
+  }
+  // SkeletonNode carried over, a node of the input for every vertex.
+  vtkDataArray* node = mesh->GetPointData()->GetArray("SkeletonNode");
+  ASSERT_TRUE(vtkIntArray::SafeDownCast(node));
+  for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v) {
+    ASSERT_GE(node->GetComponent(v, 0), 0);
+    ASSERT_LT(node->GetComponent(v, 0), skeleton.nodeCount());
+  }
+  // Every node inside, now that inside has a meaning (unrefined and without capsules, a leaf's fan has its
+  // apex at the leaf: the leaves are on the surface then).
+  const medial::InsideTest inside(medial::toTriangleMesh(medial::triangulated(mesh)));
+  const std::vector<int> degree = medial::nodeDegrees(skeleton);
+  int outside = 0;
+  for (size_t n = 0; n < skeleton.nodes.size(); ++n)
+    if (degree[n] >= 2 || c.levels > 0 || c.capsules) outside += !inside.contains(skeleton.nodes[n]);
+  EXPECT_EQ(outside, 0);
+  const double volume = enclosedVolume(points, faces);
+  const double swept = sweptVolume(skeleton);
+  std::printf("%s: %d overlapping face pairs, %d cut polygons; %zu faces, %.0f %% quads, volume %.4g = %.3f of "
+              "the swept spheres' union (sampled), %.2f s\n",
+              c.name, overlapping, sqm->GetUnionCutPolygons(), faces.size(), 100 * quads / double(faces.size()),
+              volume, volume / swept, sqm->GetStageSeconds("union"));
+  if (c.capsules) {
+    EXPECT_NEAR(volume / swept, 1.0, 0.05);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Overlapping, SqmUnion,
+    ::testing::Values(OverlapCase{"crossing tubes", "skeletons/overlapping/crossing.vtp", 0, false},
+                      OverlapCase{"crossing tubes refined twice", "skeletons/overlapping/crossing.vtp", 2, true},
+                      OverlapCase{"crossing tubes refined three times", "skeletons/overlapping/crossing.vtp", 3, true},
+                      OverlapCase{"dense tree refined twice", "skeletons/overlapping/dense-tree.vtp", 2, true},
+                      OverlapCase{"hand sketch", "sketches/hand.txt", 0, false},
+                      OverlapCase{"hand sketch refined twice", "sketches/hand.txt", 2, true}),
+    [](const ::testing::TestParamInfo<OverlapCase>& info) {
+      std::string name = info.param.name;
+      std::replace(name.begin(), name.end(), ' ', '_');
+      return name;
+    });
+
+// Without overlaps the union changes nothing (the humanoid refined once).
+TEST(SqmUnionFilter, WithoutOverlapsTheMeshIsUnchanged) {
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  reader->SetFileName(medial::test::dataPath("skeletons/sqm/humanoid.vtp").c_str());
+  auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+  sqm->SetInputConnection(reader->GetOutputPort());
+  sqm->SetSubdivisionLevels(1);
+  sqm->Update();
+  auto plain = vtkSmartPointer<vtkPolyData>::New();
+  plain->DeepCopy(sqm->GetOutput());
+  sqm->UnionOn();
+  sqm->Update();
+  EXPECT_EQ(sqm->GetOverlappingFacePairs(), 0);
+  EXPECT_EQ(sqm->GetUnionCutPolygons(), 0);
+  EXPECT_EQ(medial::pointsOf(sqm->GetOutput()), medial::pointsOf(plain));
+  EXPECT_EQ(medial::polygonsOf(sqm->GetOutput()), medial::polygonsOf(plain));
+}
