@@ -358,6 +358,30 @@ TEST(Cli, RigErrorsAreOneLineAndLeaveNoFile) {
   }
 }
 
+// Overlapping tubes: without --union a note counts them and suggests it; with it the note says what the
+// union did, and --timings has the counts and the union's time.
+TEST(Cli, SqmNotesOverlapsAndUnitesThem) {
+  const std::string dir = scratchDir("cli-sqm-union");
+  const std::string crossing = dataPath("skeletons/overlapping/crossing.vtp");
+  auto plain = runCommand(medialCommand("sqm " + crossing + " -o " + dir + "/plain.vtp --quiet --timings"));
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_NE(plain.err.find("tubes overlap at 6 pairs of nodes (32 pairs of faces cut each other)"), std::string::npos)
+      << plain.err;
+  EXPECT_NE(plain.err.find("--union makes it one closed surface"), std::string::npos) << plain.err;
+  EXPECT_NE(plain.out.find("\"sqm.overlapping_face_pairs\": 32"), std::string::npos) << plain.out;
+  auto united = runCommand(medialCommand("sqm " + crossing + " -o " + dir + "/united.obj --quiet --union --timings"));
+  ASSERT_EQ(united.exitCode, 0) << united.err;
+  EXPECT_NE(united.err.find("the union cut"), std::string::npos) << united.err;
+  EXPECT_EQ(united.err.find("--union makes"), std::string::npos) << united.err;
+  EXPECT_NE(united.out.find("\"sqm.union\""), std::string::npos) << united.out;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/united.obj"));
+  // A skeleton without overlaps: no note.
+  auto worm = runCommand(
+      medialCommand("sqm " + dataPath("skeletons/sqm/worm.vtp") + " -o " + dir + "/worm.vtp --quiet --union"));
+  ASSERT_EQ(worm.exitCode, 0) << worm.err;
+  EXPECT_EQ(worm.err.find("overlap"), std::string::npos) << worm.err;
+}
+
 TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
   const std::string dir = scratchDir("cli-sqm");
   auto r = runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + dir +
