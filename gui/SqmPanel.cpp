@@ -43,6 +43,10 @@ std::vector<Parameter> sqmParameters() {
       MEDIAL_TOGGLE_PARAMETER(f, MergeNodes, "Merge swallowed nodes",
                               "Merge a node lying inside a neighbouring branch node's sphere into it (off: "
                               "such a skeleton is an error naming the node)"),
+      MEDIAL_TOGGLE_PARAMETER(f, Union, "Union of overlapping tubes",
+                              "Where tubes of parts that are not neighbours overlap, make the mesh the boundary of "
+                              "their union: one closed surface without self-intersections, triangles along the "
+                              "intersection curves (overlaps are counted in the log either way)"),
   };
 }
 
@@ -91,6 +95,8 @@ vtkSmartPointer<vtkAlgorithm> SqmPanel::makeFilter(SceneObject* input, QString&)
   filter->SetSharpScaling(form()->isOn("SharpScaling"));
   filter->SetFoldRepair(form()->isOn("FoldRepair"));
   filter->SetMergeNodes(form()->isOn("MergeNodes"));
+  filter->SetUnion(form()->isOn("Union"));
+  filter->CountOverlapsOn();
   filter->SetSharpMinimumScale(form()->value("SharpMinimumScale"));
   filter->SetRecordStages(recordSteps());
   return filter;
@@ -117,10 +123,22 @@ void SqmPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
     objects()->remove(previous);
   }
   if (SceneObject* result = objects()->add(name, mesh)) objects()->setOpacity(result, opacity);
-  const int merged = static_cast<vtkMedialSQM*>(filter)->GetMergedNodes();
-  const int unfolded = static_cast<vtkMedialSQM*>(filter)->GetFoldRepairedVertices();
+  auto* sqm = static_cast<vtkMedialSQM*>(filter);
+  const int merged = sqm->GetMergedNodes();
+  const int unfolded = sqm->GetFoldRepairedVertices();
+  const int overlaps = sqm->GetOverlappingNodePairs();
+  QString overlapNote;
+  if (overlaps > 0 && sqm->GetUnion())
+    overlapNote = QString("; tubes overlapped at %1 pairs of nodes, united (%2 polygons cut)")
+                      .arg(overlaps)
+                      .arg(sqm->GetUnionCutPolygons());
+  else if (overlaps > 0)
+    overlapNote = QString("; tubes overlap at %1 pairs of nodes (%2 pairs of faces cut each other): the mesh "
+                          "bounds no volume, tick \"Union of overlapping tubes\"")
+                      .arg(overlaps)
+                      .arg(sqm->GetOverlappingFacePairs());
   emit message(
-      QString("SQM: %1 faces, %2 vertices, subdivision %3%4%5")
+      QString("SQM: %1 faces, %2 vertices, subdivision %3%4%5%6")
           .arg(mesh->GetNumberOfPolys())
           .arg(mesh->GetNumberOfPoints())
           .arg(subdivision_->value())
@@ -129,7 +147,8 @@ void SqmPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
                           : QString())
           .arg(unfolded > 0
                    ? QString("; %1 refined vertices moved off the swept spheres to undo folds").arg(unfolded)
-                   : QString()));
+                   : QString())
+          .arg(overlapNote));
 }
 
 }  // namespace medial::gui

@@ -318,6 +318,26 @@ TEST_F(GuiWorkflow, SkeletonGhostViewSqmAndRig) {
   EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
 }
 
+// Overlapping tubes: the log counts them and points at the Union box; ticked, the mesh is re-made live as
+// the union (more faces: the cut polygons' triangles) and the log says so.
+TEST_F(GuiWorkflow, SqmUnitesOverlappingTubes) {
+  open(dataPath("skeletons/overlapping/crossing.vtp"));
+  SqmPanel* sqm = window->sqmPanel();
+  sqm->setInput(object("crossing.vtp"));
+  ASSERT_TRUE(runThroughUi(sqm)) << errors.join("\n").toStdString();
+  EXPECT_TRUE(window->logText().contains("tubes overlap at 6 pairs of nodes")) << window->logText().toStdString();
+  EXPECT_TRUE(window->logText().contains("Union of overlapping tubes"));
+  const vtkIdType before = object("crossing.vtp SQM")->polyData()->GetNumberOfPolys();
+  sqm->form()->setValue("Union", 1);
+  ASSERT_TRUE(sqm->isRunning()) << "the box re-runs the filter";
+  sqm->wait();
+  SceneObject* united = object("crossing.vtp SQM");
+  ASSERT_NE(united, nullptr);
+  EXPECT_GT(united->polyData()->GetNumberOfPolys(), before);
+  EXPECT_TRUE(window->logText().contains("united (22 polygons cut)")) << window->logText().toStdString();
+  EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
+}
+
 TEST_F(GuiWorkflow, CenterlineFromClickedSeedAndFlyThrough) {
   open(dataPath("volumes/tubes/u.nii.gz"));
   CenterlinePanel* panel = window->centerlinePanel();
