@@ -6,7 +6,8 @@
 // time, faces, quad share, intersecting pairs. Last, the skeleton editor's rows (SQM paper §6): the octopus
 // split to 150 nodes, one leaf dragged in 40 steps, the mesh rebuilt at every step: base mesh (goal: one
 // frame, 16 ms), K = 2 while dragging (no fold repair; goal 100 ms), K = 2 on release (with the repair),
-// beside the tube filter rebuilding its tubes of the same skeleton.
+// beside the tube filter rebuilding its tubes of the same skeleton. Without SKELETON arguments, last the
+// --union rows on the overlapping skeletons (crossing tubes, the dense tree).
 //   medial_bench_sqm [--repeat N] [SKELETON...]   (default: data/skeletons/sqm/*.vtp, figure, hand)
 #include "MedialSkeletonData.h"
 #include "MedianSeconds.h"
@@ -93,6 +94,44 @@ void refinedRows(const std::vector<std::string>& paths, int repeat) {
       std::printf("%-16s %2d | %9.1f %8lld %5.0f%% %6lld %6zu\n", name.c_str(), levels, 1e3 * seconds,
                   static_cast<long long>(s.faces), 100 * s.quadShare, static_cast<long long>(s.border),
                   intersectingPairs(sqm->GetOutput()));
+    }
+  }
+}
+
+// Overlapping tubes (issue 27): the mesh as SQM makes it and with --union, on the overlapping skeletons
+// (capsule ends, so that the volume compares with the swept spheres' union): time of each, the union's
+// share, faces, quad share and intersecting pairs before and after.
+void unionRows(int repeat) {
+  std::printf("\nSQM --union on overlapping tubes (capsules), median of %d runs\n", repeat);
+  std::printf("%-16s %2s | %9s %8s %6s | %9s %9s %8s %6s %6s %6s\n", "skeleton", "K", "SQM ms", "faces", "pairs",
+              "union ms", "of which", "faces", "quads", "border", "pairs");
+  const std::string data = std::string(MEDIAL_SOURCE_DIR) + "/data/skeletons/";
+  for (const char* name : {"overlapping/crossing.vtp", "overlapping/dense-tree.vtp"}) {
+    auto reader = vtkSmartPointer<vtkMedialReader>::New();
+    reader->SetFileName((data + name).c_str());
+    auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+    sqm->SetInputConnection(reader->GetOutputPort());
+    sqm->CapsulesOn();
+    for (int levels : {0, 2}) {
+      sqm->SetSubdivisionLevels(levels);
+      sqm->UnionOff();
+      const double plainSeconds = medianSeconds(repeat, [&] {
+        sqm->Modified();
+        sqm->Update();
+      });
+      const Summary plain = summarize(sqm->GetOutput());
+      const size_t plainPairs = intersectingPairs(sqm->GetOutput());
+      sqm->UnionOn();
+      const double unionSeconds = medianSeconds(repeat, [&] {
+        sqm->Modified();
+        sqm->Update();
+      });
+      const Summary united = summarize(sqm->GetOutput());
+      std::printf("%-16s %2d | %9.1f %8lld %6zu | %9.1f %8.0f%% %8lld %5.0f%% %6lld %6zu\n",
+                  std::strrchr(name, '/') + 1, levels, 1e3 * plainSeconds, static_cast<long long>(plain.faces),
+                  plainPairs, 1e3 * unionSeconds, 100 * sqm->GetStageSeconds("union") / unionSeconds,
+                  static_cast<long long>(united.faces), 100 * united.quadShare,
+                  static_cast<long long>(united.border), intersectingPairs(sqm->GetOutput()));
     }
   }
 }
@@ -194,12 +233,14 @@ void editorRows(int steps) {
 int main(int argc, char** argv) {
   int repeat = 200;
   std::vector<std::string> paths;
+  bool givenPaths = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc)
       repeat = std::max(1, std::atoi(argv[++i]));
     else
       paths.push_back(argv[i]);
   }
+  givenPaths = !paths.empty();
   if (paths.empty()) {
     const std::string data = std::string(MEDIAL_SOURCE_DIR) + "/data/skeletons/";
     for (const char* name : {"sqm/worm.vtp", "sqm/fish.vtp", "sqm/humanoid.vtp", "sqm/quadruped.vtp",
@@ -251,5 +292,6 @@ int main(int argc, char** argv) {
   table1(paths, repeat);
   refinedRows(paths, std::max(1, std::min(repeat, 5)));
   editorRows(std::max(3, std::min(repeat, 40)));
+  if (!givenPaths) unionRows(std::max(1, std::min(repeat, 3)));  // the whole benchmark only: seconds per run
   return 0;
 }
