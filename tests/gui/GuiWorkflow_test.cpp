@@ -230,7 +230,7 @@ TEST_F(GuiWorkflow, FormDefaultsAreTheFiltersDefaults) {
        window->objects()->at(1),
        vtkSmartPointer<vtkMedialSQM>::New(),
        vtkSmartPointer<vtkMedialSQM>::New(),
-       {}},
+       {"CountOverlaps: 1"}},
       {window->sketchPanel(),
        window->objects()->at(2),
        vtkSmartPointer<vtkMedialSketchSkeleton>::New(),
