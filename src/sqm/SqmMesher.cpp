@@ -646,6 +646,7 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
   for (size_t v = 0; v < builder.owner.size(); ++v)
     result.mesh.vertexNode[v] = prepared.origin[size_t(builder.owner[v])];
   if (p.recordStages) result.baseMesh = result.mesh;
+  RefinementReport refinement;
   if (p.subdivisionLevels > 0) {
     // The cones of the skeleton the mesh was built on (capsule nodes included, pseudo nodes left out).
     Skeleton cones = s;
@@ -655,22 +656,22 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
     for (const auto& [a, b] : prepared.cycleCuts)
       cones.edges.push_back({prepared.origin[size_t(a)], prepared.origin[size_t(b)]});
     Stopwatch clock;
-    refineSqmMesh(result.mesh, cones, p.subdivisionLevels, p.sharpScaling, p.foldRepair,
-                  &result.foldRepairedVertices);
+    refineSqmMesh(result.mesh, cones, p.subdivisionLevels, p.sharpScaling, p.foldRepair, &refinement);
+    result.foldRepairedVertices = refinement.repairedVertices;
     for (int& node : result.mesh.vertexNode) node = prepared.origin[size_t(node)];
     result.subdivisionSeconds += clock.seconds();
   }
   if (p.unite || p.countOverlaps) {
     Stopwatch clock;
+    // The fold repair's last test, when it covered the final mesh, already found the overlaps.
+    result.overlaps = refinement.overlapsKnown ? sqmOverlaps(result.mesh, refinement.overlappingFaces)
+                                               : sqmOverlaps(result.mesh);
     if (p.unite) {
       // Components smaller than a tenth of the smallest input node's ball are pockets between tubes (the
       // smallest part, a lone node, is a sphere of six quads: 0.37 of its ball).
       const double r = *std::min_element(input.radii.begin(), input.radii.end());
-      result.unionResult = unionSqmMesh(result.mesh, 0.1 * 4.0 / 3.0 * M_PI * r * r * r);
-      result.overlaps = result.unionResult.before;
+      result.unionResult = unionSqmMesh(result.mesh, 0.1 * 4.0 / 3.0 * M_PI * r * r * r, &result.overlaps);
       if (!result.unionResult.ok()) result.error = result.unionResult.error;
-    } else {
-      result.overlaps = sqmOverlaps(result.mesh);
     }
     result.unionSeconds = clock.seconds();
     if (!result.error.empty()) return result;

@@ -163,8 +163,11 @@ class FoldFinder {
   std::vector<bool> all(const std::vector<Eigen::Vector3d>& points) {
     local_.clear();
     inRegion_.assign(faces_.size(), false);
-    return folded(points, everyFace_);
+    overlaps_.clear();
+    return folded(points, everyFace_, &overlaps_);
   }
+  // The pairs of faces that cut each other without being a fold, in the last full test.
+  const std::vector<std::pair<int, int>>& overlaps() const { return overlaps_; }
   // The same, testing only the faces near the vertices folded so far; a full test when none is left.
   std::vector<bool> again(const std::vector<Eigen::Vector3d>& points, const std::vector<bool>& foldedBefore) {
     for (size_t v = 0; v < foldedBefore.size(); ++v)
@@ -181,14 +184,18 @@ class FoldFinder {
   }
 
  private:
-  std::vector<bool> folded(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& tested) const {
+  std::vector<bool> folded(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& tested,
+                           std::vector<std::pair<int, int>>* overlaps = nullptr) const {
     std::vector<std::vector<int>> faces;
     faces.reserve(tested.size());
     for (int f : tested) faces.push_back(faces_[size_t(f)]);
     std::vector<bool> result;
     for (const auto& [a, b] : selfIntersectingFaces(points, faces)) {
       const int f = tested[size_t(a)], g = tested[size_t(b)];
-      if (!isFold_(f, g)) continue;
+      if (!isFold_(f, g)) {
+        if (overlaps) overlaps->emplace_back(f, g);
+        continue;
+      }
       result.resize(points.size(), false);
       for (int h : {f, g})
         for (int v : faces_[size_t(h)]) result[size_t(v)] = true;
@@ -199,12 +206,15 @@ class FoldFinder {
   std::vector<std::vector<int>> facesOf_;  // the faces of each vertex
   IsFold isFold_;
   std::vector<int> everyFace_, local_;  // all faces; those tested again
+  std::vector<std::pair<int, int>> overlaps_;
   std::vector<bool> inRegion_;
 };
 
-// Returns the vertices moved; *settled tells whether no face cuts another any more.
+// Returns the vertices moved; *settled tells whether no face folds over another any more, and then
+// *overlaps has the pairs of faces that cut each other without being folds (the last test was a full one).
 int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& flat,
-                std::vector<Eigen::Vector3d>& points, const FoldFinder::IsFold& isFold, bool* settled) {
+                std::vector<Eigen::Vector3d>& points, const FoldFinder::IsFold& isFold, bool* settled,
+                std::vector<std::pair<int, int>>* overlaps) {
   const std::vector<Eigen::Vector3d> projected = points;
   std::vector<double> weight(points.size(), 1.0);  // 1: projected, 0: on the base mesh
   int moved = 0;
@@ -234,6 +244,7 @@ int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Ei
     folded = finder.again(points, folded);
   }
   *settled = folded.empty();
+  if (*settled) *overlaps = finder.overlaps();
   return moved;
 }
 
@@ -292,7 +303,9 @@ std::vector<std::vector<int>> levelFaces(const Far::TopologyLevel& level) {
 }  // namespace
 
 int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling,
-                  bool foldRepair, int* repairedVertices) {
+                  bool foldRepair, RefinementReport* report) {
+  RefinementReport unused;
+  if (!report) report = &unused;
   if (levels <= 0 || mesh.faces.empty()) return 0;
   const auto refiner = bilinearRefiner(mesh, levels);
   if (!refiner) return 0;
@@ -368,8 +381,11 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
         const auto isFold = [&](int f, int g) {
           return folds.isFold(nextBaseFace[size_t(f)], nextBaseFace[size_t(g)]);
         };
-        const int moved = repairFolds(levelFaces(topology), flat, projected, isFold, &settled);
-        if (repairedVertices && level == levels) *repairedVertices = moved;
+        const int moved = repairFolds(levelFaces(topology), flat, projected, isFold, &settled, &report->overlappingFaces);
+        if (level == levels) {
+          report->repairedVertices = moved;
+          report->overlapsKnown = settled;
+        }
       }
       for (size_t v = 0; v < next.size(); ++v) next[v].p = projected[v];
       points = std::move(next);

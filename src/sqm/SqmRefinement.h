@@ -26,13 +26,26 @@
 #include "skeleton/Skeleton.h"
 #include "sqm/SqmMesher.h"
 
+#include <utility>
+#include <vector>
+
 namespace medial {
 
+// What the refinement's fold repair found, beside the refined mesh.
+struct RefinementReport {
+  int repairedVertices = 0;  // vertices moved back towards the base mesh
+  // With the fold repair, its last test covered the whole final mesh: the pairs of faces that cut each
+  // other there without being folds (tubes of other parts overlapping, FoldPairs) are known, and counting
+  // them again (sqmOverlaps) is not needed.
+  bool overlapsKnown = false;
+  std::vector<std::pair<int, int>> overlappingFaces;
+};
+
 // Refines `mesh` in place; `skeleton` is the skeleton it was made from (nodes, radii, edges). With
-// `foldRepair`, vertices of faces that cut others go back towards the base mesh until none do (counted in
-// *repairedVertices). Returns the number of sharp base vertices found (0 when scaling is off).
+// `foldRepair`, vertices of faces that fold over others go back towards the base mesh until none do.
+// Returns the number of sharp base vertices found (0 when scaling is off).
 int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling = {},
-                  bool foldRepair = true, int* repairedVertices = nullptr);
+                  bool foldRepair = true, RefinementReport* report = nullptr);
 
 // B(t) of the scaling: the cubic Bézier curve with control values (s, s, 1, 1), t clamped to [0, 1].
 double sharpScaleFactor(double t, double minimumScale);

@@ -85,12 +85,13 @@ int dropPockets(std::vector<std::vector<int>>& faces, const std::vector<Eigen::V
 
 }  // namespace
 
-SqmOverlaps sqmOverlaps(const SqmMesh& mesh) {
+SqmOverlaps sqmOverlaps(const SqmMesh& mesh) { return sqmOverlaps(mesh, selfIntersectingFaces(mesh.vertices, mesh.faces)); }
+
+SqmOverlaps sqmOverlaps(const SqmMesh& mesh, const std::vector<std::pair<int, int>>& facePairs) {
   SqmOverlaps overlaps;
-  const auto pairs = selfIntersectingFaces(mesh.vertices, mesh.faces);
-  overlaps.facePairs = int(pairs.size());
+  overlaps.facePairs = int(facePairs.size());
   std::set<std::pair<int, int>> nodes;
-  for (const auto& [a, b] : pairs) {
+  for (const auto& [a, b] : facePairs) {
     const int p = mesh.faceNode(size_t(a)), q = mesh.faceNode(size_t(b));
     nodes.emplace(std::min(p, q), std::max(p, q));
   }
@@ -98,9 +99,9 @@ SqmOverlaps sqmOverlaps(const SqmMesh& mesh) {
   return overlaps;
 }
 
-SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart) {
+SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlaps* known) {
   SqmUnionResult result;
-  result.before = sqmOverlaps(mesh);
+  result.before = known ? *known : sqmOverlaps(mesh);
   if (result.before.facePairs == 0) return result;
 
   // The polygons as triangles fanned from their first vertex, each knowing its polygon.

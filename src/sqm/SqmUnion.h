@@ -34,6 +34,8 @@ struct SqmOverlaps {
 
 /// The self-intersections of an SQM mesh, counted by polygons and by the skeleton nodes they belong to.
 SqmOverlaps sqmOverlaps(const SqmMesh& mesh);
+/// The same from pairs of polygons already known to cut each other (the refinement's last fold test).
+SqmOverlaps sqmOverlaps(const SqmMesh& mesh, const std::vector<std::pair<int, int>>& facePairs);
 
 struct SqmUnionResult {
   SqmOverlaps before;          // what the mesh had
@@ -51,6 +53,7 @@ struct SqmUnionResult {
 /// without self-intersections is left as it is. On error `mesh` is left as it was.
 /// @param smallestPart a closed component (cavity or bubble) of less volume than this is dropped (SqmMesher
 ///        passes a tenth of the ball of the smallest input radius)
-SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart = 0);
+/// @param known the mesh's overlaps when already counted (else they are counted here)
+SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart = 0, const SqmOverlaps* known = nullptr);
 
 }  // namespace medial
