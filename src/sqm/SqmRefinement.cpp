@@ -42,7 +42,7 @@ constexpr int kCreaseIterations = 2;
 // outer side of a bend (the projection outside the other volume) nothing is blended: a chord there would
 // groove the tube at every node.
 SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres, const std::vector<int>& edges,
-                          Eigen::Vector3d& placed, bool* blended = nullptr) {
+                          Eigen::Vector3d& placed, bool* blended = nullptr, int* edge = nullptr) {
   static thread_local std::vector<SweptPoint> projections;  // reused: this runs for every refined vertex
   projections.clear();
   size_t nearest = 0;
@@ -61,6 +61,7 @@ SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres,
       nearest = k;
   if (projections.empty() || !candidate(projections[nearest])) return {};
   const SweptPoint& best = projections[nearest];
+  if (edge) *edge = edges[nearest];
   const Eigen::Vector3d onBest = best.onSurface();
   const double sigma = kSurfaceBlend * best.radius;
   Eigen::Vector3d sum = onBest;
@@ -129,6 +130,9 @@ namespace {
 // its surface.
 constexpr int kFoldRepairSteps = 6;
 constexpr int kFoldSmoothingSteps = 10;
+// How near (in radii of the face's nodes) a tube of another part must come to a base face for its refined
+// faces to be tested for overlaps (foldCandidates).
+constexpr double kCrowdedMargin = 0.3;
 
 std::vector<std::vector<int>> vertexNeighbours(const std::vector<std::vector<int>>& faces, size_t vertices) {
   std::vector<std::vector<int>> neighbours(vertices);
@@ -152,14 +156,13 @@ std::vector<std::vector<int>> vertexNeighbours(const std::vector<std::vector<int
 class FoldFinder {
  public:
   using IsFold = std::function<bool(int, int)>;  // of two faces that cut each other
-  FoldFinder(const std::vector<std::vector<int>>& faces, size_t vertices, IsFold isFold)
-      : faces_(faces), facesOf_(vertices), isFold_(std::move(isFold)) {
+  // `candidates`: the faces that can fold at all (FoldCandidates); the full test covers these.
+  FoldFinder(const std::vector<std::vector<int>>& faces, size_t vertices, IsFold isFold, std::vector<int> candidates)
+      : faces_(faces), facesOf_(vertices), isFold_(std::move(isFold)), everyFace_(std::move(candidates)) {
     for (size_t f = 0; f < faces.size(); ++f)
       for (int v : faces[f]) facesOf_[size_t(v)].push_back(int(f));
-    everyFace_.resize(faces.size());
-    std::iota(everyFace_.begin(), everyFace_.end(), 0);
   }
-  // Every vertex of a face that folds over another (empty when none does).
+  // Every vertex of a candidate face that folds over another (empty when none does).
   std::vector<bool> all(const std::vector<Eigen::Vector3d>& points) {
     local_.clear();
     inRegion_.assign(faces_.size(), false);
@@ -205,20 +208,61 @@ class FoldFinder {
   const std::vector<std::vector<int>>& faces_;
   std::vector<std::vector<int>> facesOf_;  // the faces of each vertex
   IsFold isFold_;
-  std::vector<int> everyFace_, local_;  // all faces; those tested again
+  std::vector<int> everyFace_, local_;  // the candidates; the faces tested again
   std::vector<std::pair<int, int>> overlaps_;
   std::vector<bool> inRegion_;
 };
 
+// The faces of a refined level that can fold or overlap at all, and two rings of faces around them: faces
+// whose vertices went onto the surfaces of edges that share no node or into a crease, faces
+// turned by the projection by more than a right angle from their place on the base mesh, and the faces of
+// base faces near tubes of other parts (`crowded`). Elsewhere every vertex of a face went onto one smooth
+// swept surface, along its normal, from a base mesh that does not cut itself: nothing there can cut
+// anything. (The octopus refined four times: 37 % of its faces are tested.)
+std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& flat,
+                                const std::vector<Eigen::Vector3d>& projected, const std::vector<int>& chosenEdge,
+                                const std::vector<char>& blended, const std::vector<int>& baseFace,
+                                const std::vector<char>& crowded, const Skeleton& skeleton) {
+  // Two edges' surfaces meet smoothly where the edges share a node (both hold its sphere).
+  auto joined = [&](int a, int b) {
+    if (a == b) return true;
+    if (a < 0 || b < 0) return false;
+    const auto &e = skeleton.edges[size_t(a)], &g = skeleton.edges[size_t(b)];
+    return e[0] == g[0] || e[0] == g[1] || e[1] == g[0] || e[1] == g[1];
+  };
+  auto normal = [](const std::vector<Eigen::Vector3d>& points, const std::vector<int>& f) {
+    return (points[size_t(f[2])] - points[size_t(f[0])]).cross(points[size_t(f[3 % f.size()])] - points[size_t(f[1])]);
+  };
+  std::vector<char> marked(flat.size(), 0);
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const auto& face = faces[f];
+    bool risky = crowded[size_t(baseFace[f])] || normal(projected, face).dot(normal(flat, face)) <= 0;
+    for (int v : face) risky = risky || blended[size_t(v)] || !joined(chosenEdge[size_t(v)], chosenEdge[size_t(face[0])]);
+    if (risky)
+      for (int v : face) marked[size_t(v)] = 1;
+  }
+  for (int ring = 0; ring < 2; ++ring) {  // grow by the faces around the marked vertices
+    std::vector<char> grown = marked;
+    for (const auto& face : faces)
+      if (std::any_of(face.begin(), face.end(), [&](int v) { return marked[size_t(v)]; }))
+        for (int v : face) grown[size_t(v)] = 1;
+    marked = std::move(grown);
+  }
+  std::vector<int> candidates;
+  for (size_t f = 0; f < faces.size(); ++f)
+    if (std::any_of(faces[f].begin(), faces[f].end(), [&](int v) { return marked[size_t(v)]; })) candidates.push_back(int(f));
+  return candidates;
+}
+
 // Returns the vertices moved; *settled tells whether no face folds over another any more, and then
 // *overlaps has the pairs of faces that cut each other without being folds (the last test was a full one).
 int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& flat,
-                std::vector<Eigen::Vector3d>& points, const FoldFinder::IsFold& isFold, bool* settled,
-                std::vector<std::pair<int, int>>* overlaps) {
+                std::vector<Eigen::Vector3d>& points, const FoldFinder::IsFold& isFold, std::vector<int> candidates,
+                bool* settled, std::vector<std::pair<int, int>>* overlaps) {
   const std::vector<Eigen::Vector3d> projected = points;
   std::vector<double> weight(points.size(), 1.0);  // 1: projected, 0: on the base mesh
   int moved = 0;
-  FoldFinder finder(faces, points.size(), isFold);
+  FoldFinder finder(faces, points.size(), isFold, std::move(candidates));
   std::vector<bool> folded = finder.all(points);
   for (int step = 0; step <= kFoldRepairSteps && !folded.empty(); ++step) {
     for (size_t v = 0; v < points.size(); ++v) {
@@ -316,6 +360,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
   // the overlap is SqmUnion's work).
   const double largestRadius = *std::max_element(skeleton.radii.begin(), skeleton.radii.end());
   std::vector<std::vector<int>> nearEdges;
+  std::vector<char> crowded(mesh.faces.size(), 0);  // near tubes of other parts
   for (size_t f = 0; f < mesh.faces.size(); ++f) {
     Eigen::Vector3d low = mesh.vertices[size_t(mesh.faces[f][0])], high = low;
     double radius = 0;
@@ -334,6 +379,12 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
                                                      !folds.near(node, skeleton.edges[size_t(e)][1]);
                                             }),
                              nearEdges.back().end());
+    // Crowded: a tube of another part comes near the face (its refined surface bulges out of the base
+    // face by a fraction of the radius), where tubes can overlap.
+    const std::vector<int> close = spheres.edgesNear(low, high, kCrowdedMargin * radius);
+    crowded[f] = std::any_of(close.begin(), close.end(), [&](int e) {
+      return std::find(nearEdges.back().begin(), nearEdges.back().end(), e) == nearEdges.back().end();
+    });
   }
   const std::vector<Eigen::Vector3d> sharp = scaling.enabled ? sharpVertices(mesh) : std::vector<Eigen::Vector3d>{};
 
@@ -360,12 +411,15 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
       primvars.InterpolateFaceUniform(level, baseFace, nextBaseFace);
       // The paper's tessellation: the bilinear points of the faces, projected onto the swept surfaces.
       std::vector<Eigen::Vector3d> flat(next.size()), projected(next.size());
+      std::vector<int> chosenEdge(next.size(), -1);
+      std::vector<char> blended(next.size(), 0);
       inParallel(next.size(), [&](size_t v) {
         const Eigen::Vector3d p = next[v].p;
         const std::vector<int>& edges = nearEdges[size_t(nextBaseFace[size_t(topology.GetVertexFaces(int(v))[0])])];
         Eigen::Vector3d q = p;
         bool inCrease = false;
-        const SweptPoint surface = nearestSurface(p, spheres, edges, q, &inCrease);
+        const SweptPoint surface = nearestSurface(p, spheres, edges, q, &inCrease, &chosenEdge[v]);
+        blended[v] = inCrease;
         for (int again = 0; again < kCreaseIterations && inCrease; ++again) {  // further into the crease
           const Eigen::Vector3d from = q;
           nearestSurface(from, spheres, edges, q, &inCrease);
@@ -381,7 +435,10 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
         const auto isFold = [&](int f, int g) {
           return folds.isFold(nextBaseFace[size_t(f)], nextBaseFace[size_t(g)]);
         };
-        const int moved = repairFolds(levelFaces(topology), flat, projected, isFold, &settled, &report->overlappingFaces);
+        const auto faces = levelFaces(topology);
+        const int moved = repairFolds(faces, flat, projected, isFold,
+                                      foldCandidates(faces, flat, projected, chosenEdge, blended, nextBaseFace, crowded, skeleton),
+                                      &settled, &report->overlappingFaces);
         if (level == levels) {
           report->repairedVertices = moved;
           report->overlapsKnown = settled;
