@@ -15,9 +15,14 @@ std::vector<std::pair<int, int>> selfIntersectingFaces(const std::vector<Eigen::
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Surface = CGAL::Surface_mesh<Kernel::Point_3>;
   Surface surface;
-  std::vector<Surface::Vertex_index> handles;
-  handles.reserve(vertices.size());
-  for (const auto& v : vertices) handles.push_back(surface.add_vertex(Kernel::Point_3(v.x(), v.y(), v.z())));
+  // Only the vertices the faces use (a few faces of a large mesh are tested again and again).
+  std::vector<Surface::Vertex_index> handles(vertices.size(), Surface::null_vertex());
+  for (const auto& f : faces)
+    for (const auto v : f)
+      if (handles[size_t(v)] == Surface::null_vertex()) {
+        const Eigen::Vector3d& p = vertices[size_t(v)];
+        handles[size_t(v)] = surface.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z()));
+      }
   // Each triangle remembers its polygon. add_face refuses a triangle that would break the surface's
   // manifold structure (a repeated vertex, an edge used twice in one direction): it is left out.
   auto polygon = surface.add_property_map<Surface::Face_index, int>("f:polygon", -1).first;

@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -549,14 +550,21 @@ namespace {
 
 // Vertices where other than four edges meet (the paper's Table 1 counts them: where quads are not a grid).
 int countIrregularVertices(const SqmMesh& mesh) {
-  std::vector<std::set<int>> neighbours(mesh.vertices.size());
+  // The edges once each (as sorted keys: a set per vertex took 0.3 s on 262k quads), then each vertex's.
+  std::vector<uint64_t> edges;
   for (const auto& f : mesh.faces)
     for (size_t k = 0; k < f.size(); ++k) {
-      neighbours[size_t(f[k])].insert(f[(k + 1) % f.size()]);
-      neighbours[size_t(f[(k + 1) % f.size()])].insert(f[k]);
+      const uint64_t a = uint64_t(f[k]), b = uint64_t(f[(k + 1) % f.size()]);
+      edges.push_back(std::min(a, b) << 32 | std::max(a, b));
     }
-  return int(std::count_if(neighbours.begin(), neighbours.end(),
-                           [](const std::set<int>& n) { return !n.empty() && n.size() != 4; }));
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<int> degree(mesh.vertices.size(), 0);
+  for (const uint64_t e : edges) {
+    ++degree[size_t(e >> 32)];
+    ++degree[size_t(e & 0xffffffffu)];
+  }
+  return int(std::count_if(degree.begin(), degree.end(), [](int d) { return d != 0 && d != 4; }));
 }
 
 }  // namespace

@@ -42,7 +42,8 @@ constexpr int kCreaseIterations = 2;
 // outer side of a bend (the projection outside the other volume) nothing is blended: a chord there would
 // groove the tube at every node.
 SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres, const std::vector<int>& edges,
-                          Eigen::Vector3d& placed, bool* blended = nullptr, int* edge = nullptr) {
+                          Eigen::Vector3d& placed, bool* blended = nullptr, int* edge = nullptr,
+                          int* partner = nullptr) {
   static thread_local std::vector<SweptPoint> projections;  // reused: this runs for every refined vertex
   projections.clear();
   size_t nearest = 0;
@@ -65,7 +66,7 @@ SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres,
   const Eigen::Vector3d onBest = best.onSurface();
   const double sigma = kSurfaceBlend * best.radius;
   Eigen::Vector3d sum = onBest;
-  double weights = 1;
+  double weights = 1, strongest = 0;
   for (size_t k = 0; k < projections.size(); ++k) {
     if (k == nearest || !projections[k].found) continue;
     const double w = std::exp(-(gap(projections[k]) - gap(best)) / sigma);
@@ -74,6 +75,10 @@ SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres,
     if (!around.found || around.distance >= around.radius) continue;  // outside it: the outer side
     sum += w * projections[k].onSurface();
     weights += w;
+    if (partner && w > strongest) {
+      strongest = w;
+      *partner = edges[k];
+    }
   }
   placed = sum / weights;
   if (blended) *blended = weights > 1;
@@ -133,6 +138,8 @@ constexpr int kFoldSmoothingSteps = 10;
 // How near (in radii of the face's nodes) a tube of another part must come to a base face for its refined
 // faces to be tested for overlaps (foldCandidates).
 constexpr double kCrowdedMargin = 0.3;
+// Rings of faces around the faces that can fold, tested with them (the other face of a fold).
+constexpr int kCandidateRings = 1;
 
 std::vector<std::vector<int>> vertexNeighbours(const std::vector<std::vector<int>>& faces, size_t vertices) {
   std::vector<std::vector<int>> neighbours(vertices);
@@ -158,10 +165,7 @@ class FoldFinder {
   using IsFold = std::function<bool(int, int)>;  // of two faces that cut each other
   // `candidates`: the faces that can fold at all (FoldCandidates); the full test covers these.
   FoldFinder(const std::vector<std::vector<int>>& faces, size_t vertices, IsFold isFold, std::vector<int> candidates)
-      : faces_(faces), facesOf_(vertices), isFold_(std::move(isFold)), everyFace_(std::move(candidates)) {
-    for (size_t f = 0; f < faces.size(); ++f)
-      for (int v : faces[f]) facesOf_[size_t(v)].push_back(int(f));
-  }
+      : faces_(faces), vertices_(vertices), isFold_(std::move(isFold)), everyFace_(std::move(candidates)) {}
   // Every vertex of a candidate face that folds over another (empty when none does).
   std::vector<bool> all(const std::vector<Eigen::Vector3d>& points) {
     local_.clear();
@@ -173,6 +177,11 @@ class FoldFinder {
   const std::vector<std::pair<int, int>>& overlaps() const { return overlaps_; }
   // The same, testing only the faces near the vertices folded so far; a full test when none is left.
   std::vector<bool> again(const std::vector<Eigen::Vector3d>& points, const std::vector<bool>& foldedBefore) {
+    if (facesOf_.empty()) {  // built once folds are found (most meshes have none)
+      facesOf_.resize(vertices_);
+      for (size_t f = 0; f < faces_.size(); ++f)
+        for (int v : faces_[f]) facesOf_[size_t(v)].push_back(int(f));
+    }
     for (size_t v = 0; v < foldedBefore.size(); ++v)
       if (foldedBefore[v])
         for (int f : facesOf_[v])
@@ -206,6 +215,7 @@ class FoldFinder {
     return result;
   }
   const std::vector<std::vector<int>>& faces_;
+  size_t vertices_;
   std::vector<std::vector<int>> facesOf_;  // the faces of each vertex
   IsFold isFold_;
   std::vector<int> everyFace_, local_;  // the candidates; the faces tested again
@@ -213,8 +223,24 @@ class FoldFinder {
   std::vector<bool> inRegion_;
 };
 
-// The faces of a refined level that can fold or overlap at all, and two rings of faces around them: faces
-// whose vertices went onto the surfaces of edges that share no node or into a crease, faces
+// Two edges meeting at a node at less than kGentleBend degrees: their swept surfaces join smoothly there.
+constexpr double kGentleBend = 30;
+bool gentleBend(const Skeleton& skeleton, int e, int g) {
+  const auto &a = skeleton.edges[size_t(e)], &b = skeleton.edges[size_t(g)];
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      if (a[size_t(i)] == b[size_t(j)]) {
+        const Eigen::Vector3d& shared = skeleton.nodes[size_t(a[size_t(i)])];
+        const Eigen::Vector3d in = (shared - skeleton.nodes[size_t(a[size_t(1 - i)])]).normalized();
+        const Eigen::Vector3d out = (skeleton.nodes[size_t(b[size_t(1 - j)])] - shared).normalized();
+        return in.dot(out) > std::cos(kGentleBend * M_PI / 180);
+      }
+  return false;
+}
+
+// The faces of a refined level that can fold or overlap at all, and a ring of faces around them: faces
+// whose vertices went onto the surfaces of edges that share no node or into a crease (not the inner side
+// of a gentle bend), faces
 // turned by the projection by more than a right angle from their place on the base mesh, and the faces of
 // base faces near tubes of other parts (`crowded`). Elsewhere every vertex of a face went onto one smooth
 // swept surface, along its normal, from a base mesh that does not cut itself: nothing there can cut
@@ -241,7 +267,7 @@ std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces, cons
     if (risky)
       for (int v : face) marked[size_t(v)] = 1;
   }
-  for (int ring = 0; ring < 2; ++ring) {  // grow by the faces around the marked vertices
+  for (int ring = 0; ring < kCandidateRings; ++ring) {  // grow by the faces around the marked vertices
     std::vector<char> grown = marked;
     for (const auto& face : faces)
       if (std::any_of(face.begin(), face.end(), [&](int v) { return marked[size_t(v)]; }))
@@ -276,7 +302,7 @@ int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Ei
   // A fold of the base mesh itself (two faces almost coplanar across a sharp vertex, once on the hand
   // sample) shows once its quads are split: the vertices still folded move to the centroid of their
   // neighbours, at most kFoldSmoothingSteps times.
-  const auto neighbours = vertexNeighbours(faces, points.size());
+  const auto neighbours = folded.empty() ? std::vector<std::vector<int>>{} : vertexNeighbours(faces, points.size());
   for (int step = 0; step < kFoldSmoothingSteps && !folded.empty(); ++step) {
     const std::vector<Eigen::Vector3d> before = points;
     for (size_t v = 0; v < points.size(); ++v) {
@@ -418,8 +444,10 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
         const std::vector<int>& edges = nearEdges[size_t(nextBaseFace[size_t(topology.GetVertexFaces(int(v))[0])])];
         Eigen::Vector3d q = p;
         bool inCrease = false;
-        const SweptPoint surface = nearestSurface(p, spheres, edges, q, &inCrease, &chosenEdge[v]);
-        blended[v] = inCrease;
+        int partner = -1;
+        const SweptPoint surface = nearestSurface(p, spheres, edges, q, &inCrease, &chosenEdge[v], &partner);
+        // In a crease between tubes, but for the inner side of a gentle bend along a chain.
+        blended[v] = inCrease && !(partner >= 0 && gentleBend(skeleton, chosenEdge[v], partner));
         for (int again = 0; again < kCreaseIterations && inCrease; ++again) {  // further into the crease
           const Eigen::Vector3d from = q;
           nearestSurface(from, spheres, edges, q, &inCrease);
@@ -437,7 +465,8 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
         };
         const auto faces = levelFaces(topology);
         const int moved = repairFolds(faces, flat, projected, isFold,
-                                      foldCandidates(faces, flat, projected, chosenEdge, blended, nextBaseFace, crowded, skeleton),
+                                      foldCandidates(faces, flat, projected, chosenEdge, blended, nextBaseFace,
+                                                     crowded, skeleton),
                                       &settled, &report->overlappingFaces);
         if (level == levels) {
           report->repairedVertices = moved;
