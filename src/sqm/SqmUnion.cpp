@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -81,6 +82,58 @@ int dropPockets(std::vector<std::vector<int>>& faces, const std::vector<Eigen::V
   faces.erase(std::remove_if(faces.begin(), faces.end(), [&](const auto& f) { return flat.count(components.find(f[0])) > 0; }),
               faces.end());
   return int(flat.size());
+}
+
+// Where the chosen patches leave edges open (a patch of one tiny triangle between three curves whose test
+// points saw the same side, or whose triangles rounded flat: once on the dense tree refined three times), a
+// dropped patch all of whose open boundary edges it would close, and no others open, is kept, turned the
+// way that closes them.
+void closeOpenEdges(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& patch,
+                    std::map<int, int>& sideOf) {
+  // Each triangle's edges as (low << 32 | high, +1 for low->high, -1 against), of the kept triangles summed.
+  auto edgesOf = [&](size_t t, int sign, std::vector<std::pair<uint64_t, int>>& out) {
+    for (int k = 0; k < 3; ++k) {
+      const uint64_t a = uint64_t(triangles[t][size_t(k)]), b = uint64_t(triangles[t][size_t((k + 1) % 3)]);
+      out.emplace_back(std::min(a, b) << 32 | std::max(a, b), a < b ? sign : -sign);
+    }
+  };
+  std::vector<std::pair<uint64_t, int>> kept;
+  std::map<int, std::vector<size_t>> dropped;
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const int side = sideOf[patch[t]];
+    if (side != 0) edgesOf(t, side, kept);
+    else dropped[patch[t]].push_back(t);
+  }
+  std::sort(kept.begin(), kept.end());
+  std::map<uint64_t, int> open;  // edge -> net direction of the kept triangles, where it is not 0
+  for (size_t i = 0; i < kept.size();) {
+    size_t j = i;
+    int net = 0;
+    for (; j < kept.size() && kept[j].first == kept[i].first; ++j) net += kept[j].second;
+    if (net != 0) open[kept[i].first] = net;
+    i = j;
+  }
+  for (auto& [root, members] : dropped) {
+    std::vector<std::pair<uint64_t, int>> edges;
+    for (size_t t : members) edgesOf(t, 1, edges);
+    std::map<uint64_t, int> own;  // the patch's boundary, as it is (its inner edges cancel)
+    for (const auto& [e, c] : edges) own[e] += c;
+    bool touchesOpen = false;
+    for (const auto& [e, c] : own) touchesOpen |= c != 0 && open.count(e) > 0;
+    if (!touchesOpen) continue;
+    for (const int sign : {1, -1}) {
+      bool closes = true;
+      for (const auto& [e, c] : own) {
+        const auto found = open.find(e);
+        if (c != 0) closes &= (found != open.end() ? found->second : 0) + sign * c == 0;
+      }
+      if (!closes) continue;
+      sideOf[root] = sign;
+      for (const auto& [e, c] : own)
+        if (c != 0) open.erase(e);
+      break;
+    }
+  }
 }
 
 }  // namespace
@@ -225,9 +278,12 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
                                 return x.second < y.second;
                               })->first;
   });
-  result.selectionSeconds = clock.seconds() - result.autorefineSeconds;
   std::map<int, int> sideOf;
   for (size_t k = 0; k < patches.size(); ++k) sideOf[patches[k].first] = side[k];
+  std::vector<int> patch(triangles.size());
+  for (size_t t = 0; t < triangles.size(); ++t) patch[t] = patchOf.find(int(t));
+  closeOpenEdges(triangles, patch, sideOf);
+  result.selectionSeconds = clock.seconds() - result.autorefineSeconds;
 
   // Whole polygons back where all their triangles are kept, uncut and the same way round.
   std::vector<int> keptTriangles(mesh.faces.size(), 0), turnedTriangles(mesh.faces.size(), 0);
