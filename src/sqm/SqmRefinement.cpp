@@ -1,6 +1,7 @@
 #include "sqm/SqmRefinement.h"
 
 #include "mesh/SelfIntersections.h"
+#include "common/Parallel.h"
 #include "sqm/FoldPairs.h"
 #include "sqm/SweptSpheres.h"
 
@@ -14,7 +15,6 @@
 #include <map>
 #include <memory>
 #include <numeric>
-#include <thread>
 #include <vector>
 
 namespace medial {
@@ -324,21 +324,6 @@ int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Ei
   *settled = folded.empty();
   if (*settled) *overlaps = finder.overlaps();
   return moved;
-}
-
-// Runs work(i) for i in [0, count) on every core (the projection of a level's vertices: independent).
-void inParallel(size_t count, const std::function<void(size_t)>& work) {
-  const size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 16);
-  if (threads == 1 || count < 4096) {
-    for (size_t i = 0; i < count; ++i) work(i);
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (size_t t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (size_t i = t * count / threads; i < (t + 1) * count / threads; ++i) work(i);
-    });
-  for (auto& thread : pool) thread.join();
 }
 
 // A vertex as OpenSubdiv's PrimvarRefiner interpolates it.

@@ -3,6 +3,7 @@
 #include "mesh/InsideTest.h"
 #include "mesh/MeshTopology.h"
 #include "mesh/SelfIntersections.h"
+#include "common/Parallel.h"
 #include "common/Stopwatch.h"
 #include "common/UnionFind.h"
 
@@ -20,7 +21,6 @@
 #include <memory>
 #include <numeric>
 #include <set>
-#include <thread>
 
 namespace medial {
 
@@ -47,17 +47,6 @@ struct CutTracker : PMP::Corefinement::Default_visitor<Surface> {
     cut[piece] = true;
   }
 };
-
-// Runs work(i) for i in [0, count) on every core.
-void inParallel(size_t count, const std::function<void(size_t)>& work) {
-  const size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 16);
-  std::vector<std::thread> pool;
-  for (size_t t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (size_t i = t; i < count; i += threads) work(i);
-    });
-  for (auto& thread : pool) thread.join();
-}
 
 // Drops the closed components that enclose no volume (two sheets kept where tubes just touch) or less
 // than `smallestPart`, a cavity or a bubble (pockets left where three tubes meet: 6 cavities of 1e-5 or
@@ -262,7 +251,7 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
   for (size_t t = 0; t < triangles.size(); ++t)
     refined.faces.row(Eigen::Index(t)) << triangles[t][0], triangles[t][1], triangles[t][2];
   const InsideTest winding(refined);
-  inParallel(patches.size(), [&](size_t k) {
+  inParallel(patches.size(), [&](size_t k) {  // each patch: six rays through the whole mesh
     std::map<int, int> votes;
     for (const int sample : patches[k].second) {
       const size_t t = size_t(sample);
@@ -277,7 +266,7 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
                             : std::max_element(votes.begin(), votes.end(), [](const auto& x, const auto& y) {
                                 return x.second < y.second;
                               })->first;
-  });
+  }, 2);
   std::map<int, int> sideOf;
   for (size_t k = 0; k < patches.size(); ++k) sideOf[patches[k].first] = side[k];
   std::vector<int> patch(triangles.size());

@@ -7,6 +7,7 @@
 #include "MedialMeshData.h"
 #include "MedialSkeletonData.h"
 #include "mesh/InsideTest.h"
+#include "mesh/MeshGeometry.h"
 #include "mesh/MeshTopology.h"
 #include "mesh/SelfIntersections.h"
 #include "skeleton/Skeleton.h"
@@ -72,14 +73,6 @@ double sweptVolume(const medial::Skeleton& s) {
   return (high - low).prod() * inside / samples;
 }
 
-double enclosedVolume(const std::vector<Eigen::Vector3d>& points, const std::vector<std::vector<int64_t>>& faces) {
-  double volume = 0;
-  for (const auto& f : faces)
-    for (size_t k = 1; k + 1 < f.size(); ++k)
-      volume += points[size_t(f[0])].dot(points[size_t(f[k])].cross(points[size_t(f[k + 1])])) / 6;
-  return volume;
-}
-
 }  // namespace
 
 TEST_P(SqmUnion, OverlapsBecomeOneClosedSurfaceAroundTheSkeleton) {
@@ -128,13 +121,14 @@ TEST_P(SqmUnion, OverlapsBecomeOneClosedSurfaceAroundTheSkeleton) {
   }
   // Every node inside, now that inside has a meaning (unrefined and without capsules, a leaf's fan has its
   // apex at the leaf: the leaves are on the surface then).
-  const medial::InsideTest inside(medial::toTriangleMesh(medial::triangulated(mesh)));
+  const medial::TriangleMesh triangles = medial::toTriangleMesh(medial::triangulated(mesh));
+  const medial::InsideTest inside(triangles);
   const std::vector<int> degree = medial::nodeDegrees(skeleton);
   int outside = 0;
   for (size_t n = 0; n < skeleton.nodes.size(); ++n)
     if (degree[n] >= 2 || c.levels > 0 || c.capsules) outside += !inside.contains(skeleton.nodes[n]);
   EXPECT_EQ(outside, 0);
-  const double volume = enclosedVolume(points, faces);
+  const double volume = medial::enclosedVolume(triangles.vertices, triangles.faces);
   const double swept = sweptVolume(skeleton);
   std::printf("%s: %d overlapping face pairs, %d cut polygons; %zu faces, %.0f %% quads, volume %.4g = %.3f of "
               "the swept spheres' union (sampled), %.2f s\n",
