@@ -2,9 +2,12 @@
 """Benchmark: SQM (vtkMedialSQM) against Blender's Skin modifier on the same skeletons, in one run.
 
 Blender's Skin modifier is what a DCC user reaches for to turn a skeleton with radii into a tube mesh. Per
-skeleton: faces, quad share, open (border) and non-manifold edges, and median seconds of each (Blender's
-the modifier's evaluation inside Blender 3.4 run headless, not its start-up), and the time ratio
-Blender / SQM. Needs `blender` on the PATH (Debian's Blender 3.4); without it the script says so and exits 0.
+skeleton: faces, quad share, open (border) and non-manifold edges, pairs of faces that cut each other (CGAL's
+exact test, vtkMedialMeshTopology), and median seconds of each (Blender's the modifier's evaluation inside
+Blender 3.4 run headless, not its start-up), and the time ratio Blender / SQM. The skeletons whose tubes overlap
+(data/skeletons/overlapping) get a second SQM row with the union (SetUnion): the only row of the two tools whose
+mesh bounds a volume there. Needs `blender` on the PATH (Debian's Blender 3.4); without it the script says so
+and exits 0.
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 bench/sqm_blender_bench.py [--repeat N] [SKELETON...]
 """
 import argparse
@@ -25,10 +28,12 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "data", "skeletons")
 DEFAULT = [os.path.join(DATA, "sqm", n + ".vtp") for n in ("worm", "fish", "humanoid", "quadruped", "octopus",
                                                           "cycle", "pretzel")] + \
-          [os.path.join(DATA, "figure.vtp"), os.path.join(DATA, "hand.swc")]
+          [os.path.join(DATA, "figure.vtp"), os.path.join(DATA, "hand.swc")] + \
+          [os.path.join(DATA, "overlapping", n + ".vtp") for n in ("crossing", "dense-tree")]
 
 # Runs inside Blender: one object per skeleton with a Skin modifier (radius per vertex, a root per
-# component), evaluated `repeat` times; prints one MEDIAL-SKIN line of JSON per skeleton.
+# component), evaluated `repeat` times; prints one MEDIAL-SKIN line of JSON per skeleton, with the evaluated
+# mesh's vertices and polygons (their self-intersections are counted outside Blender).
 BLENDER_SCRIPT = r'''
 import bpy, json, sys, time
 skeletons = json.load(open(sys.argv[sys.argv.index("--") + 1]))
@@ -61,6 +66,8 @@ for s in skeletons:
     print("MEDIAL-SKIN " + json.dumps({"name": s["name"], "faces": faces, "quads": quads,
                                        "open": sum(1 for c in use.values() if c == 1),
                                        "nonmanifold": sum(1 for c in use.values() if c > 2),
+                                       "vertices": [list(v.co) for v in result.vertices],
+                                       "polygons": [list(p.vertices) for p in result.polygons],
                                        "seconds": sorted(seconds)[len(seconds) // 2]}), flush=True)
 '''
 
@@ -90,9 +97,19 @@ def read_skeleton(path):
     return data, {"name": os.path.basename(path), "nodes": nodes, "edges": edges, "radii": radii, "roots": roots}
 
 
-def sqm_row(skeleton, repeat):
+def intersecting_pairs(mesh):
+    """Pairs of faces of `mesh` that cut each other (CGAL's exact test) and its topology."""
+    topology = medial.vtkMedialMeshTopology()
+    topology.SetInputData(mesh)
+    topology.CountSelfIntersectionsOn()
+    topology.Update()
+    return topology
+
+
+def sqm_row(skeleton, repeat, union=False):
     sqm = medial.vtkMedialSQM()
     sqm.SetInputData(skeleton)
+    sqm.SetUnion(union)
     seconds = []
     for _ in range(repeat):
         sqm.Modified()
@@ -100,12 +117,28 @@ def sqm_row(skeleton, repeat):
         sqm.Update()
         seconds.append(time.perf_counter() - start)
     mesh = sqm.GetOutput()
-    topology = medial.vtkMedialMeshTopology()
-    topology.SetInputData(mesh)
-    topology.Update()
+    topology = intersecting_pairs(mesh)
     quads = sum(1 for c in range(mesh.GetNumberOfCells()) if mesh.GetCell(c).GetNumberOfPoints() == 4)
     return {"faces": mesh.GetNumberOfCells(), "quads": quads, "open": topology.GetNumberOfBorderEdges(),
-            "nonmanifold": topology.GetNumberOfNonManifoldEdges(), "seconds": statistics.median(seconds)}
+            "nonmanifold": topology.GetNumberOfNonManifoldEdges(),
+            "pairs": topology.GetNumberOfIntersectingFacePairs(), "seconds": statistics.median(seconds)}
+
+
+def skin_pairs(report):
+    """The intersecting face pairs of Blender's evaluated mesh."""
+    points, polygons = vtk.vtkPoints(), vtk.vtkCellArray()
+    for v in report["vertices"]:
+        points.InsertNextPoint(v)
+    for p in report["polygons"]:
+        polygons.InsertNextCell(len(p), p)
+    mesh = vtk.vtkPolyData()
+    mesh.SetPoints(points)
+    mesh.SetPolys(polygons)
+    return intersecting_pairs(mesh).GetNumberOfIntersectingFacePairs()
+
+
+def overlapping(path):
+    return os.path.basename(os.path.dirname(os.path.abspath(path))) == "overlapping"
 
 
 def main():
@@ -120,6 +153,8 @@ def main():
     for path in args.skeletons:
         data, skeleton = read_skeleton(path)
         rows[skeleton["name"]] = sqm_row(data, args.repeat)
+        if overlapping(path):  # the union, beside Blender's same row
+            rows[skeleton["name"] + " union"] = sqm_row(data, max(1, min(args.repeat, 3)), union=True)
         skeletons.append(skeleton)
     with tempfile.TemporaryDirectory(prefix="medial-skin-") as folder:
         spec, script = os.path.join(folder, "skeletons.json"), os.path.join(folder, "skin.py")
@@ -136,18 +171,21 @@ def main():
             report = json.loads(line[len("MEDIAL-SKIN "):])
             skin[report["name"]] = report
     print("SQM (vtkMedialSQM) vs Blender 3.4's Skin modifier, median of %d runs" % args.repeat)
-    print("%-14s | %8s %6s %5s %5s %5s | %8s %6s %5s %5s %5s | %9s" % (
-        "skeleton", "SQM ms", "faces", "quads", "open", "nonm", "Skin ms", "faces", "quads", "open", "nonm",
-        "Skin/SQM"))
+    print("%-20s | %8s %6s %5s %5s %5s %6s | %8s %6s %5s %5s %5s %6s | %9s" % (
+        "skeleton", "SQM ms", "faces", "quads", "open", "nonm", "pairs", "Skin ms", "faces", "quads", "open", "nonm",
+        "pairs", "Skin/SQM"))
     for name, ours in rows.items():
-        peer = skin.get(name)
+        peer = skin.get(name.replace(" union", ""))
         if not peer:
-            print("%-14s | Blender reported nothing:\n%s" % (name, done.stderr[-2000:]))
+            print("%-20s | Blender reported nothing:\n%s" % (name, done.stderr[-2000:]))
             continue
-        print("%-14s | %8.2f %6d %4.0f%% %5d %5d | %8.2f %6d %4.0f%% %5d %5d | %9.2f" % (
+        if "pairs" not in peer:
+            peer["pairs"] = skin_pairs(peer)
+        print("%-20s | %8.2f %6d %4.0f%% %5d %5d %6d | %8.2f %6d %4.0f%% %5d %5d %6d | %9.2f" % (
             name, 1e3 * ours["seconds"], ours["faces"], 100.0 * ours["quads"] / max(1, ours["faces"]), ours["open"],
-            ours["nonmanifold"], 1e3 * peer["seconds"], peer["faces"], 100.0 * peer["quads"] / max(1, peer["faces"]),
-            peer["open"], peer["nonmanifold"], peer["seconds"] / ours["seconds"]))
+            ours["nonmanifold"], ours["pairs"], 1e3 * peer["seconds"], peer["faces"],
+            100.0 * peer["quads"] / max(1, peer["faces"]), peer["open"], peer["nonmanifold"], peer["pairs"],
+            peer["seconds"] / ours["seconds"]))
     return 0
 
 

@@ -2,6 +2,7 @@
 
 #include "MedialMeshData.h"
 #include "mesh/MeshTopology.h"
+#include "mesh/SelfIntersections.h"
 
 #include <vtkCellArray.h>
 #include <vtkFieldData.h>
@@ -25,6 +26,8 @@ void vtkMedialMeshTopology::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "EulerCharacteristic: " << this->EulerCharacteristic << "\n";
   os << indent << "Genus: " << this->Genus << "\n";
   os << indent << "ClosedManifold: " << this->ClosedManifold << "\n";
+  os << indent << "CountSelfIntersections: " << this->CountSelfIntersections << "\n";
+  os << indent << "NumberOfIntersectingFacePairs: " << this->NumberOfIntersectingFacePairs << "\n";
 }
 
 namespace {
@@ -56,6 +59,11 @@ int vtkMedialMeshTopology::RequestData(vtkInformation*, vtkInformationVector** i
   this->EulerCharacteristic = t.eulerCharacteristic;
   this->Genus = t.genus;
   this->ClosedManifold = t.isClosedManifold();
+  this->NumberOfIntersectingFacePairs = -1;
+  if (this->CountSelfIntersections) {
+    this->UpdateProgress(0.4);
+    this->NumberOfIntersectingFacePairs = vtkIdType(medial::selfIntersectingFaces(medial::pointsOf(input), faces).size());
+  }
 
   output->ShallowCopy(input);
   // A field data of our own: the shallow copy may share the input's, which must not change.
@@ -68,6 +76,7 @@ int vtkMedialMeshTopology::RequestData(vtkInformation*, vtkInformationVector** i
   addCount(fieldData, "BorderEdges", t.borderEdges);
   addCount(fieldData, "NonManifoldEdges", t.nonManifoldEdges);
   addCount(fieldData, "BoundaryLoops", t.boundaryLoops);
+  if (this->CountSelfIntersections) addCount(fieldData, "IntersectingFacePairs", this->NumberOfIntersectingFacePairs);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -6,6 +6,9 @@
  * `Components`, `BorderEdges`, `NonManifoldEdges`, `BoundaryLoops`; the same values are available through
  * the getters after an update. Polygons and triangle strips count as faces; lines and vertices are
  * ignored. Genus is the sum over components of (2 - chi - b) / 2, meaningful for manifold meshes.
+ * With CountSelfIntersections on, it also counts the pairs of faces that cut each other (CGAL's exact
+ * test, src/mesh/SelfIntersections.h; field array `IntersectingFacePairs`): a closed manifold whose faces
+ * cut each other bounds no volume (what SQM's union and Blender's Skin modifier are compared on).
  * Implements medial::computeMeshTopology (src/mesh/MeshTopology.h).
  */
 #pragma once
@@ -30,6 +33,15 @@ class MEDIALFILTERS_EXPORT vtkMedialMeshTopology : public vtkPolyDataAlgorithm {
   /// No border and no non-manifold edge, and at least one face.
   vtkGetMacro(ClosedManifold, bool);
 
+  /// Also count the pairs of faces that cut each other (off by default: n log n, but far slower than the
+  /// rest). Default false.
+  vtkSetMacro(CountSelfIntersections, bool);
+  vtkGetMacro(CountSelfIntersections, bool);
+  vtkBooleanMacro(CountSelfIntersections, bool);
+  /// Pairs of faces that cut each other (faces sharing a vertex or an edge only where they overlap beyond
+  /// it); -1 when not counted.
+  vtkGetMacro(NumberOfIntersectingFacePairs, vtkIdType);
+
  protected:
   vtkMedialMeshTopology() = default;
   ~vtkMedialMeshTopology() override = default;
@@ -48,4 +60,6 @@ class MEDIALFILTERS_EXPORT vtkMedialMeshTopology : public vtkPolyDataAlgorithm {
   vtkIdType EulerCharacteristic = 0;
   vtkIdType Genus = 0;
   bool ClosedManifold = false;
+  bool CountSelfIntersections = false;
+  vtkIdType NumberOfIntersectingFacePairs = -1;
 };

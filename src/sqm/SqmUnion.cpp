@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <array>
@@ -125,108 +126,116 @@ void closeOpenEdges(const std::vector<std::array<int, 3>>& triangles, const std:
   }
 }
 
-}  // namespace
-
-SqmOverlaps sqmOverlaps(const SqmMesh& mesh) { return sqmOverlaps(mesh, selfIntersectingFaces(mesh.vertices, mesh.faces)); }
-
-SqmOverlaps sqmOverlaps(const SqmMesh& mesh, const std::vector<std::pair<int, int>>& facePairs) {
-  SqmOverlaps overlaps;
-  overlaps.facePairs = int(facePairs.size());
-  std::set<std::pair<int, int>> nodes;
-  for (const auto& [a, b] : facePairs) {
-    const int p = mesh.faceNode(size_t(a)), q = mesh.faceNode(size_t(b));
-    nodes.emplace(std::min(p, q), std::max(p, q));
-  }
-  overlaps.nodePairs = int(nodes.size());
-  return overlaps;
-}
-
-SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlaps* known) {
-  SqmUnionResult result;
-  result.before = known ? *known : sqmOverlaps(mesh);
-  if (result.before.facePairs == 0) return result;
-
-  // The polygons as triangles fanned from their first vertex, each knowing its polygon.
+// Stage 1: the polygons as triangles fanned from their first vertex in an exact surface, each knowing its
+// polygon and each vertex its index in the SQM mesh.
+struct ExactSurface {
   Surface surface;
-  auto source = surface.add_property_map<Vertex, int>("v:source", -1).first;
-  std::vector<Vertex> handles;
-  handles.reserve(mesh.vertices.size());
+  Surface::Property_map<Vertex, int> source;  // the SQM mesh's vertex, -1 for a vertex on a curve
+  Surface::Property_map<Surface::Edge_index, bool> curve;
+  std::vector<Vertex> handles;  // of the SQM mesh's vertices
+  CutTracker tracker;
+};
+
+bool buildSurface(const SqmMesh& mesh, ExactSurface& exact, std::string& error) {
+  Surface& surface = exact.surface;
+  exact.source = surface.add_property_map<Vertex, int>("v:source", -1).first;
+  exact.handles.reserve(mesh.vertices.size());
   for (size_t v = 0; v < mesh.vertices.size(); ++v) {
     const Eigen::Vector3d& p = mesh.vertices[v];
-    handles.push_back(surface.add_vertex(Exact::Point_3(p.x(), p.y(), p.z())));
-    source[handles.back()] = int(v);
+    exact.handles.push_back(surface.add_vertex(Exact::Point_3(p.x(), p.y(), p.z())));
+    exact.source[exact.handles.back()] = int(v);
   }
-  CutTracker tracker;
-  tracker.polygon = surface.add_property_map<Face, int>("f:polygon", -1).first;
-  tracker.cut = surface.add_property_map<Face, bool>("f:cut", false).first;
+  exact.tracker.polygon = surface.add_property_map<Face, int>("f:polygon", -1).first;
+  exact.tracker.cut = surface.add_property_map<Face, bool>("f:cut", false).first;
+  exact.curve = surface.add_property_map<Surface::Edge_index, bool>("e:curve", false).first;
   for (size_t f = 0; f < mesh.faces.size(); ++f)
     for (size_t k = 1; k + 1 < mesh.faces[f].size(); ++k) {
-      const Face t = surface.add_face(handles[size_t(mesh.faces[f][0])], handles[size_t(mesh.faces[f][k])],
-                                      handles[size_t(mesh.faces[f][k + 1])]);
+      const auto& face = mesh.faces[f];
+      const Face t = surface.add_face(exact.handles[size_t(face[0])], exact.handles[size_t(face[k])],
+                                      exact.handles[size_t(face[k + 1])]);
       if (t == Surface::null_face()) {
-        result.error = "the mesh is not a manifold (polygon " + std::to_string(f) + "): no union";
-        return result;
+        error = "the mesh is not a manifold (polygon " + std::to_string(f) + "): no union";
+        return false;
       }
-      tracker.polygon[t] = int(f);
+      exact.tracker.polygon[t] = int(f);
     }
-  // Every intersection curve becomes edges (marked), no two triangles cut each other any more.
-  auto curve = surface.add_property_map<Surface::Edge_index, bool>("e:curve", false).first;
-  Stopwatch clock;
-  PMP::experimental::autorefine(surface, CGAL::parameters::visitor(tracker).edge_is_constrained_map(curve));
-  result.autorefineSeconds = clock.seconds();
+  // Winding numbers mean something only for a closed surface.
+  if (!CGAL::is_closed(surface)) {
+    error = "the mesh has open edges (no volume to unite): no union";
+    return false;
+  }
+  return true;
+}
 
-  // Doubles, once; a vertex on an intersection curve has no source.
-  // (Indices of their own: the surface may hold removed elements.)
-  std::vector<int> vertexIndex(surface.number_of_vertices() + surface.number_of_removed_vertices(), -1);
-  std::vector<int> triangleIndex(surface.number_of_faces() + surface.number_of_removed_faces(), -1);
+// Stage 3: the cut surface in doubles, rounded once: its points (one per point: the autorefinement leaves
+// each intersection curve once in each of the two sheets that cross there), their skeleton nodes and the
+// triangles. (Indices of their own: the surface may hold removed elements.)
+struct RoundedSurface {
   std::vector<Eigen::Vector3d> points;
-  std::vector<int> node;
+  std::vector<int> node;                        // per point; -1 a capsule node
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<Face> faceOf;                     // per triangle
+  std::vector<int> vertexIndex, triangleIndex;  // by the surface's vertex and face index
+};
+
+RoundedSurface roundedSurface(const ExactSurface& exact, const SqmMesh& mesh) {
+  const Surface& surface = exact.surface;
+  RoundedSurface r;
+  r.vertexIndex.assign(surface.number_of_vertices() + surface.number_of_removed_vertices(), -1);
+  r.triangleIndex.assign(surface.number_of_faces() + surface.number_of_removed_faces(), -1);
+  constexpr int kNone = -2;  // a curve vertex before it takes a neighbour's node
   for (const Vertex v : surface.vertices()) {
-    vertexIndex[size_t(v)] = int(points.size());
+    r.vertexIndex[size_t(v)] = int(r.points.size());
     const auto& p = surface.point(v);
-    points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    node.push_back(source[v] >= 0 ? mesh.vertexNode[size_t(source[v])] : -2);
+    r.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    r.node.push_back(exact.source[v] >= 0 ? mesh.vertexNode[size_t(exact.source[v])] : kNone);
   }
   // Curve vertices take the smallest node among their neighbours that have one.
   for (bool changed = true; changed;) {
     changed = false;
     for (const Vertex v : surface.vertices()) {
-      int& mine = node[size_t(vertexIndex[size_t(v)])];
-      if (mine != -2) continue;
+      int& mine = r.node[size_t(r.vertexIndex[size_t(v)])];
+      if (mine != kNone) continue;
       for (const Vertex u : CGAL::vertices_around_target(surface.halfedge(v), surface)) {
-        const int theirs = node[size_t(vertexIndex[size_t(u)])];
-        if (theirs != -2 && (mine == -2 || theirs < mine)) mine = theirs;
+        const int theirs = r.node[size_t(r.vertexIndex[size_t(u)])];
+        if (theirs != kNone && (mine == kNone || theirs < mine)) mine = theirs;
       }
-      changed |= mine != -2;
+      changed |= mine != kNone;
     }
   }
-  // The autorefinement leaves each intersection curve once in each of the two sheets that cross there:
-  // vertices at the same point become one (the exact points round to the same doubles).
+  for (int& n : r.node) n = std::max(n, -1);
+  // Vertices at the same point become one (the exact points round to the same doubles).
   std::map<std::array<double, 3>, int> atPoint;
-  std::vector<int> merged(points.size());
-  for (size_t v = 0; v < points.size(); ++v)
-    merged[v] = atPoint.emplace(std::array<double, 3>{points[v].x(), points[v].y(), points[v].z()}, int(v)).first->second;
-  for (const Vertex v : surface.vertices()) vertexIndex[size_t(v)] = merged[size_t(vertexIndex[size_t(v)])];
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<Face> faceOf;
+  std::vector<int> merged(r.points.size());
+  for (size_t v = 0; v < r.points.size(); ++v)
+    merged[v] = atPoint.emplace(std::array<double, 3>{r.points[v].x(), r.points[v].y(), r.points[v].z()}, int(v))
+                    .first->second;
+  for (const Vertex v : surface.vertices()) r.vertexIndex[size_t(v)] = merged[size_t(r.vertexIndex[size_t(v)])];
   for (const Face f : surface.faces()) {
-    triangleIndex[size_t(f)] = int(triangles.size());
-    faceOf.push_back(f);
+    r.triangleIndex[size_t(f)] = int(r.triangles.size());
+    r.faceOf.push_back(f);
     std::array<int, 3> t;
     int k = 0;
     for (const Vertex v : CGAL::vertices_around_face(surface.halfedge(f), surface))
-      t[size_t(k++)] = vertexIndex[size_t(v)];
-    triangles.push_back(t);
+      t[size_t(k++)] = r.vertexIndex[size_t(v)];
+    r.triangles.push_back(t);
   }
+  return r;
+}
 
-  // Patches: triangles joined across edges that are not on an intersection curve. A patch bounds the
-  // union where the winding number is >= 1 on one side of it and 0 on the other (tested just off its
-  // largest triangle); it is turned over where the solid lies in front of it (a fold's pocket).
+// Stage 4: the side of each triangle: 1 kept, -1 kept turned over, 0 dropped. Patches are triangles joined
+// across edges that are not on an intersection curve; a patch bounds the union where the winding number
+// is >= 1 on one side of it and 0 on the other (tested just off its largest triangles); it is turned over
+// where the solid lies in front of it (a fold's pocket).
+std::vector<int> triangleSides(const ExactSurface& exact, const RoundedSurface& r) {
+  const Surface& surface = exact.surface;
+  const auto& points = r.points;
+  const auto& triangles = r.triangles;
   UnionFind patchOf(triangles.size());
   for (const Surface::Edge_index e : surface.edges())
-    if (!curve[e])
-      patchOf.join(triangleIndex[size_t(surface.face(surface.halfedge(e)))],
-                   triangleIndex[size_t(surface.face(surface.opposite(surface.halfedge(e))))]);
+    if (!exact.curve[e] && !surface.is_border(e))
+      patchOf.join(r.triangleIndex[size_t(surface.face(surface.halfedge(e)))],
+                   r.triangleIndex[size_t(surface.face(surface.opposite(surface.halfedge(e))))]);
   // Each patch votes with its three largest triangles (a sample point next to another sheet may see the
   // wrong side).
   std::map<int, std::vector<int>> largest;  // patch root -> its largest triangles, largest first
@@ -243,7 +252,7 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
     if (samples.size() > 3) samples.pop_back();
   }
   std::vector<std::pair<int, std::vector<int>>> patches(largest.begin(), largest.end());
-  std::vector<int> side(patches.size());  // 1: keep, -1: keep turned over, 0: drop
+  std::vector<int> side(patches.size());
   TriangleMesh refined;
   refined.vertices.resize(Eigen::Index(points.size()), 3);
   for (size_t v = 0; v < points.size(); ++v) refined.vertices.row(Eigen::Index(v)) = points[v];
@@ -272,16 +281,22 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
   std::vector<int> patch(triangles.size());
   for (size_t t = 0; t < triangles.size(); ++t) patch[t] = patchOf.find(int(t));
   closeOpenEdges(triangles, patch, sideOf);
-  result.selectionSeconds = clock.seconds() - result.autorefineSeconds;
+  std::vector<int> triangleSide(triangles.size());
+  for (size_t t = 0; t < triangles.size(); ++t) triangleSide[t] = sideOf[patch[t]];
+  return triangleSide;
+}
 
-  // Whole polygons back where all their triangles are kept, uncut and the same way round.
+// Stage 5: the kept triangles as polygons: a polygon none of whose triangles was cut comes back whole
+// where all its triangles are kept the same way round; the others as triangles. Counts what was cut,
+// removed and turned in `result`.
+SqmMesh keptPolygons(const SqmMesh& mesh, const ExactSurface& exact, const RoundedSurface& r,
+                     const std::vector<int>& triangleSide, SqmUnionResult& result) {
+  const CutTracker& tracker = exact.tracker;
   std::vector<int> keptTriangles(mesh.faces.size(), 0), turnedTriangles(mesh.faces.size(), 0);
   std::vector<bool> polygonCut(mesh.faces.size(), false);
-  std::vector<int> triangleSide(triangles.size());
-  for (size_t t = 0; t < triangles.size(); ++t) {
-    const Face f = faceOf[t];
+  for (size_t t = 0; t < r.triangles.size(); ++t) {
+    const Face f = r.faceOf[t];
     const size_t p = size_t(tracker.polygon[f]);
-    triangleSide[t] = sideOf[patchOf.find(int(t))];
     if (tracker.cut[f]) polygonCut[p] = true;
     else if (triangleSide[t] != 0) ++(triangleSide[t] > 0 ? keptTriangles[p] : turnedTriangles[p]);
   }
@@ -290,19 +305,18 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
     return !polygonCut[p] && (keptTriangles[p] == needed || turnedTriangles[p] == needed);
   };
   SqmMesh united;
-  united.vertices = points;
-  united.vertexNode.assign(node.begin(), node.end());
-  for (int& n : united.vertexNode) n = std::max(n, -1);
+  united.vertices = r.points;
+  united.vertexNode = r.node;
   std::vector<bool> emitted(mesh.faces.size(), false);
-  for (size_t t = 0; t < triangles.size(); ++t) {
+  for (size_t t = 0; t < r.triangles.size(); ++t) {
     if (triangleSide[t] == 0) continue;
-    const size_t p = size_t(tracker.polygon[faceOf[t]]);
+    const size_t p = size_t(tracker.polygon[r.faceOf[t]]);
     std::vector<int> polygon;
     if (!whole(p)) {
-      polygon.assign(triangles[t].begin(), triangles[t].end());
+      polygon.assign(r.triangles[t].begin(), r.triangles[t].end());
     } else if (!emitted[p]) {
       emitted[p] = true;
-      for (const int v : mesh.faces[p]) polygon.push_back(vertexIndex[size_t(handles[size_t(v)])]);
+      for (const int v : mesh.faces[p]) polygon.push_back(r.vertexIndex[size_t(exact.handles[size_t(v)])]);
     } else {
       continue;
     }
@@ -314,10 +328,11 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
     else if (keptTriangles[p] + turnedTriangles[p] == 0) ++result.removedPolygons;
     if (!polygonCut[p] && turnedTriangles[p] > 0) ++result.turnedPolygons;
   }
+  return united;
+}
 
-  result.droppedPockets = dropPockets(united.faces, united.vertices, smallestPart);
-
-  // Drop the vertices of removed parts.
+// The mesh without the vertices no face uses (those of removed parts).
+SqmMesh withoutUnusedVertices(SqmMesh united) {
   std::vector<int> used(united.vertices.size(), -1);
   SqmMesh compact;
   for (auto& face : united.faces)
@@ -330,6 +345,44 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
       v = used[size_t(v)];
     }
   compact.faces = std::move(united.faces);
+  return compact;
+}
+
+}  // namespace
+
+SqmOverlaps sqmOverlaps(const SqmMesh& mesh) { return sqmOverlaps(mesh, selfIntersectingFaces(mesh.vertices, mesh.faces)); }
+
+SqmOverlaps sqmOverlaps(const SqmMesh& mesh, const std::vector<std::pair<int, int>>& facePairs) {
+  SqmOverlaps overlaps;
+  overlaps.facePairs = int(facePairs.size());
+  std::set<std::pair<int, int>> nodes;
+  for (const auto& [a, b] : facePairs) {
+    const int p = mesh.faceNode(size_t(a)), q = mesh.faceNode(size_t(b));
+    nodes.emplace(std::min(p, q), std::max(p, q));
+  }
+  overlaps.nodePairs = int(nodes.size());
+  return overlaps;
+}
+
+SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlaps* known) {
+  SqmUnionResult result;
+  result.before = known ? *known : sqmOverlaps(mesh);
+  if (result.before.facePairs == 0) return result;
+
+  ExactSurface exact;
+  if (!buildSurface(mesh, exact, result.error)) return result;
+  // Stage 2: every intersection curve becomes edges (marked), no two triangles cut each other any more.
+  Stopwatch clock;
+  PMP::experimental::autorefine(exact.surface,
+                                CGAL::parameters::visitor(exact.tracker).edge_is_constrained_map(exact.curve));
+  result.autorefineSeconds = clock.seconds();
+  const RoundedSurface rounded = roundedSurface(exact, mesh);
+  const std::vector<int> sides = triangleSides(exact, rounded);
+  result.selectionSeconds = clock.seconds() - result.autorefineSeconds;
+
+  SqmMesh united = keptPolygons(mesh, exact, rounded, sides, result);
+  result.droppedPockets = dropPockets(united.faces, united.vertices, smallestPart);
+  SqmMesh compact = withoutUnusedVertices(std::move(united));
 
   std::vector<std::vector<int64_t>> faces64;
   for (const auto& face : compact.faces) faces64.emplace_back(face.begin(), face.end());

@@ -50,7 +50,8 @@ struct SqmUnionResult {
 };
 
 /// Replaces `mesh` by the boundary of the union of the volumes its overlapping parts enclose. A mesh
-/// without self-intersections is left as it is. On error `mesh` is left as it was.
+/// without self-intersections is left as it is. An open mesh (no volume to unite) and a union that is not a
+/// closed manifold (sheets touching along a line) are errors; on error `mesh` is left as it was.
 /// @param smallestPart a closed component (cavity or bubble) of less volume than this is dropped (SqmMesher
 ///        passes a tenth of the ball of the smallest input radius)
 /// @param known the mesh's overlaps when already counted (else they are counted here)
