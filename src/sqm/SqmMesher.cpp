@@ -550,20 +550,11 @@ namespace {
 
 // Vertices where other than four edges meet (the paper's Table 1 counts them: where quads are not a grid).
 int countIrregularVertices(const SqmMesh& mesh) {
-  // The edges once each (as sorted keys: a set per vertex took 0.3 s on 262k quads), then each vertex's.
-  std::vector<uint64_t> edges;
-  for (const auto& f : mesh.faces)
-    for (size_t k = 0; k < f.size(); ++k) {
-      const uint64_t a = uint64_t(f[k]), b = uint64_t(f[(k + 1) % f.size()]);
-      edges.push_back(std::min(a, b) << 32 | std::max(a, b));
-    }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  // SQM's mesh is closed and manifold: around each vertex, faces and edges alternate, so its valence is
+  // the number of its faces (sorting the edges to count them took 8 % of the octopus refined four times).
   std::vector<int> degree(mesh.vertices.size(), 0);
-  for (const uint64_t e : edges) {
-    ++degree[size_t(e >> 32)];
-    ++degree[size_t(e & 0xffffffffu)];
-  }
+  for (const auto& f : mesh.faces)
+    for (const int v : f) ++degree[size_t(v)];
   return int(std::count_if(degree.begin(), degree.end(), [](int d) { return d != 0 && d != 4; }));
 }
 

@@ -67,8 +67,13 @@ SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres,
   const double sigma = kSurfaceBlend * best.radius;
   Eigen::Vector3d sum = onBest;
   double weights = 1, strongest = 0;
+  // Where p lies outside edge k's volume by more than its gap to the nearest surface, the point there is
+  // outside k's volume too (one edge's volume is convex: its signed distance changes no faster than the
+  // point moves); no need to project it (most candidates are such: 5.8 of 6.8 on the octopus).
+  const bool exactDistances = spheres.skeleton().ellipsoidAxes.empty();
   for (size_t k = 0; k < projections.size(); ++k) {
     if (k == nearest || !projections[k].found) continue;
+    if (exactDistances && projections[k].signedDistance() > gap(best)) continue;
     const double w = std::exp(-(gap(projections[k]) - gap(best)) / sigma);
     if (w < 1e-6) continue;
     const SweptPoint around = spheres.project(onBest, edges[k]);
