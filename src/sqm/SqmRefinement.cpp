@@ -417,6 +417,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
   // the hand refined four times).
   std::vector<RefinedPoint> points;  // projected
   std::vector<int> baseFace;
+  std::vector<std::vector<int>> lastFaces;  // the last level's, once the repair has listed them
   const Far::PrimvarRefinerReal<double> primvars(*refiner);
   auto runLevels = [&](bool repairEveryLevel) {
     points.clear();
@@ -461,7 +462,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
         const auto isFold = [&](int f, int g) {
           return folds.isFold(nextBaseFace[size_t(f)], nextBaseFace[size_t(g)]);
         };
-        const auto faces = levelFaces(topology);
+        auto faces = levelFaces(topology);
         const int moved = repairFolds(faces, flat, projected, isFold,
                                       foldCandidates(faces, flat, projected, chosenEdge, blended, nextBaseFace,
                                                      crowded, skeleton),
@@ -469,6 +470,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
         if (level == levels) {
           report->repairedVertices = moved;
           report->overlapsKnown = settled;
+          lastFaces = std::move(faces);
         }
       }
       for (size_t v = 0; v < next.size(); ++v) next[v].p = projected[v];
@@ -481,7 +483,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
   if (!runLevels(false)) runLevels(true);
   // Back to plain arrays; a vertex belongs to the nearest node among the ends of its face's edges.
   const Far::TopologyLevel& last = refiner->GetLevel(levels);
-  mesh.faces = levelFaces(last);
+  mesh.faces = lastFaces.empty() ? levelFaces(last) : std::move(lastFaces);
   mesh.vertices.clear();
   mesh.vertexNode.clear();
   for (int v = 0; v < last.GetNumVertices(); ++v) {
