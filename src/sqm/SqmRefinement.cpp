@@ -354,9 +354,19 @@ std::unique_ptr<Far::TopologyRefiner> bilinearRefiner(const SqmMesh& mesh, int l
       Factory::Create(descriptor, Factory::Options(Sdc::SCHEME_BILINEAR, Sdc::Options())));
   if (!refiner) return nullptr;
   Far::TopologyRefiner::UniformOptions uniform(levels);
-  uniform.fullTopologyInLastLevel = true;
+  // The last level keeps only its faces' vertices (the full topology there held more memory than the
+  // mesh; first runs paid for it in page faults): faces per vertex come from vertexFaces().
+  uniform.fullTopologyInLastLevel = false;
   refiner->RefineUniform(uniform);
   return refiner;
+}
+
+// One face of each vertex of a level (the first that lists it).
+std::vector<int> vertexFaces(const Far::TopologyLevel& level) {
+  std::vector<int> face(size_t(level.GetNumVertices()), -1);
+  for (int f = level.GetNumFaces() - 1; f >= 0; --f)
+    for (const int v : level.GetFaceVertices(f)) face[size_t(v)] = f;
+  return face;
 }
 
 std::vector<std::vector<int>> levelFaces(const Far::TopologyLevel& level) {
@@ -436,11 +446,12 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
       primvars.InterpolateFaceUniform(level, baseFace, nextBaseFace);
       // The paper's tessellation: the bilinear points of the faces, projected onto the swept surfaces.
       std::vector<Eigen::Vector3d> flat(next.size()), projected(next.size());
+      const std::vector<int> faceOfVertex = vertexFaces(topology);
       std::vector<int> chosenEdge(next.size(), -1);
       std::vector<char> blended(next.size(), 0);
       inParallel(next.size(), [&](size_t v) {
         const Eigen::Vector3d p = next[v].p;
-        const std::vector<int>& edges = nearEdges[size_t(nextBaseFace[size_t(topology.GetVertexFaces(int(v))[0])])];
+        const std::vector<int>& edges = nearEdges[size_t(nextBaseFace[size_t(faceOfVertex[v])])];
         Eigen::Vector3d q = p;
         bool inCrease = false;
         int partner = -1;
@@ -486,12 +497,13 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
   mesh.faces = lastFaces.empty() ? levelFaces(last) : std::move(lastFaces);
   mesh.vertices.clear();
   mesh.vertexNode.clear();
+  const std::vector<int> faceOfVertex = vertexFaces(last);
   for (int v = 0; v < last.GetNumVertices(); ++v) {
     const Eigen::Vector3d& p = points[size_t(v)].p;
     mesh.vertices.push_back(p);
     int nearest = -1;
     auto distance = [&](int node) { return (skeleton.nodes[size_t(node)] - p).squaredNorm(); };
-    for (int e : nearEdges[size_t(baseFace[size_t(last.GetVertexFaces(v)[0])])])
+    for (int e : nearEdges[size_t(baseFace[size_t(faceOfVertex[size_t(v)])])])
       for (int node : skeleton.edges[size_t(e)])
         if (nearest < 0 || distance(node) < distance(nearest)) nearest = node;
     if (nearest < 0)  // no edge near: a lone node's sphere
