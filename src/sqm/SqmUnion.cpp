@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <memory>
@@ -52,7 +53,8 @@ struct CutTracker : PMP::Corefinement::Default_visitor<Surface> {
 // Drops the closed components that enclose no volume (two sheets kept where tubes just touch) or less
 // than `smallestPart`, a cavity or a bubble (pockets left where three tubes meet: 6 cavities of 1e-5 or
 // less on the dense tree refined twice, 4 bubbles of 1e-9 from folds refined three times); returns how many.
-int dropPockets(std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& points, double smallestPart) {
+int dropPockets(std::vector<std::vector<int>>& faces, std::vector<char>& band, const std::vector<Eigen::Vector3d>& points,
+                double smallestPart) {
   UnionFind components(points.size());
   for (const auto& f : faces)
     for (size_t k = 1; k < f.size(); ++k) components.join(f[k], f[0]);
@@ -69,8 +71,14 @@ int dropPockets(std::vector<std::vector<int>>& faces, const std::vector<Eigen::V
   for (const auto& [root, va] : volumeAndArea)
     if (std::abs(va.first) <= 1e-6 * std::pow(va.second, 1.5) || std::abs(va.first) < smallestPart)
       flat.insert(root);
-  faces.erase(std::remove_if(faces.begin(), faces.end(), [&](const auto& f) { return flat.count(components.find(f[0])) > 0; }),
-              faces.end());
+  size_t kept = 0;
+  for (size_t f = 0; f < faces.size(); ++f)
+    if (!flat.count(components.find(faces[f][0]))) {
+      if (kept != f) faces[kept] = std::move(faces[f]);  // (a vector moved onto itself is emptied)
+      band[kept++] = band[f];
+    }
+  faces.resize(kept);
+  band.resize(kept);
   return int(flat.size());
 }
 
@@ -176,6 +184,7 @@ struct RoundedSurface {
   std::vector<std::array<int, 3>> triangles;
   std::vector<Face> faceOf;                     // per triangle
   std::vector<int> vertexIndex, triangleIndex;  // by the surface's vertex and face index
+  std::vector<std::pair<int, int>> curves;      // the intersection curves' edges
 };
 
 RoundedSurface roundedSurface(const ExactSurface& exact, const SqmMesh& mesh) {
@@ -211,6 +220,9 @@ RoundedSurface roundedSurface(const ExactSurface& exact, const SqmMesh& mesh) {
     merged[v] = atPoint.emplace(std::array<double, 3>{r.points[v].x(), r.points[v].y(), r.points[v].z()}, int(v))
                     .first->second;
   for (const Vertex v : surface.vertices()) r.vertexIndex[size_t(v)] = merged[size_t(r.vertexIndex[size_t(v)])];
+  for (const auto e : surface.edges())
+    if (exact.curve[e])
+      r.curves.emplace_back(r.vertexIndex[size_t(surface.vertex(e, 0))], r.vertexIndex[size_t(surface.vertex(e, 1))]);
   for (const Face f : surface.faces()) {
     r.triangleIndex[size_t(f)] = int(r.triangles.size());
     r.faceOf.push_back(f);
@@ -287,10 +299,10 @@ std::vector<int> triangleSides(const ExactSurface& exact, const RoundedSurface& 
 }
 
 // Stage 5: the kept triangles as polygons: a polygon none of whose triangles was cut comes back whole
-// where all its triangles are kept the same way round; the others as triangles. Counts what was cut,
-// removed and turned in `result`.
+// where all its triangles are kept the same way round; the others as triangles, flagged in `band`. Counts
+// what was cut, removed and turned in `result`.
 SqmMesh keptPolygons(const SqmMesh& mesh, const ExactSurface& exact, const RoundedSurface& r,
-                     const std::vector<int>& triangleSide, SqmUnionResult& result) {
+                     const std::vector<int>& triangleSide, std::vector<char>& band, SqmUnionResult& result) {
   const CutTracker& tracker = exact.tracker;
   std::vector<int> keptTriangles(mesh.faces.size(), 0), turnedTriangles(mesh.faces.size(), 0);
   std::vector<bool> polygonCut(mesh.faces.size(), false);
@@ -321,6 +333,7 @@ SqmMesh keptPolygons(const SqmMesh& mesh, const ExactSurface& exact, const Round
       continue;
     }
     if (triangleSide[t] < 0) std::reverse(polygon.begin(), polygon.end());
+    band.push_back(polygon.size() == 3 && !whole(p));
     united.faces.push_back(polygon);
   }
   for (size_t p = 0; p < mesh.faces.size(); ++p) {
@@ -331,9 +344,17 @@ SqmMesh keptPolygons(const SqmMesh& mesh, const ExactSurface& exact, const Round
   return united;
 }
 
-// The mesh without the vertices no face uses (those of removed parts).
-SqmMesh withoutUnusedVertices(SqmMesh united) {
-  std::vector<int> used(united.vertices.size(), -1);
+MeshTopology topologyOf(const SqmMesh& mesh) {
+  std::vector<std::vector<int64_t>> faces;
+  faces.reserve(mesh.faces.size());
+  for (const auto& face : mesh.faces) faces.emplace_back(face.begin(), face.end());
+  return computeMeshTopology(int64_t(mesh.vertices.size()), faces);
+}
+
+// The mesh without the vertices no face uses (those of removed parts); `used` maps the old indices to
+// the new ones (-1: dropped).
+SqmMesh withoutUnusedVertices(SqmMesh united, std::vector<int>& used) {
+  used.assign(united.vertices.size(), -1);
   SqmMesh compact;
   for (auto& face : united.faces)
     for (int& v : face) {
@@ -380,19 +401,40 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
   const std::vector<int> sides = triangleSides(exact, rounded);
   result.selectionSeconds = clock.seconds() - result.autorefineSeconds;
 
-  SqmMesh united = keptPolygons(mesh, exact, rounded, sides, result);
-  result.droppedPockets = dropPockets(united.faces, united.vertices, smallestPart);
-  SqmMesh compact = withoutUnusedVertices(std::move(united));
-
-  std::vector<std::vector<int64_t>> faces64;
-  for (const auto& face : compact.faces) faces64.emplace_back(face.begin(), face.end());
-  const MeshTopology topology = computeMeshTopology(int64_t(compact.vertices.size()), faces64);
+  std::vector<char> band;
+  SqmMesh united = keptPolygons(mesh, exact, rounded, sides, band, result);
+  result.droppedPockets = dropPockets(united.faces, band, united.vertices, smallestPart);
+  std::vector<int> used;
+  SqmMesh compact = withoutUnusedVertices(std::move(united), used);
+  const MeshTopology topology = topologyOf(compact);
   if (!topology.isClosedManifold()) {
     result.error = "the union is not a closed manifold (" + std::to_string(topology.borderEdges) + " border and " +
                    std::to_string(topology.nonManifoldEdges) + " non-manifold edges): no union";
     return result;
   }
   result.intersectingAfter = int(selfIntersectingFaces(compact.vertices, compact.faces).size());
+
+  // Stage 6: the cut triangles along the curves cleaned; kept where the mesh stays a closed manifold that
+  // cuts itself no more than before.
+  const double cleanupStart = clock.seconds();
+  std::vector<std::pair<int, int>> curves;
+  for (const auto& [a, b] : rounded.curves)
+    if (used[size_t(a)] >= 0 && used[size_t(b)] >= 0) curves.emplace_back(used[size_t(a)], used[size_t(b)]);
+  SqmMesh cleaned = compact;
+  result.cleanup = cleanCurveBands(cleaned, band, curves);
+  if (result.cleanup.applied && topologyOf(cleaned).isClosedManifold()) {
+    const int intersecting = int(selfIntersectingFaces(cleaned.vertices, cleaned.faces).size());
+    if (intersecting <= result.intersectingAfter) {
+      compact = std::move(cleaned);
+      result.intersectingAfter = intersecting;
+    } else {
+      result.cleanup.applied = false;
+    }
+  } else {
+    result.cleanup.applied = false;
+  }
+  if (!result.cleanup.applied) result.cleanup.sliversAfter = result.cleanup.sliversBefore;
+  result.cleanupSeconds = clock.seconds() - cleanupStart;
   mesh = std::move(compact);
   return result;
 }

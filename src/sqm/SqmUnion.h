@@ -12,13 +12,15 @@
 // turned over if the solid lies in front of it (a fold's pocket). So a tube inside another disappears, a
 // cavity enclosed by tubes stays (facing into it), and folds of the refinement are resolved with the
 // overlaps; closed components that enclose no volume (sheets that only touch) or less than a given
-// volume (a cavity where three tubes meet, a bubble of a fold) are dropped. A polygon
-// none of whose triangles was cut or dropped comes back whole, so quads stay quads away from the
-// intersection curves; the cut ones stay as CGAL's triangles. A vertex keeps its skeleton node; a vertex
-// created on an intersection curve takes the smallest node among its neighbours. Coordinates are rounded
-// to doubles once (CGAL's are exact), and the result is tested again for faces cutting each other.
+// volume (a cavity where three tubes meet, a bubble of a fold) are dropped. A polygon none of whose
+// triangles was cut or dropped comes back whole, so quads stay quads away from the intersection curves; the
+// cut ones' triangles are cleaned along the curves (CurveCleanup), kept where the mesh stays a closed
+// manifold that cuts itself no more than before. A vertex keeps its skeleton node; a vertex created on an
+// intersection curve takes the smallest node among its neighbours. Coordinates are rounded to doubles once
+// (CGAL's are exact), and the result is tested again for faces cutting each other.
 #pragma once
 
+#include "sqm/CurveCleanup.h"
 #include "sqm/SqmMesh.h"
 
 #include <string>
@@ -44,6 +46,8 @@ struct SqmUnionResult {
   int turnedPolygons = 0;      // polygons turned over (the solid lay in front of them)
   int droppedPockets = 0;      // closed components enclosing no volume or less than the smallest part, dropped
   double autorefineSeconds = 0, selectionSeconds = 0;  // CGAL's cutting; the winding numbers
+  CurveCleanup cleanup;  // the cut triangles along the curves (CurveCleanup)
+  double cleanupSeconds = 0;
   int intersectingAfter = 0;   // face pairs still cutting each other after rounding (0 expected)
   std::string error;           // when the union is not a closed manifold (tubes touching along a line)
   bool ok() const { return error.empty(); }

@@ -11,6 +11,7 @@
 #include "mesh/MeshTopology.h"
 #include "mesh/SelfIntersections.h"
 #include "skeleton/Skeleton.h"
+#include "sqm/CurveCleanup.h"
 #include "sqm/SweptSpheres.h"
 #include "vtkMedialMeshTopology.h"
 #include "vtkMedialReader.h"
@@ -37,6 +38,7 @@ struct OverlapCase {
   std::string path;  // a skeleton file, or a sketch (.txt) whose skeleton is meshed
   int levels;
   bool capsules;  // the swept spheres' union has round ends: compare volumes with capsules only
+  double sliverShare = 0.3;  // at most this share of the triangles are slivers (without the cleanup: 42-49 %)
 };
 
 std::ostream& operator<<(std::ostream& os, const OverlapCase& c) { return os << c.name; }
@@ -140,6 +142,20 @@ TEST_P(SqmUnion, OverlapsBecomeOneClosedSurfaceAroundTheSkeleton) {
   for (size_t n = 0; n < skeleton.nodes.size(); ++n)
     if (degree[n] >= 2 || c.levels > 0 || c.capsules) outside += !inside.contains(skeleton.nodes[n]);
   EXPECT_EQ(outside, 0);
+  // Along the curves a clean triangulation (CurveCleanup): few slivers (an angle under 10 degrees) among
+  // the triangles. Not yet on the dense tree (sheets touch at points there, which OpenMesh refuses) and the
+  // hand refined twice (the cleaned mesh cut itself and was not used): no bound there.
+  medial::SqmMesh plain;
+  plain.vertices = points;
+  for (const auto& f : faces) plain.faces.emplace_back(f.begin(), f.end());
+  int triangleCount = 0, slivers = 0;
+  for (size_t f = 0; f < plain.faces.size(); ++f)
+    if (plain.faces[f].size() == 3) {
+      ++triangleCount;
+      slivers += medial::smallestAngle(plain, f) < medial::kSliverDegrees;
+    }
+  std::printf("%s: %d triangles, %d slivers\n", c.name, triangleCount, slivers);
+  EXPECT_LE(slivers, c.sliverShare * triangleCount);
   const double volume = medial::enclosedVolume(triangles.vertices, triangles.faces);
   const double swept = sweptVolume(skeleton);
   std::printf("%s: %d overlapping face pairs, %d cut polygons; %zu faces, %.0f %% quads, volume %.4g = %.3f of "
@@ -156,9 +172,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(OverlapCase{"crossing tubes", "skeletons/overlapping/crossing.vtp", 0, false},
                       OverlapCase{"crossing tubes refined twice", "skeletons/overlapping/crossing.vtp", 2, true},
                       OverlapCase{"crossing tubes refined three times", "skeletons/overlapping/crossing.vtp", 3, true},
-                      OverlapCase{"dense tree refined twice", "skeletons/overlapping/dense-tree.vtp", 2, true},
+                      OverlapCase{"dense tree refined twice", "skeletons/overlapping/dense-tree.vtp", 2, true, 1.0},
                       OverlapCase{"hand sketch", "sketches/hand.txt", 0, false},
-                      OverlapCase{"hand sketch refined twice", "sketches/hand.txt", 2, true}),
+                      OverlapCase{"hand sketch refined twice", "sketches/hand.txt", 2, true, 1.0}),
     [](const ::testing::TestParamInfo<OverlapCase>& info) {
       std::string name = info.param.name;
       std::replace(name.begin(), name.end(), ' ', '_');

@@ -1,0 +1,236 @@
+#include "sqm/CurveCleanup.h"
+
+#include "sqm/BranchNodePolyhedron.h"  // BnpMesh: OpenMesh's triangle mesh with double points
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace medial {
+
+namespace {
+
+using Mesh = BnpMesh;
+using VH = OpenMesh::VertexHandle;
+using HH = OpenMesh::HalfedgeHandle;
+using EH = OpenMesh::EdgeHandle;
+using FH = OpenMesh::FaceHandle;
+
+// A curve edge shorter than this fraction of the median edge around its ends is collapsed.
+constexpr double kShortCurveEdge = 0.5;
+constexpr int kPasses = 6;
+// A curve vertex is removed only where its curve turns by less than this (degrees).
+constexpr double kStraightCurve = 30;
+
+Eigen::Vector3d at(const Mesh& m, VH v) {
+  const auto& p = m.point(v);
+  return {p[0], p[1], p[2]};
+}
+
+Eigen::Vector3d normalOf(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  return (b - a).cross(c - a);
+}
+
+struct BandMesh {
+  Mesh mesh;
+  OpenMesh::FPropHandleT<int> polygon;  // the whole polygon a triangle came from; -1 a cut triangle
+  OpenMesh::EPropHandleT<bool> curve;
+  OpenMesh::VPropHandleT<bool> fixed;  // a vertex of a whole polygon
+  OpenMesh::VPropHandleT<int> index;   // in the input mesh
+};
+
+// Moving `from` onto `to` keeps every other triangle around `from` the same way round and not flat.
+bool collapseKeepsOrientation(const Mesh& m, VH from, VH to) {
+  for (const FH f : m.vf_range(from)) {
+    Eigen::Vector3d before[3], after[3];
+    int k = 0;
+    bool touchesTo = false;
+    for (const VH v : m.fv_range(f)) {
+      before[k] = at(m, v);
+      after[k] = v == from ? at(m, to) : at(m, v);
+      touchesTo |= v == to;
+      ++k;
+    }
+    if (touchesTo) continue;  // removed with the edge
+    const Eigen::Vector3d n0 = normalOf(before[0], before[1], before[2]), n1 = normalOf(after[0], after[1], after[2]);
+    if (n0.dot(n1) <= 0.2 * n0.norm() * n1.norm()) return false;
+  }
+  return true;
+}
+
+double medianAround(const Mesh& m, VH a, VH b) {
+  std::vector<double> lengths;
+  for (const VH v : {a, b})
+    for (const HH h : m.voh_range(v))
+      if (m.to_vertex_handle(h) != a && m.to_vertex_handle(h) != b) lengths.push_back(m.calc_edge_length(h));
+  if (lengths.empty()) return 0;
+  std::nth_element(lengths.begin(), lengths.begin() + long(lengths.size() / 2), lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+int collapseShortCurveEdges(BandMesh& b) {
+  Mesh& m = b.mesh;
+  int collapsed = 0;
+  for (int pass = 0; pass < kPasses; ++pass) {
+    int before = collapsed;
+    for (const EH e : m.edges()) {
+      if (m.status(e).deleted() || !m.property(b.curve, e)) continue;
+      const HH h0 = m.halfedge_handle(e, 0);
+      if (m.calc_edge_length(e) >= kShortCurveEdge * medianAround(m, m.from_vertex_handle(h0), m.to_vertex_handle(h0)))
+        continue;
+      for (const HH h : {h0, m.halfedge_handle(e, 1)}) {  // remove h's from-vertex into its to-vertex
+        const VH from = m.from_vertex_handle(h), to = m.to_vertex_handle(h);
+        if (m.property(b.fixed, from)) continue;
+        VH other;  // the other end of from's second curve edge: a mid-curve vertex has exactly two
+        int curveEdges = 0;
+        for (const HH out : m.voh_range(from))
+          if (m.property(b.curve, m.edge_handle(out))) {
+            ++curveEdges;
+            if (m.to_vertex_handle(out) != to) other = m.to_vertex_handle(out);
+          }
+        if (curveEdges != 2 || !other.is_valid() || !m.is_collapse_ok(h) || !collapseKeepsOrientation(m, from, to))
+          continue;
+        // Only where the curve runs on nearly straight: a corner of it (two boxes meeting) is its shape.
+        const Eigen::Vector3d in = (at(m, from) - at(m, other)).normalized(), out = (at(m, to) - at(m, from)).normalized();
+        if (in.dot(out) < std::cos(kStraightCurve * M_PI / 180)) continue;
+        m.collapse(h);
+        const HH joined = m.find_halfedge(to, other);  // the curve goes on from `to`
+        if (joined.is_valid()) m.property(b.curve, m.edge_handle(joined)) = true;
+        ++collapsed;
+        break;
+      }
+    }
+    if (collapsed == before) break;
+  }
+  return collapsed;
+}
+
+double angleAt(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d u = a - p, v = b - p;
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+// Flips edges between two cut triangles (not on a curve) whose opposite angles sum above pi, where the
+// flip keeps both triangles the same way round as the pair was.
+int delaunayFlips(BandMesh& b) {
+  Mesh& m = b.mesh;
+  int flipped = 0;
+  for (int pass = 0; pass < 4 * kPasses; ++pass) {
+    int before = flipped;
+    for (const EH e : m.edges()) {
+      if (m.status(e).deleted() || m.is_boundary(e) || m.property(b.curve, e)) continue;
+      const HH h = m.halfedge_handle(e, 0), g = m.halfedge_handle(e, 1);
+      if (m.property(b.polygon, m.face_handle(h)) >= 0 || m.property(b.polygon, m.face_handle(g)) >= 0) continue;
+      const VH a = m.from_vertex_handle(h), c = m.to_vertex_handle(h);
+      const VH p = m.to_vertex_handle(m.next_halfedge_handle(h)), q = m.to_vertex_handle(m.next_halfedge_handle(g));
+      const Eigen::Vector3d A = at(m, a), C = at(m, c), P = at(m, p), Q = at(m, q);
+      if (angleAt(P, A, C) + angleAt(Q, A, C) <= M_PI + 1e-9 || !m.is_flip_ok(e)) continue;
+      // The pair's orientation: faces (a, c, p) and (c, a, q); after the flip (p, q, c) and (q, p, a).
+      const Eigen::Vector3d n = normalOf(A, C, P) + normalOf(C, A, Q);
+      const Eigen::Vector3d n1 = normalOf(P, Q, C), n2 = normalOf(Q, P, A);
+      if (n1.dot(n) <= 0.2 * n1.norm() * n.norm() || n2.dot(n) <= 0.2 * n2.norm() * n.norm()) continue;
+      m.flip(e);
+      ++flipped;
+    }
+    if (flipped == before) break;
+  }
+  return flipped;
+}
+
+int countSlivers(const SqmMesh& mesh, const std::vector<char>& band) {
+  int slivers = 0;
+  for (size_t f = 0; f < mesh.faces.size(); ++f) slivers += band[f] && smallestAngle(mesh, f) < kSliverDegrees;
+  return slivers;
+}
+
+}  // namespace
+
+double smallestAngle(const SqmMesh& mesh, size_t face) {
+  const auto& f = mesh.faces[face];
+  double smallest = M_PI;
+  for (size_t k = 0; k < f.size(); ++k)
+    smallest = std::min(smallest, angleAt(mesh.vertices[size_t(f[k])], mesh.vertices[size_t(f[(k + 1) % f.size()])],
+                                          mesh.vertices[size_t(f[(k + f.size() - 1) % f.size()])]));
+  return smallest * 180 / M_PI;
+}
+
+CurveCleanup cleanCurveBands(SqmMesh& mesh, const std::vector<char>& band,
+                             const std::vector<std::pair<int, int>>& curves) {
+  CurveCleanup report;
+  report.sliversBefore = report.sliversAfter = countSlivers(mesh, band);
+  if (std::none_of(band.begin(), band.end(), [](char c) { return c != 0; })) return report;
+
+  BandMesh b;
+  Mesh& m = b.mesh;
+  m.request_vertex_status();
+  m.request_edge_status();
+  m.request_face_status();
+  m.add_property(b.polygon);
+  m.add_property(b.curve);
+  m.add_property(b.fixed);
+  m.add_property(b.index);
+  std::vector<VH> handles;
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const Eigen::Vector3d& p = mesh.vertices[v];
+    handles.push_back(m.add_vertex(Mesh::Point(p.x(), p.y(), p.z())));
+    m.property(b.fixed, handles.back()) = false;
+    m.property(b.index, handles.back()) = int(v);
+  }
+  // OpenMesh reports a face it cannot add (a vertex where sheets touch at a point) on its error stream.
+  omerr().disable();
+  bool added = true;
+  for (size_t f = 0; f < mesh.faces.size() && added; ++f) {
+    const auto& face = mesh.faces[f];
+    for (size_t k = 1; k + 1 < face.size() && added; ++k) {
+      const FH t = m.add_face(handles[size_t(face[0])], handles[size_t(face[k])], handles[size_t(face[k + 1])]);
+      added = t.is_valid();
+      if (added) m.property(b.polygon, t) = band[f] ? -1 : int(f);
+    }
+    if (!band[f])
+      for (const int v : face) m.property(b.fixed, handles[size_t(v)]) = true;
+  }
+  omerr().enable();
+  if (!added) return report;
+  for (const EH e : m.edges()) m.property(b.curve, e) = false;
+  for (const auto& [x, y] : curves) {
+    const HH h = m.find_halfedge(handles[size_t(x)], handles[size_t(y)]);
+    if (h.is_valid()) m.property(b.curve, m.edge_handle(h)) = true;
+  }
+
+  report.collapsed = collapseShortCurveEdges(b);
+  report.flipped = delaunayFlips(b);
+
+  // Back to polygons: whole ones as they were, cut triangles as they are now.
+  std::vector<int> index(mesh.vertices.size(), -1);
+  SqmMesh cleaned;
+  for (const VH v : m.vertices()) {
+    if (m.status(v).deleted()) continue;
+    const int original = m.property(b.index, v);
+    index[size_t(original)] = int(cleaned.vertices.size());
+    cleaned.vertices.push_back(mesh.vertices[size_t(original)]);
+    cleaned.vertexNode.push_back(mesh.vertexNode[size_t(original)]);
+  }
+  std::vector<char> cleanedBand, emitted(mesh.faces.size(), 0);
+  for (const FH f : m.faces()) {
+    if (m.status(f).deleted()) continue;
+    const int polygon = m.property(b.polygon, f);
+    std::vector<int> corners;
+    if (polygon < 0) {
+      for (const VH v : m.fv_range(f)) corners.push_back(index[size_t(m.property(b.index, v))]);
+    } else if (!emitted[size_t(polygon)]) {
+      emitted[size_t(polygon)] = 1;
+      for (const int v : mesh.faces[size_t(polygon)]) corners.push_back(index[size_t(v)]);
+    } else {
+      continue;
+    }
+    cleaned.faces.push_back(std::move(corners));
+    cleanedBand.push_back(polygon < 0);
+  }
+  report.sliversAfter = countSlivers(cleaned, cleanedBand);
+  mesh = std::move(cleaned);
+  report.applied = true;
+  return report;
+}
+
+}  // namespace medial
