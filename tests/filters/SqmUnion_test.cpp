@@ -9,7 +9,6 @@
 #include "mesh/InsideTest.h"
 #include "mesh/MeshGeometry.h"
 #include "mesh/MeshTopology.h"
-#include "mesh/SelfIntersections.h"
 #include "skeleton/Skeleton.h"
 #include "sqm/CurveCleanup.h"
 #include "sqm/SweptSpheres.h"
@@ -117,8 +116,7 @@ TEST_P(SqmUnion, OverlapsBecomeOneClosedSurfaceAroundTheSkeleton) {
   const medial::MeshTopology topology = medial::computeMeshTopology(mesh->GetNumberOfPoints(), faces);
   EXPECT_TRUE(topology.isClosedManifold()) << topology.borderEdges << " border, " << topology.nonManifoldEdges << " non-manifold";
   EXPECT_EQ(topology.components, 1);
-  EXPECT_EQ(medial::selfIntersectingFaces(points, faces).size(), 0u);
-  check->SetInputData(mesh);
+  check->SetInputData(mesh);  // CGAL's exact test (one run: the dense tree under the sanitizers is slow)
   check->Update();
   EXPECT_EQ(check->GetNumberOfIntersectingFacePairs(), 0);
   // Quads stay quads away from the intersection curves (refined: the base mesh's cut quads are most of it).
