@@ -17,7 +17,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <functional>
 #include <map>
 #include <memory>
@@ -412,29 +411,28 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
                    std::to_string(topology.nonManifoldEdges) + " non-manifold edges): no union";
     return result;
   }
-  result.intersectingAfter = int(selfIntersectingFaces(compact.vertices, compact.faces).size());
-
   // Stage 6: the cut triangles along the curves cleaned; kept where the mesh stays a closed manifold that
-  // cuts itself no more than before.
-  const double cleanupStart = clock.seconds();
+  // cuts itself no more than before (the mesh before is tested only when the cleaned one cuts itself at all:
+  // one exact test on the usual path).
+  const auto intersectingPairs = [](const SqmMesh& m) { return int(selfIntersectingFaces(m.vertices, m.faces).size()); };
   std::vector<std::pair<int, int>> curves;
   for (const auto& [a, b] : rounded.curves)
     if (used[size_t(a)] >= 0 && used[size_t(b)] >= 0) curves.emplace_back(used[size_t(a)], used[size_t(b)]);
   SqmMesh cleaned = compact;
   result.cleanup = cleanCurveBands(cleaned, band, curves);
   if (result.cleanup.applied && topologyOf(cleaned).isClosedManifold()) {
-    const int intersecting = int(selfIntersectingFaces(cleaned.vertices, cleaned.faces).size());
-    if (intersecting <= result.intersectingAfter) {
-      compact = std::move(cleaned);
-      result.intersectingAfter = intersecting;
-    } else {
+    result.intersectingAfter = intersectingPairs(cleaned);
+    if (result.intersectingAfter > 0 && result.intersectingAfter > intersectingPairs(compact))
       result.cleanup.applied = false;
-    }
   } else {
     result.cleanup.applied = false;
   }
-  if (!result.cleanup.applied) result.cleanup.sliversAfter = result.cleanup.sliversBefore;
-  result.cleanupSeconds = clock.seconds() - cleanupStart;
+  if (result.cleanup.applied) {
+    compact = std::move(cleaned);
+  } else {
+    result.cleanup.sliversAfter = result.cleanup.sliversBefore;
+    result.intersectingAfter = intersectingPairs(compact);
+  }
   mesh = std::move(compact);
   return result;
 }

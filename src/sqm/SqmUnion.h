@@ -47,7 +47,6 @@ struct SqmUnionResult {
   int droppedPockets = 0;      // closed components enclosing no volume or less than the smallest part, dropped
   double autorefineSeconds = 0, selectionSeconds = 0;  // CGAL's cutting; the winding numbers
   CurveCleanup cleanup;  // the cut triangles along the curves (CurveCleanup)
-  double cleanupSeconds = 0;
   int intersectingAfter = 0;   // face pairs still cutting each other after rounding (0 expected)
   std::string error;           // when the union is not a closed manifold (tubes touching along a line)
   bool ok() const { return error.empty(); }

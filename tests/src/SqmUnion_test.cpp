@@ -65,8 +65,12 @@ TEST(SqmUnionAlgorithm, OverlappingBoxesBecomeTheirUnion) {
   ASSERT_EQ(mesh.vertexNode.size(), mesh.vertices.size());
   for (size_t v = 0; v < mesh.vertices.size(); ++v) {
     const Eigen::Vector3d& p = mesh.vertices[v];
-    if ((p.array() < 0.5).any()) EXPECT_EQ(mesh.vertexNode[v], 0) << "vertex " << v;  // only cube 0 there
-    if ((p.array() > 1.0).any()) EXPECT_EQ(mesh.vertexNode[v], 1) << "vertex " << v;
+    if ((p.array() < 0.5).any()) {
+      EXPECT_EQ(mesh.vertexNode[v], 0) << "vertex " << v;  // only cube 0 there
+    }
+    if ((p.array() > 1.0).any()) {
+      EXPECT_EQ(mesh.vertexNode[v], 1) << "vertex " << v;
+    }
   }
 }
 
