@@ -4,7 +4,9 @@
 // skeleton) on the same meshes in one run. Prints per mesh the medians of both, the ratio CGAL / Medial,
 // the iteration counts, the peak memory of each, and the share of Medial's time spent factorizing; then
 // the solver x ordering study of the paper's Table I (contraction only) on one mesh.
-//   medial_bench_contraction [--repeat N] [--table MESH|none] [--no-subdivided] [--centring-only] [MESH...]
+//   medial_bench_contraction [--repeat N] [--table MESH|none] [--no-subdivided] [--centring-only]
+//                            [--write DIR] [MESH...]
+// (--write DIR: the skeletons of the off-centre table as legacy VTK line files, to look at.)
 // Then the off-centre ratio of issue 26 (src/contraction/CrossSections.h) of each mesh's skeletons.
 // With no mesh: the CGAL samples under data/external (scripts/fetch-samples) and armadillo after one Loop
 // subdivision (~104k vertices). Each run is a child process (fork), so that its peak resident memory
@@ -141,8 +143,21 @@ RunResult runContractionOnly(const medial::TriangleMesh& mesh, medial::SparseSol
 }
 
 // The issue's off-centre ratio (src/contraction/CrossSections.h) of Medial's default skeleton, of its
-// unselected one (--nodes 0) and of CGAL's: median and 90th percentile, and the samples outside.
-void centringRow(const std::string& name, const SurfaceMesh& sm) {
+// Writes a skeleton as a legacy VTK file of lines (ParaView and Medial's GUI open it).
+void writeSkeleton(const medial::Skeleton& s, const std::string& path) {
+  FILE* file = std::fopen(path.c_str(), "w");
+  if (!file) return;
+  std::fprintf(file, "# vtk DataFile Version 3.0\nskeleton\nASCII\nDATASET POLYDATA\nPOINTS %d double\n",
+               s.nodeCount());
+  for (const auto& p : s.nodes) std::fprintf(file, "%.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+  std::fprintf(file, "LINES %d %d\n", s.edgeCount(), 3 * s.edgeCount());
+  for (const auto& e : s.edges) std::fprintf(file, "2 %d %d\n", e[0], e[1]);
+  std::fclose(file);
+}
+
+// unselected one (--nodes 0) and of CGAL's: median and 90th percentile, and the samples outside. With
+// `folder`, the three skeletons are written there (NAME-medial.vtk, NAME-medial-nodes0.vtk, NAME-cgal.vtk).
+void centringRow(const std::string& name, const SurfaceMesh& sm, const std::string& folder) {
   const medial::TriangleMesh mesh = toTriangleMesh(sm);
   const medial::CrossSections sections(mesh);
   medial::SkeletonByContractionParameters p;
@@ -154,7 +169,13 @@ void centringRow(const std::string& name, const SurfaceMesh& sm) {
     const auto m = medial::offCentre(*s, sections);
     std::printf(" | %6.3f %6.3f %4d", m.median(), m.percentile90(), m.outside);
   }
-  const auto peer = medial::offCentre(cgalSkeleton(sm), sections);
+  const medial::Skeleton cgal = cgalSkeleton(sm);
+  const auto peer = medial::offCentre(cgal, sections);
+  if (!folder.empty()) {
+    writeSkeleton(selected, folder + "/" + name + "-medial.vtk");
+    writeSkeleton(unselected, folder + "/" + name + "-medial-nodes0.vtk");
+    writeSkeleton(cgal, folder + "/" + name + "-cgal.vtk");
+  }
   std::printf(" | %6.3f %6.3f %4d\n", peer.median(), peer.percentile90(), peer.outside);
   std::fflush(stdout);
 }
@@ -175,6 +196,7 @@ std::string sampleMesh(const std::string& name) {
 int main(int argc, char** argv) {
   int repeat = 3;
   bool subdivided = true, timing = true;
+  std::string writeFolder;
   std::string tableMesh = "elephant";
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i) {
@@ -186,9 +208,12 @@ int main(int argc, char** argv) {
       subdivided = false;
     } else if (!std::strcmp(argv[i], "--centring-only")) {
       timing = false;
+    } else if (!std::strcmp(argv[i], "--write") && i + 1 < argc) {
+      writeFolder = argv[++i];
     } else if (argv[i][0] == '-') {
       std::fprintf(stderr,
-                   "usage: %s [--repeat N] [--table MESH|none] [--no-subdivided] [--centring-only] [MESH...]\n",
+                   "usage: %s [--repeat N] [--table MESH|none] [--no-subdivided] [--centring-only] [--write DIR] "
+                   "[MESH...]\n",
                    argv[0]);
       return 2;
     } else {
@@ -247,7 +272,7 @@ int main(int argc, char** argv) {
   std::printf("%-18s | %20s | %20s | %20s\n", "mesh", "Medial default", "Medial --nodes 0", "CGAL");
   for (const std::string& name : meshes) {
     SurfaceMesh sm;
-    if (readMesh(sampleMesh(name), sm)) centringRow(std::filesystem::path(name).stem().string(), sm);
+    if (readMesh(sampleMesh(name), sm)) centringRow(std::filesystem::path(name).stem().string(), sm, writeFolder);
   }
 
   // Table I of the paper: every solver x ordering on one mesh, contraction only.
