@@ -1,5 +1,7 @@
 #include "mesh/MeshDecimation.h"
 
+#include "mesh/EdgeCoarsening.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Surface_mesh.h>
@@ -15,6 +17,10 @@
 namespace medial {
 
 namespace {
+
+// Fast collapses first above 16 x the budget, to 10 x the budget (EdgeCoarsening.h).
+constexpr Eigen::Index kCoarseningAbove = 16;
+constexpr int kCoarsenedVertices = 10;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
@@ -61,11 +67,10 @@ DecimatedMesh unchanged(const TriangleMesh& mesh, const std::string& note) {
   return result;
 }
 
-}  // namespace
-
-DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices) {
+// Quadric edge collapses down to the budget. `strict`: a mesh a halfedge structure cannot hold as it is
+// is not decimated (note set, `decimated` false) instead of being repaired as a soup.
+DecimatedMesh collapseEdges(const TriangleMesh& mesh, int targetVertices, bool strict) {
   const Eigen::Index n = mesh.vertices.rows();
-  if (targetVertices <= 0 || n <= targetVertices) return unchanged(mesh, "within the vertex budget");
 
   // Decimated in a normalized frame (bounding-box centre at the origin, diagonal 1): CGAL's quadric
   // placement tests singular matrices against absolute thresholds, so the units must not matter.
@@ -89,7 +94,9 @@ DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices) {
     triangles.push_back({size_t(corners[0]), size_t(corners[1]), size_t(corners[2])});
   }
   SurfaceMesh sm;
-  if (!buildSurfaceMesh(points, triangles, sm)) {
+  if (strict && !buildSurfaceMesh(points, triangles, sm))
+    return unchanged(mesh, "not a 2-manifold");
+  if (!strict && !buildSurfaceMesh(points, triangles, sm)) {
     // Faces oriented against their neighbours, or edges with three faces: CGAL's soup orientation flips
     // faces and duplicates the vertices where the surface is not a disk (the copies come after the input's
     // vertices, whose indices stay). The mesh itself is not changed; only its decimation is built from this.
@@ -143,6 +150,30 @@ DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices) {
       result.representative[size_t(v)] = compact[size_t(survivor(absorbedBy, v))];
     }
   return result;
+}
+
+}  // namespace
+
+DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices) {
+  const Eigen::Index n = mesh.vertices.rows();
+  if (targetVertices <= 0 || n <= targetVertices) return unchanged(mesh, "within the vertex budget");
+  if (n <= kCoarseningAbove * Eigen::Index(targetVertices)) return collapseEdges(mesh, targetVertices, false);
+
+  // Large meshes: fast collapses to about kCoarsenedVertices x the budget first (EdgeCoarsening), then the
+  // quadric collapses from there. A mesh OpenMesh cannot hold takes the quadric collapses alone.
+  const CoarsenedMesh coarse = coarsenEdges(mesh, Eigen::Index(kCoarsenedVertices) * targetVertices);
+  if (coarse.ok) {
+    DecimatedMesh result = collapseEdges(coarse.mesh, targetVertices, true);
+    if (result.decimated) {
+      std::vector<int> representative(size_t(n), -1);  // input vertex -> coarse vertex -> survivor
+      for (size_t v = 0; v < representative.size(); ++v)
+        if (const int c = coarse.representative[v]; c >= 0) representative[v] = result.representative[size_t(c)];
+      result.representative = std::move(representative);
+      result.coarsenedVertices = int(coarse.mesh.vertices.rows());
+      return result;
+    }
+  }
+  return collapseEdges(mesh, targetVertices, false);
 }
 
 }  // namespace medial

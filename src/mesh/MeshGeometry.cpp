@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace medial {
@@ -34,19 +35,65 @@ Eigen::MatrixX3d faceCotangents(const Vertices& vertices, const Faces& faces, do
 
 Eigen::SparseMatrix<double> laplacianFromCotangents(const Faces& faces, const Eigen::MatrixX3d& cotangents,
                                                     Eigen::Index vertexCount) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(static_cast<size_t>(faces.rows()) * 12);
+  // Built column by column: Eigen's setFromTriplets needed 12 triplets per face plus a copy of them all
+  // (about 1.1 GB and 10 s for the 1.66M-vertex armadillo's heat weights); here each column gathers its
+  // off-diagonal entries (6 per face in all), merges the two faces of each edge, and appends the diagonal.
+  const size_t n = size_t(vertexCount);
+  std::vector<int> start(n + 1, 0);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+    for (int corner = 0; corner < 3; ++corner) {
+      const int i = faces(f, (corner + 1) % 3), j = faces(f, (corner + 2) % 3);
+      if (i == j) continue;  // a degenerate face's repeated vertex: no edge
+      ++start[size_t(i) + 1];
+      ++start[size_t(j) + 1];
+    }
+  for (size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<int, double>> entries(size_t(start[n]));
+  std::vector<int> fill(start.begin(), start.end() - 1);
   for (Eigen::Index f = 0; f < faces.rows(); ++f)
     for (int corner = 0; corner < 3; ++corner) {
       const int i = faces(f, (corner + 1) % 3), j = faces(f, (corner + 2) % 3);
       const double w = cotangents(f, corner);  // the angle at `corner` weighs the opposite edge (i, j)
-      triplets.emplace_back(i, j, w);
-      triplets.emplace_back(j, i, w);
-      triplets.emplace_back(i, i, -w);
-      triplets.emplace_back(j, j, -w);
+      if (i == j) continue;
+      entries[size_t(fill[size_t(i)]++)] = {j, w};
+      entries[size_t(fill[size_t(j)]++)] = {i, w};
     }
+
+  // Each column: its neighbours in order (the two faces of an edge merged), the diagonal in its place.
   Eigen::SparseMatrix<double> laplacian(vertexCount, vertexCount);
-  laplacian.setFromTriplets(triplets.begin(), triplets.end());  // sums the two faces of each edge
+  laplacian.resizeNonZeros(Eigen::Index(entries.size() + n));  // an upper bound, shrunk at the end
+  int* outer = laplacian.outerIndexPtr();
+  int* inner = laplacian.innerIndexPtr();
+  double* value = laplacian.valuePtr();
+  int size = 0;
+  for (size_t v = 0; v < n; ++v) {
+    outer[v] = size;
+    const auto first = entries.begin() + start[v], last = entries.begin() + start[v + 1];
+    if (first == last) continue;  // in no face: an empty column
+    std::sort(first, last, [](const auto& a, const auto& b) { return a.first < b.first; });
+    int diagonal = -1;
+    double rowSum = 0;
+    for (auto e = first; e != last; ++e) {
+      rowSum += e->second;
+      if (diagonal < 0 && e->first > int(v)) {
+        diagonal = size;
+        inner[size++] = int(v);
+      }
+      if (size > outer[v] && inner[size - 1] == e->first) {
+        value[size - 1] += e->second;  // the edge's other face
+      } else {
+        inner[size] = e->first;
+        value[size++] = e->second;
+      }
+    }
+    if (diagonal < 0) {
+      diagonal = size;
+      inner[size++] = int(v);
+    }
+    value[diagonal] = -rowSum;
+  }
+  outer[n] = size;
+  laplacian.resizeNonZeros(size);
   return laplacian;
 }
 
