@@ -130,7 +130,9 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   if (p.refineEmbedding) result.splitEdges = splitEdgesLeavingTheMesh(curve, mesh.vertices, inside);
   std::unique_ptr<CrossSections> sections;
   if (p.centreNodes) {
-    sections = std::make_unique<CrossSections>(mesh);
+    // Above 64,000 vertices the sections are cut from the decimation's 40,000-vertex first pass: centroids
+    // within a small fraction of a radius of the input's, and 6 s less at 1.66M vertices.
+    sections = std::make_unique<CrossSections>(coarse.coarsened.faces.rows() > 0 ? coarse.coarsened : mesh);
     // With a selection only the selected nodes are centred (below): as centred, at a fifth of the cost.
     if (p.targetNodes <= 0) result.centredNodes = centreNodes(curve, *sections, inside);
   }

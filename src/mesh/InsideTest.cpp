@@ -36,7 +36,7 @@ InsideTest::InsideTest(const TriangleMesh& mesh) : tree_(std::make_unique<Tree>(
   }
   tree_->tree.insert(tree_->triangles.begin(), tree_->triangles.end());
   tree_->tree.build();
-  if (!tree_->triangles.empty()) tree_->tree.accelerate_distance_queries();
+  // Distance queries build CGAL's search tree on first use (thread-safe): most users of the test never ask.
 }
 
 InsideTest::~InsideTest() = default;

@@ -161,7 +161,7 @@ DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices) {
 
   // Large meshes: fast collapses to about kCoarsenedVertices x the budget first (EdgeCoarsening), then the
   // quadric collapses from there. A mesh OpenMesh cannot hold takes the quadric collapses alone.
-  const CoarsenedMesh coarse = coarsenEdges(mesh, Eigen::Index(kCoarsenedVertices) * targetVertices);
+  CoarsenedMesh coarse = coarsenEdges(mesh, Eigen::Index(kCoarsenedVertices) * targetVertices);
   if (coarse.ok) {
     DecimatedMesh result = collapseEdges(coarse.mesh, targetVertices, true);
     if (result.decimated) {
@@ -170,6 +170,7 @@ DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices) {
         if (const int c = coarse.representative[v]; c >= 0) representative[v] = result.representative[size_t(c)];
       result.representative = std::move(representative);
       result.coarsenedVertices = int(coarse.mesh.vertices.rows());
+      result.coarsened = std::move(coarse.mesh);
       return result;
     }
   }

@@ -34,6 +34,8 @@ struct DecimatedMesh {
   std::vector<int> representative;
   bool decimated = false;
   int coarsenedVertices = 0;  // vertices after the fast first pass (0: none: EdgeCoarsening.h)
+  // The mesh after that pass (10 x the budget; empty without it): a lighter stand-in for the input's shape.
+  TriangleMesh coarsened;
   std::string note;  // why the mesh was left as it was
 };
 

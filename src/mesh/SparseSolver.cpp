@@ -149,7 +149,9 @@ SparseSolver::~SparseSolver() = default;
 
 void SparseSolver::analyze(const SpMat& matrix) {
   if (kind_ == SparseSolverKind::Automatic) {
+    const bool sparse = double(matrix.nonZeros()) < kAmdBelowDensity * double(matrix.cols());
     chosen_ = matrix.rows() < kSimplicialBelow ? SparseSolverKind::SimplicialLltAmd
+              : sparse                         ? SparseSolverKind::CholmodSupernodalAmd
                                                : SparseSolverKind::CholmodSupernodalMetis;
     backend_ = makeBackend(chosen_);
   }

@@ -21,6 +21,10 @@ enum class SparseSolverKind {
   // (the paper's winner) from there on. Measured on the armadillo's contraction decimated to 4000 / 8000 /
   // 12000 / 16000 / 26002 vertices, factorization seconds supernodal : simplicial 0.18 : 0.09, 0.48 : 0.31,
   // 0.79 : 0.63, 1.24 : 1.27, 1.84 : 3.05: the supernodes' BLAS calls cost more than they save while small.
+  // A sparser matrix than the contraction's two-ring one (fewer than kAmdBelowDensity entries per column on
+  // average: the heat weights' one-ring Laplacian) takes AMD instead of METIS: METIS's analysis of the
+  // 1.66M-vertex armadillo's weights took 15.9 s against AMD's 4.8 s, and the heat weights as a whole
+  // took 1.99 / 8.25 / 53 s with METIS and 1.69 / 7.19 / 45 s with AMD at 104k / 416k / 1.66M vertices.
   Automatic,
   CholmodSupernodalMetis,
   CholmodSupernodalAmd,
@@ -36,6 +40,7 @@ enum class SparseSolverKind {
 };
 
 constexpr int kSimplicialBelow = 14000;
+constexpr double kAmdBelowDensity = 12;  // entries per column (one-ring Laplacian: about 7, two-ring: 19)
 
 // Short names used on the command line and in benchmarks: auto, cholmod-metis, cholmod-amd, llt-amd,
 // ldlt-amd, llt-metis, ldlt-metis, lu-colamd, lu-amd, lu-metis, qr-colamd, cg.

@@ -1,5 +1,6 @@
 #include "rig/HeatWeights.h"
 
+#include "common/Parallel.h"
 #include "common/UnionFind.h"
 
 #include "mesh/MeshGeometry.h"
@@ -85,15 +86,23 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
   // Nearest bones, their distance and whether they see the vertex (H_jj and p_j of eq. 13).
   std::vector<NearestBones> nearest(static_cast<size_t>(n));
   std::vector<bool> visible(static_cast<size_t>(n), false);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const Eigen::Vector3d v = mesh.vertices.row(j).transpose();
-    nearest[size_t(j)] = nearestBones(v, skeleton);
-    visible[size_t(j)] = inside.segmentIsClear(v, nearest[size_t(j)].closestPoint);
-    if (j % 4096 == 0 && aborted(0.4 * double(j) / double(n))) {
+  // On every core, in blocks between which progress is reported and an abort is heard (on this thread).
+  std::vector<unsigned char> sees(static_cast<size_t>(n), 0);
+  constexpr Eigen::Index kBlock = 65536;
+  for (Eigen::Index first = 0; first < n; first += kBlock) {
+    const Eigen::Index count = std::min(kBlock, n - first);
+    inParallel(size_t(count), [&](size_t k) {
+      const size_t j = size_t(first) + k;
+      const Eigen::Vector3d v = mesh.vertices.row(Eigen::Index(j)).transpose();
+      nearest[j] = nearestBones(v, skeleton);
+      sees[j] = inside.segmentIsClear(v, nearest[j].closestPoint);
+    });
+    if (aborted(0.4 * double(first + count) / double(n))) {
       result.error = "aborted";
       return result;
     }
   }
+  for (Eigen::Index j = 0; j < n; ++j) visible[size_t(j)] = sees[size_t(j)] != 0;
   int componentCount = 0;
   const std::vector<int> component = vertexComponents(mesh.faces, n, componentCount);
   std::vector<bool> componentSeen(size_t(componentCount), false);
