@@ -95,3 +95,22 @@ TEST(HeatWeights, AbortStops) {
   const auto r = medial::heatWeights(tube, twoBoneAxis(), inside, {}, [](double) { return false; });
   EXPECT_EQ(r.error, "aborted");
 }
+
+TEST(HeatWeights, AbortBetweenTheBonesSolvesStops) {
+  // Eight bones are solved two at a time; an abort asked for after the factorization stops at the next block.
+  const medial::TriangleMesh torus = torusMesh(2, 0.5);
+  medial::SkeletonByContractionParameters p;
+  p.targetNodes = 8;
+  const auto skeleton = medial::skeletonByContraction(torus, p);
+  ASSERT_TRUE(skeleton.ok()) << skeleton.error;
+  ASSERT_GT(skeleton.skeleton.edgeCount(), 2);
+  const medial::InsideTest inside(torus);
+  double last = 0;
+  const auto r = medial::heatWeights(torus, skeleton.skeleton, inside, {}, [&](double f) {
+    last = f;
+    return f <= 0.5;
+  });
+  EXPECT_EQ(r.error, "aborted");
+  EXPECT_GT(last, 0.5);
+  EXPECT_LT(last, 0.9);
+}
