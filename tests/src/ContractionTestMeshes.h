@@ -1,9 +1,12 @@
 // Procedural triangle meshes with known skeletons for the contraction tests.
 #pragma once
 
+#include "mesh/MeshTopology.h"
 #include "mesh/TriangleMesh.h"
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace medial::testing {
 
@@ -66,6 +69,24 @@ inline TriangleMesh appendMesh(const TriangleMesh& a, const TriangleMesh& b,
   m.faces.resize(a.faces.rows() + b.faces.rows(), 3);
   m.faces << a.faces, (b.faces.array() + int(a.vertices.rows())).matrix();
   return m;
+}
+
+// The topology (MeshTopology) of a triangle mesh.
+inline MeshTopology topologyOf(const TriangleMesh& mesh) {
+  std::vector<std::vector<int64_t>> faces;
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
+    faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
+  return computeMeshTopology(mesh.vertices.rows(), faces);
+}
+
+// The mesh with a third face on the edge of its first face: a fin, an edge no halfedge structure can hold.
+inline TriangleMesh withFin(TriangleMesh mesh) {
+  const int a = mesh.faces(0, 0), b = mesh.faces(0, 1);
+  mesh.vertices.conservativeResize(mesh.vertices.rows() + 1, 3);
+  mesh.vertices.row(mesh.vertices.rows() - 1) << 0, 0, 3;
+  mesh.faces.conservativeResize(mesh.faces.rows() + 1, 3);
+  mesh.faces.row(mesh.faces.rows() - 1) << a, b, int(mesh.vertices.rows() - 1);
+  return mesh;
 }
 
 }  // namespace medial::testing

@@ -8,17 +8,12 @@
 #include <cmath>
 
 using medial::testing::appendMesh;
+using medial::testing::topologyOf;
+using medial::testing::withFin;
 using medial::testing::torusMesh;
 using medial::testing::tubeMesh;
 
 namespace {
-
-medial::MeshTopology topologyOf(const medial::TriangleMesh& mesh) {
-  std::vector<std::vector<int64_t>> faces;
-  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
-    faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
-  return medial::computeMeshTopology(mesh.vertices.rows(), faces);
-}
 
 double torusDistance(const Eigen::RowVector3d& p, double R, double r) {
   return std::abs(std::hypot(std::hypot(p.x(), p.y()) - R, p.z()) - r);
@@ -62,12 +57,7 @@ TEST(EdgeCoarsening, ComponentsKeepTheirTopology) {
 }
 
 TEST(EdgeCoarsening, NonManifoldMeshIsLeftToTheCaller) {
-  medial::TriangleMesh torus = torusMesh(2, 0.5, 96, 32);
-  const int a = torus.faces(0, 0), b = torus.faces(0, 1);  // a third face on one edge: a fin
-  torus.vertices.conservativeResize(torus.vertices.rows() + 1, 3);
-  torus.vertices.row(torus.vertices.rows() - 1) << 0, 0, 3;
-  torus.faces.conservativeResize(torus.faces.rows() + 1, 3);
-  torus.faces.row(torus.faces.rows() - 1) << a, b, int(torus.vertices.rows() - 1);
+  const medial::TriangleMesh torus = withFin(torusMesh(2, 0.5, 96, 32));  // a third face on one edge
   EXPECT_FALSE(medial::coarsenEdges(torus, 500).ok);
   // The decimation then repairs a copy and collapses it as before.
   const medial::DecimatedMesh decimated = medial::decimateMesh(torus, 150);

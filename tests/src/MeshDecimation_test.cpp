@@ -5,19 +5,10 @@
 #include <gtest/gtest.h>
 
 using medial::testing::appendMesh;
+using medial::testing::topologyOf;
+using medial::testing::withFin;
 using medial::testing::torusMesh;
 using medial::testing::tubeMesh;
-
-namespace {
-
-medial::MeshTopology topologyOf(const medial::TriangleMesh& mesh) {
-  std::vector<std::vector<int64_t>> faces;
-  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
-    faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
-  return medial::computeMeshTopology(mesh.vertices.rows(), faces);
-}
-
-}  // namespace
 
 TEST(MeshDecimation, TorusGoesToTheBudgetKeepingItsGenus) {
   const medial::TriangleMesh torus = torusMesh(2, 0.5, 96, 32);  // 3072 vertices
@@ -66,12 +57,7 @@ TEST(MeshDecimation, MeshWithinTheBudgetIsLeftAlone) {
 }
 
 TEST(MeshDecimation, NonManifoldOrMisorientedMeshIsDecimatedFromARepairedCopy) {
-  medial::TriangleMesh torus = torusMesh(2, 0.5, 96, 32);
-  const int a = torus.faces(0, 0), b = torus.faces(0, 1);  // a third face on one edge: a fin
-  torus.vertices.conservativeResize(torus.vertices.rows() + 1, 3);
-  torus.vertices.row(torus.vertices.rows() - 1) << 0, 0, 3;
-  torus.faces.conservativeResize(torus.faces.rows() + 1, 3);
-  torus.faces.row(torus.faces.rows() - 1) << a, b, int(torus.vertices.rows() - 1);
+  medial::TriangleMesh torus = withFin(torusMesh(2, 0.5, 96, 32));  // a fin
   std::swap(torus.faces(5, 1), torus.faces(5, 2));  // and one face turned against its neighbours
   const medial::DecimatedMesh coarse = medial::decimateMesh(torus, 500);
   ASSERT_TRUE(coarse.decimated) << coarse.note;
