@@ -1,11 +1,14 @@
 #include "sqm/CurveCleanup.h"
 
 #include "sqm/BranchNodePolyhedron.h"  // BnpMesh: OpenMesh's triangle mesh with double points
+#include "common/UnionFind.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 
 namespace medial {
 
@@ -20,6 +23,8 @@ using FH = OpenMesh::FaceHandle;
 // A curve edge shorter than this fraction of the median edge around its ends is collapsed.
 constexpr double kShortCurveEdge = 0.5;
 constexpr int kPasses = 6;
+// A polygon's corner nearer than this fraction of the median edge around to a curve vertex is moved onto it.
+constexpr double kSnapCorner = 0.3;
 // A curve vertex is removed only where its curve turns by less than this (degrees).
 constexpr double kStraightCurve = 30;
 
@@ -36,7 +41,9 @@ struct BandMesh {
   Mesh mesh;
   OpenMesh::FPropHandleT<int> polygon;  // the whole polygon a triangle came from; -1 a cut triangle
   OpenMesh::EPropHandleT<bool> curve;
-  OpenMesh::VPropHandleT<bool> fixed;  // a vertex of a whole polygon
+  OpenMesh::VPropHandleT<bool> fixed;   // a vertex of a whole polygon: moves only onto a curve (snapped)
+  OpenMesh::VPropHandleT<bool> frozen;  // never removed, never a collapse's target, no edge flipped next to it
+  std::vector<int> mergedInto;          // input vertex -> the input vertex it was collapsed into, or -1
   OpenMesh::VPropHandleT<int> index;   // in the input mesh
 };
 
@@ -81,7 +88,7 @@ int collapseShortCurveEdges(BandMesh& b) {
         continue;
       for (const HH h : {h0, m.halfedge_handle(e, 1)}) {  // remove h's from-vertex into its to-vertex
         const VH from = m.from_vertex_handle(h), to = m.to_vertex_handle(h);
-        if (m.property(b.fixed, from)) continue;
+        if (m.property(b.fixed, from) || m.property(b.frozen, from) || m.property(b.frozen, to)) continue;
         VH other;  // the other end of from's second curve edge: a mid-curve vertex has exactly two
         int curveEdges = 0;
         for (const HH out : m.voh_range(from))
@@ -94,6 +101,7 @@ int collapseShortCurveEdges(BandMesh& b) {
         // Only where the curve runs on nearly straight: a corner of it (two boxes meeting) is its shape.
         const Eigen::Vector3d in = (at(m, from) - at(m, other)).normalized(), out = (at(m, to) - at(m, from)).normalized();
         if (in.dot(out) < std::cos(kStraightCurve * M_PI / 180)) continue;
+        b.mergedInto[size_t(m.property(b.index, from))] = m.property(b.index, to);
         m.collapse(h);
         const HH joined = m.find_halfedge(to, other);  // the curve goes on from `to`
         if (joined.is_valid()) m.property(b.curve, m.edge_handle(joined)) = true;
@@ -104,6 +112,41 @@ int collapseShortCurveEdges(BandMesh& b) {
     if (collapsed == before) break;
   }
   return collapsed;
+}
+
+bool onCurve(const BandMesh& b, VH v) {
+  for (const HH h : b.mesh.voh_range(v))
+    if (b.mesh.property(b.curve, b.mesh.edge_handle(h))) return true;
+  return false;
+}
+
+// A whole polygon's corner lying just beside a curve vertex (the curve passes near a ring of the tube:
+// a needle between them that no flip removes) is moved onto that vertex: the edge between them, with
+// cut triangles on both sides, collapses into the curve vertex, which is a polygon corner from then on.
+int snapCornersOntoCurves(BandMesh& b) {
+  Mesh& m = b.mesh;
+  int snapped = 0;
+  for (const EH e : m.edges()) {
+    if (m.status(e).deleted() || m.property(b.curve, e)) continue;
+    for (const HH h : {m.halfedge_handle(e, 0), m.halfedge_handle(e, 1)}) {
+      const VH from = m.from_vertex_handle(h), to = m.to_vertex_handle(h);
+      if (!m.property(b.fixed, from) || m.property(b.fixed, to) || m.property(b.frozen, from) ||
+          m.property(b.frozen, to) || !onCurve(b, to))
+        continue;
+      const FH left = m.face_handle(h), right = m.face_handle(m.opposite_halfedge_handle(h));
+      if (!left.is_valid() || !right.is_valid() || m.property(b.polygon, left) >= 0 || m.property(b.polygon, right) >= 0)
+        continue;
+      if (m.calc_edge_length(e) >= kSnapCorner * medianAround(m, from, to) || !m.is_collapse_ok(h) ||
+          !collapseKeepsOrientation(m, from, to))
+        continue;
+      b.mergedInto[size_t(m.property(b.index, from))] = m.property(b.index, to);
+      m.collapse(h);
+      m.property(b.fixed, to) = true;
+      ++snapped;
+      break;
+    }
+  }
+  return snapped;
 }
 
 double angleAt(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
@@ -124,6 +167,8 @@ int delaunayFlips(BandMesh& b) {
       if (m.property(b.polygon, m.face_handle(h)) >= 0 || m.property(b.polygon, m.face_handle(g)) >= 0) continue;
       const VH a = m.from_vertex_handle(h), c = m.to_vertex_handle(h);
       const VH p = m.to_vertex_handle(m.next_halfedge_handle(h)), q = m.to_vertex_handle(m.next_halfedge_handle(g));
+      if (m.property(b.frozen, a) || m.property(b.frozen, c) || m.property(b.frozen, p) || m.property(b.frozen, q))
+        continue;
       const Eigen::Vector3d A = at(m, a), C = at(m, c), P = at(m, p), Q = at(m, q);
       if (angleAt(P, A, C) + angleAt(Q, A, C) <= M_PI + 1e-9 || !m.is_flip_ok(e)) continue;
       // The pair's orientation: faces (a, c, p) and (c, a, q); after the flip (p, q, c) and (q, p, a).
@@ -136,6 +181,39 @@ int delaunayFlips(BandMesh& b) {
     if (flipped == before) break;
   }
   return flipped;
+}
+
+// For each corner of each face, which fan of faces around its vertex it belongs to (0 for the first; a
+// vertex where sheets touch at a point has more than one fan). Corners of faces sharing an edge at the
+// vertex are in one fan.
+std::vector<std::vector<int>> fansAtCorners(const SqmMesh& mesh) {
+  std::vector<size_t> first(mesh.faces.size() + 1, 0);
+  for (size_t f = 0; f < mesh.faces.size(); ++f) first[f + 1] = first[f] + mesh.faces[f].size();
+  UnionFind corners(first.back());
+  std::unordered_map<uint64_t, int> cornerAtEdge;  // (vertex, neighbour) -> a corner of the vertex there
+  const uint64_t count = mesh.vertices.size();
+  for (size_t f = 0; f < mesh.faces.size(); ++f) {
+    const auto& face = mesh.faces[f];
+    for (size_t k = 0; k < face.size(); ++k) {
+      const uint64_t v = uint64_t(face[k]);
+      for (const int w : {face[(k + 1) % face.size()], face[(k + face.size() - 1) % face.size()]}) {
+        const auto [at, fresh] = cornerAtEdge.emplace(v * count + uint64_t(w), int(first[f] + k));
+        if (!fresh) corners.join(int(first[f] + k), at->second);
+      }
+    }
+  }
+  std::vector<std::vector<int>> fans(mesh.faces.size());
+  std::unordered_map<uint64_t, int> fanOfRoot;  // (vertex, corner root) -> fan number
+  std::vector<int> fanCount(mesh.vertices.size(), 0);
+  for (size_t f = 0; f < mesh.faces.size(); ++f)
+    for (size_t k = 0; k < mesh.faces[f].size(); ++k) {
+      const int v = mesh.faces[f][k];
+      const uint64_t key = uint64_t(v) * (first.back() + 1) + uint64_t(corners.find(int(first[f] + k)));
+      const auto [at, fresh] = fanOfRoot.emplace(key, fanCount[size_t(v)]);
+      if (fresh) ++fanCount[size_t(v)];
+      fans[f].push_back(at->second);
+    }
+  return fans;
 }
 
 int countSlivers(const SqmMesh& mesh, const std::vector<char>& band) {
@@ -156,7 +234,8 @@ double smallestAngle(const SqmMesh& mesh, size_t face) {
 }
 
 CurveCleanup cleanCurveBands(SqmMesh& mesh, const std::vector<char>& band,
-                             const std::vector<std::pair<int, int>>& curves) {
+                             const std::vector<std::pair<int, int>>& curves, const std::vector<char>& frozen,
+                             std::vector<int>* original) {
   CurveCleanup report;
   report.sliversBefore = report.sliversAfter = countSlivers(mesh, band);
   if (std::none_of(band.begin(), band.end(), [](char c) { return c != 0; })) return report;
@@ -169,47 +248,64 @@ CurveCleanup cleanCurveBands(SqmMesh& mesh, const std::vector<char>& band,
   m.add_property(b.polygon);
   m.add_property(b.curve);
   m.add_property(b.fixed);
+  m.add_property(b.frozen);
   m.add_property(b.index);
-  std::vector<VH> handles;
-  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
-    const Eigen::Vector3d& p = mesh.vertices[v];
-    handles.push_back(m.add_vertex(Mesh::Point(p.x(), p.y(), p.z())));
-    m.property(b.fixed, handles.back()) = false;
-    m.property(b.index, handles.back()) = int(v);
-  }
-  // OpenMesh reports a face it cannot add (a vertex where sheets touch at a point) on its error stream.
+  // A vertex where sheets touch at a point gets one OpenMesh vertex per fan of faces around it; the copies
+  // are frozen and come back as one vertex.
+  const std::vector<std::vector<int>> cornerFans = fansAtCorners(mesh);
+  std::vector<std::vector<VH>> handles(mesh.vertices.size());
+  const auto handleOf = [&](size_t f, size_t k) {
+    const size_t v = size_t(mesh.faces[f][k]);
+    const size_t fan = size_t(cornerFans[f][k]);
+    while (handles[v].size() <= fan) {
+      const Eigen::Vector3d& p = mesh.vertices[v];
+      handles[v].push_back(m.add_vertex(Mesh::Point(p.x(), p.y(), p.z())));
+      m.property(b.fixed, handles[v].back()) = false;
+      m.property(b.index, handles[v].back()) = int(v);
+      m.property(b.frozen, handles[v].back()) = fan > 0 || (!frozen.empty() && frozen[v]);
+    }
+    if (fan > 0) m.property(b.frozen, handles[v][0]) = true;
+    return handles[v][fan];
+  };
+  // OpenMesh reports a face it cannot add on its error stream (none expected once fans are split).
   omerr().disable();
   bool added = true;
   for (size_t f = 0; f < mesh.faces.size() && added; ++f) {
     const auto& face = mesh.faces[f];
     for (size_t k = 1; k + 1 < face.size() && added; ++k) {
-      const FH t = m.add_face(handles[size_t(face[0])], handles[size_t(face[k])], handles[size_t(face[k + 1])]);
+      const FH t = m.add_face(handleOf(f, 0), handleOf(f, k), handleOf(f, k + 1));
       added = t.is_valid();
       if (added) m.property(b.polygon, t) = band[f] ? -1 : int(f);
     }
     if (!band[f])
-      for (const int v : face) m.property(b.fixed, handles[size_t(v)]) = true;
+      for (size_t k = 0; k < face.size(); ++k) m.property(b.fixed, handleOf(f, k)) = true;
   }
   omerr().enable();
   if (!added) return report;
   for (const EH e : m.edges()) m.property(b.curve, e) = false;
-  for (const auto& [x, y] : curves) {
-    const HH h = m.find_halfedge(handles[size_t(x)], handles[size_t(y)]);
-    if (h.is_valid()) m.property(b.curve, m.edge_handle(h)) = true;
-  }
+  for (const auto& [x, y] : curves)
+    for (const VH hx : handles[size_t(x)])
+      for (const VH hy : handles[size_t(y)]) {
+        const HH h = m.find_halfedge(hx, hy);
+        if (h.is_valid()) m.property(b.curve, m.edge_handle(h)) = true;
+      }
 
+  b.mergedInto.assign(mesh.vertices.size(), -1);
   report.collapsed = collapseShortCurveEdges(b);
+  report.snapped = snapCornersOntoCurves(b);
   report.flipped = delaunayFlips(b);
 
   // Back to polygons: whole ones as they were, cut triangles as they are now.
-  std::vector<int> index(mesh.vertices.size(), -1);
+  std::vector<int> index(mesh.vertices.size(), -1), kept;
   SqmMesh cleaned;
   for (const VH v : m.vertices()) {
     if (m.status(v).deleted()) continue;
-    const int original = m.property(b.index, v);
-    index[size_t(original)] = int(cleaned.vertices.size());
-    cleaned.vertices.push_back(mesh.vertices[size_t(original)]);
-    cleaned.vertexNode.push_back(mesh.vertexNode[size_t(original)]);
+    const int source = m.property(b.index, v);
+    if (index[size_t(source)] >= 0) continue;  // a second fan's copy
+    index[size_t(source)] = int(cleaned.vertices.size());
+    cleaned.vertices.push_back(mesh.vertices[size_t(source)]);
+    cleaned.vertexNode.push_back(mesh.vertexNode[size_t(source)]);
+    kept.push_back(source);
   }
   std::vector<char> cleanedBand, emitted(mesh.faces.size(), 0);
   for (const FH f : m.faces()) {
@@ -220,7 +316,10 @@ CurveCleanup cleanCurveBands(SqmMesh& mesh, const std::vector<char>& band,
       for (const VH v : m.fv_range(f)) corners.push_back(index[size_t(m.property(b.index, v))]);
     } else if (!emitted[size_t(polygon)]) {
       emitted[size_t(polygon)] = 1;
-      for (const int v : mesh.faces[size_t(polygon)]) corners.push_back(index[size_t(v)]);
+      for (int v : mesh.faces[size_t(polygon)]) {
+        while (b.mergedInto[size_t(v)] >= 0) v = b.mergedInto[size_t(v)];
+        corners.push_back(index[size_t(v)]);
+      }
     } else {
       continue;
     }
@@ -229,6 +328,7 @@ CurveCleanup cleanCurveBands(SqmMesh& mesh, const std::vector<char>& band,
   }
   report.sliversAfter = countSlivers(cleaned, cleanedBand);
   mesh = std::move(cleaned);
+  if (original) *original = std::move(kept);
   report.applied = true;
   return report;
 }

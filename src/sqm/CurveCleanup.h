@@ -19,6 +19,7 @@ namespace medial {
 
 struct CurveCleanup {
   int collapsed = 0, flipped = 0;          // curve vertices removed, edges flipped
+  int snapped = 0;                         // polygon corners moved onto a curve vertex beside them
   int sliversBefore = 0, sliversAfter = 0;  // cut triangles with an angle below kSliverDegrees
   bool applied = false;                     // false: not a manifold OpenMesh takes, the mesh is unchanged
 };
@@ -29,8 +30,11 @@ constexpr double kSliverDegrees = 10;
 /// The smallest angle of polygon `face` of `mesh`, in degrees.
 double smallestAngle(const SqmMesh& mesh, size_t face);
 
-/// Cleans the triangles flagged in `band` along the curve edges `curves` (pairs of vertex indices).
+/// Cleans the triangles flagged in `band` along the curve edges `curves` (pairs of vertex indices). Vertices
+/// flagged in `frozen` (may be empty) are neither removed nor is an edge flipped next to them. `original`,
+/// when given, receives the input index of each vertex of the cleaned mesh.
 CurveCleanup cleanCurveBands(SqmMesh& mesh, const std::vector<char>& band,
-                             const std::vector<std::pair<int, int>>& curves);
+                             const std::vector<std::pair<int, int>>& curves, const std::vector<char>& frozen = {},
+                             std::vector<int>* original = nullptr);
 
 }  // namespace medial

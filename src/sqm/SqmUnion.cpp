@@ -368,6 +368,48 @@ SqmMesh withoutUnusedVertices(SqmMesh united, std::vector<int>& used) {
   return compact;
 }
 
+// Stage 6: the cut triangles along the curves cleaned (CurveCleanup), kept where the mesh stays a closed
+// manifold that cuts itself no more than before. Where the cleaned mesh cuts itself (a collapse or a flip
+// folded a triangle through a nearby sheet: 61 pairs on the dense tree refined twice), the vertices of those
+// faces and their neighbours are frozen and the cleanup runs again from the uncleaned mesh, at most
+// kCleanupRounds times. The mesh before is tested only when the cleaned one cuts itself at all.
+constexpr int kCleanupRounds = 4;
+
+void cleanAlongCurves(SqmMesh& mesh, const std::vector<char>& band, const std::vector<std::pair<int, int>>& curves,
+                      SqmUnionResult& result) {
+  int pairsBefore = -1;  // the uncleaned mesh's, counted when needed
+  const auto uncleanedPairs = [&] {
+    if (pairsBefore < 0) pairsBefore = int(selfIntersectingFaces(mesh.vertices, mesh.faces).size());
+    return pairsBefore;
+  };
+  std::vector<char> frozen;
+  for (int round = 0; round < kCleanupRounds; ++round) {
+    SqmMesh cleaned = mesh;
+    std::vector<int> original;
+    const CurveCleanup cleanup = cleanCurveBands(cleaned, band, curves, frozen, &original);
+    if (round == 0) result.cleanup = cleanup;
+    if (!cleanup.applied || !topologyOf(cleaned).isClosedManifold()) break;
+    const auto pairs = selfIntersectingFaces(cleaned.vertices, cleaned.faces);
+    if (pairs.empty() || int(pairs.size()) <= uncleanedPairs()) {
+      result.cleanup = cleanup;
+      result.intersectingAfter = int(pairs.size());
+      mesh = std::move(cleaned);
+      return;
+    }
+    if (frozen.empty()) frozen.assign(mesh.vertices.size(), 0);
+    for (const auto& [f, g] : pairs)
+      for (const int face : {f, g})
+        for (const int v : cleaned.faces[size_t(face)]) frozen[size_t(original[size_t(v)])] = 1;
+    const std::vector<char> seeds = frozen;  // grown by one ring of the uncleaned mesh
+    for (const auto& face : mesh.faces)
+      if (std::any_of(face.begin(), face.end(), [&](int v) { return seeds[size_t(v)] != 0; }))
+        for (const int v : face) frozen[size_t(v)] = 1;
+  }
+  result.cleanup.applied = false;
+  result.cleanup.sliversAfter = result.cleanup.sliversBefore;
+  result.intersectingAfter = uncleanedPairs();
+}
+
 }  // namespace
 
 SqmOverlaps sqmOverlaps(const SqmMesh& mesh) { return sqmOverlaps(mesh, selfIntersectingFaces(mesh.vertices, mesh.faces)); }
@@ -411,28 +453,10 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
                    std::to_string(topology.nonManifoldEdges) + " non-manifold edges): no union";
     return result;
   }
-  // Stage 6: the cut triangles along the curves cleaned; kept where the mesh stays a closed manifold that
-  // cuts itself no more than before (the mesh before is tested only when the cleaned one cuts itself at all:
-  // one exact test on the usual path).
-  const auto intersectingPairs = [](const SqmMesh& m) { return int(selfIntersectingFaces(m.vertices, m.faces).size()); };
   std::vector<std::pair<int, int>> curves;
   for (const auto& [a, b] : rounded.curves)
     if (used[size_t(a)] >= 0 && used[size_t(b)] >= 0) curves.emplace_back(used[size_t(a)], used[size_t(b)]);
-  SqmMesh cleaned = compact;
-  result.cleanup = cleanCurveBands(cleaned, band, curves);
-  if (result.cleanup.applied && topologyOf(cleaned).isClosedManifold()) {
-    result.intersectingAfter = intersectingPairs(cleaned);
-    if (result.intersectingAfter > 0 && result.intersectingAfter > intersectingPairs(compact))
-      result.cleanup.applied = false;
-  } else {
-    result.cleanup.applied = false;
-  }
-  if (result.cleanup.applied) {
-    compact = std::move(cleaned);
-  } else {
-    result.cleanup.sliversAfter = result.cleanup.sliversBefore;
-    result.intersectingAfter = intersectingPairs(compact);
-  }
+  cleanAlongCurves(compact, band, curves, result);
   mesh = std::move(compact);
   return result;
 }

@@ -37,7 +37,7 @@ struct OverlapCase {
   std::string path;  // a skeleton file, or a sketch (.txt) whose skeleton is meshed
   int levels;
   bool capsules;  // the swept spheres' union has round ends: compare volumes with capsules only
-  double sliverShare = 0.3;  // at most this share of the triangles are slivers (without the cleanup: 42-49 %)
+  double sliverShare = 0.2;  // at most this share of the triangles are slivers (without the cleanup: 42-78 %)
 };
 
 std::ostream& operator<<(std::ostream& os, const OverlapCase& c) { return os << c.name; }
@@ -141,8 +141,8 @@ TEST_P(SqmUnion, OverlapsBecomeOneClosedSurfaceAroundTheSkeleton) {
     if (degree[n] >= 2 || c.levels > 0 || c.capsules) outside += !inside.contains(skeleton.nodes[n]);
   EXPECT_EQ(outside, 0);
   // Along the curves a clean triangulation (CurveCleanup): few slivers (an angle under 10 degrees) among
-  // the triangles. Not yet on the dense tree (sheets touch at points there, which OpenMesh refuses) and the
-  // hand refined twice (the cleaned mesh cut itself and was not used): no bound there.
+  // the triangles. Not yet on the hand refined twice (its thumb's crease, where the fold repair moved
+  // refined vertices together, keeps fans of slivers): no bound there.
   medial::SqmMesh plain;
   plain.vertices = points;
   for (const auto& f : faces) plain.faces.emplace_back(f.begin(), f.end());
@@ -170,8 +170,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(OverlapCase{"crossing tubes", "skeletons/overlapping/crossing.vtp", 0, false},
                       OverlapCase{"crossing tubes refined twice", "skeletons/overlapping/crossing.vtp", 2, true},
                       OverlapCase{"crossing tubes refined three times", "skeletons/overlapping/crossing.vtp", 3, true},
-                      OverlapCase{"dense tree refined twice", "skeletons/overlapping/dense-tree.vtp", 2, true, 1.0},
-                      OverlapCase{"hand sketch", "sketches/hand.txt", 0, false},
+                      OverlapCase{"dense tree refined twice", "skeletons/overlapping/dense-tree.vtp", 2, true},
+                      OverlapCase{"hand sketch", "sketches/hand.txt", 0, false, 0.3},
                       OverlapCase{"hand sketch refined twice", "sketches/hand.txt", 2, true, 1.0}),
     [](const ::testing::TestParamInfo<OverlapCase>& info) {
       std::string name = info.param.name;
