@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <unordered_map>
 
 namespace medial {
@@ -43,28 +44,33 @@ struct BandMesh {
   OpenMesh::EPropHandleT<bool> curve;
   OpenMesh::VPropHandleT<bool> fixed;   // a vertex of a whole polygon: moves only onto a curve (snapped)
   OpenMesh::VPropHandleT<bool> frozen;  // never removed, never a collapse's target, no edge flipped next to it
-  std::vector<int> mergedInto;          // input vertex -> the input vertex it was collapsed into, or -1
-  OpenMesh::VPropHandleT<int> index;   // in the input mesh
+  OpenMesh::VPropHandleT<int> index;    // into points
+  std::vector<Eigen::Vector3d> points;  // the input's vertices, then those split onto curve edges
+  std::vector<int> nodes, origin;       // their skeleton node; the input vertex they come from
+  std::vector<int> mergedInto;          // vertex -> the vertex it was collapsed into, or -1
 };
 
-// Moving `from` onto `to` keeps every other triangle around `from` the same way round and not flat.
-bool collapseKeepsOrientation(const Mesh& m, VH from, VH to) {
+// Moving `from` to `target` keeps every triangle around `from` that does not touch `removed` (they go
+// with the collapse) the same way round and not flat.
+bool moveKeepsOrientation(const Mesh& m, VH from, const Eigen::Vector3d& target, VH removed) {
   for (const FH f : m.vf_range(from)) {
     Eigen::Vector3d before[3], after[3];
     int k = 0;
-    bool touchesTo = false;
+    bool touches = false;
     for (const VH v : m.fv_range(f)) {
       before[k] = at(m, v);
-      after[k] = v == from ? at(m, to) : at(m, v);
-      touchesTo |= v == to;
+      after[k] = v == from ? target : at(m, v);
+      touches |= v == removed;
       ++k;
     }
-    if (touchesTo) continue;  // removed with the edge
+    if (touches) continue;
     const Eigen::Vector3d n0 = normalOf(before[0], before[1], before[2]), n1 = normalOf(after[0], after[1], after[2]);
     if (n0.dot(n1) <= 0.2 * n0.norm() * n1.norm()) return false;
   }
   return true;
 }
+
+bool collapseKeepsOrientation(const Mesh& m, VH from, VH to) { return moveKeepsOrientation(m, from, at(m, to), to); }
 
 double medianAround(const Mesh& m, VH a, VH b) {
   std::vector<double> lengths;
@@ -149,9 +155,89 @@ int snapCornersOntoCurves(BandMesh& b) {
   return snapped;
 }
 
+// A whole polygon's corner lying just beside the middle of a curve edge (a cap: the triangle between them
+// has an angle near 180 degrees at the corner) is moved onto the curve: the curve edge is split at the
+// corner's foot (the new vertex lies on both sheets, so the surface does not change there) and the corner
+// collapses into it.
+int snapCornersOntoCurveEdges(BandMesh& b) {
+  Mesh& m = b.mesh;
+  int snapped = 0;
+  const size_t faceCount = m.n_faces();
+  for (size_t fi = 0; fi < faceCount; ++fi) {
+    const FH f = m.face_handle(int(fi));
+    if (m.status(f).deleted() || m.property(b.polygon, f) >= 0) continue;
+    for (const HH h : m.fh_range(f)) {  // h: the curve edge; the corner opposite it
+      const EH e = m.edge_handle(h);
+      const VH corner = m.to_vertex_handle(m.next_halfedge_handle(h));
+      const VH c1 = m.from_vertex_handle(h), c2 = m.to_vertex_handle(h);
+      if (!m.property(b.curve, e) || !m.property(b.fixed, corner) || m.property(b.frozen, corner) ||
+          m.property(b.frozen, c1) || m.property(b.frozen, c2) || m.is_boundary(e) ||
+          m.property(b.polygon, m.opposite_face_handle(h)) >= 0)
+        continue;
+      const Eigen::Vector3d a = at(m, c1), d = at(m, c2) - a, p = at(m, corner);
+      const double t = (p - a).dot(d) / d.squaredNorm();
+      if (t < 0.2 || t > 0.8) continue;  // near an end the other snap applies
+      const Eigen::Vector3d foot = a + t * d;
+      if ((p - foot).norm() >= kSnapCorner * medianAround(m, c1, c2) || !moveKeepsOrientation(m, corner, foot, c1))
+        continue;
+      // The faces around the corner that touch c1 or c2 stay with it (the corner moves along); check them too.
+      if (!moveKeepsOrientation(m, corner, foot, c2)) continue;
+      const VH w = m.add_vertex(Mesh::Point(foot.x(), foot.y(), foot.z()));
+      m.property(b.index, w) = int(b.points.size());
+      m.property(b.fixed, w) = false;
+      m.property(b.frozen, w) = false;
+      b.points.push_back(foot);
+      b.nodes.push_back(b.nodes[size_t(m.property(b.index, c1))]);
+      b.origin.push_back(b.origin[size_t(m.property(b.index, c1))]);
+      b.mergedInto.push_back(-1);
+      m.split(e, w);
+      for (const HH out : m.voh_range(w)) {
+        const VH to = m.to_vertex_handle(out);
+        m.property(b.curve, m.edge_handle(out)) = to == c1 || to == c2;
+        if (m.face_handle(out).is_valid()) m.property(b.polygon, m.face_handle(out)) = -1;
+      }
+      const HH toW = m.find_halfedge(corner, w);
+      if (toW.is_valid() && m.is_collapse_ok(toW)) {
+        b.mergedInto[size_t(m.property(b.index, corner))] = m.property(b.index, w);
+        m.collapse(toW);
+        m.property(b.fixed, w) = true;
+        ++snapped;
+      }
+      break;
+    }
+  }
+  return snapped;
+}
+
 double angleAt(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   const Eigen::Vector3d u = a - p, v = b - p;
   return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+bool isSliver(const Mesh& m, FH f) {
+  Eigen::Vector3d p[3];
+  int k = 0;
+  for (const VH v : m.fv_range(f)) p[k++] = at(m, v);
+  double smallest = M_PI;
+  for (k = 0; k < 3; ++k) smallest = std::min(smallest, angleAt(p[k], p[(k + 1) % 3], p[(k + 2) % 3]));
+  return smallest * 180 / M_PI < kSliverDegrees;
+}
+
+// Turns the whole polygon that triangle `f` belongs to into cut triangles.
+void dissolvePolygon(BandMesh& b, FH f) {
+  Mesh& m = b.mesh;
+  const int polygon = m.property(b.polygon, f);
+  std::vector<FH> todo{f};
+  m.property(b.polygon, f) = -1;
+  while (!todo.empty()) {
+    const FH t = todo.back();
+    todo.pop_back();
+    for (const FH n : m.ff_range(t))
+      if (m.property(b.polygon, n) == polygon) {
+        m.property(b.polygon, n) = -1;
+        todo.push_back(n);
+      }
+  }
 }
 
 // Flips edges between two cut triangles (not on a curve) whose opposite angles sum above pi, where the
@@ -164,7 +250,10 @@ int delaunayFlips(BandMesh& b) {
     for (const EH e : m.edges()) {
       if (m.status(e).deleted() || m.is_boundary(e) || m.property(b.curve, e)) continue;
       const HH h = m.halfedge_handle(e, 0), g = m.halfedge_handle(e, 1);
-      if (m.property(b.polygon, m.face_handle(h)) >= 0 || m.property(b.polygon, m.face_handle(g)) >= 0) continue;
+      const int ph = m.property(b.polygon, m.face_handle(h)), pg = m.property(b.polygon, m.face_handle(g));
+      // An edge of a whole polygon flips only to remove a sliver beside it (a curve vertex that comes
+      // near the polygon's side): the polygon then becomes cut triangles.
+      if ((ph >= 0 && pg >= 0) || ((ph >= 0 || pg >= 0) && !isSliver(m, m.face_handle(ph >= 0 ? g : h)))) continue;
       const VH a = m.from_vertex_handle(h), c = m.to_vertex_handle(h);
       const VH p = m.to_vertex_handle(m.next_halfedge_handle(h)), q = m.to_vertex_handle(m.next_halfedge_handle(g));
       if (m.property(b.frozen, a) || m.property(b.frozen, c) || m.property(b.frozen, p) || m.property(b.frozen, q))
@@ -175,6 +264,7 @@ int delaunayFlips(BandMesh& b) {
       const Eigen::Vector3d n = normalOf(A, C, P) + normalOf(C, A, Q);
       const Eigen::Vector3d n1 = normalOf(P, Q, C), n2 = normalOf(Q, P, A);
       if (n1.dot(n) <= 0.2 * n1.norm() * n.norm() || n2.dot(n) <= 0.2 * n2.norm() * n.norm()) continue;
+      if (ph >= 0 || pg >= 0) dissolvePolygon(b, m.face_handle(ph >= 0 ? h : g));
       m.flip(e);
       ++flipped;
     }
@@ -290,22 +380,26 @@ CurveCleanup cleanCurveBands(SqmMesh& mesh, const std::vector<char>& band,
         if (h.is_valid()) m.property(b.curve, m.edge_handle(h)) = true;
       }
 
+  b.points = mesh.vertices;
+  b.nodes = mesh.vertexNode;
+  b.origin.resize(mesh.vertices.size());
+  std::iota(b.origin.begin(), b.origin.end(), 0);
   b.mergedInto.assign(mesh.vertices.size(), -1);
   report.collapsed = collapseShortCurveEdges(b);
-  report.snapped = snapCornersOntoCurves(b);
+  report.snapped = snapCornersOntoCurves(b) + snapCornersOntoCurveEdges(b);
   report.flipped = delaunayFlips(b);
 
   // Back to polygons: whole ones as they were, cut triangles as they are now.
-  std::vector<int> index(mesh.vertices.size(), -1), kept;
+  std::vector<int> index(b.points.size(), -1), kept;
   SqmMesh cleaned;
   for (const VH v : m.vertices()) {
     if (m.status(v).deleted()) continue;
     const int source = m.property(b.index, v);
     if (index[size_t(source)] >= 0) continue;  // a second fan's copy
     index[size_t(source)] = int(cleaned.vertices.size());
-    cleaned.vertices.push_back(mesh.vertices[size_t(source)]);
-    cleaned.vertexNode.push_back(mesh.vertexNode[size_t(source)]);
-    kept.push_back(source);
+    cleaned.vertices.push_back(b.points[size_t(source)]);
+    cleaned.vertexNode.push_back(b.nodes[size_t(source)]);
+    kept.push_back(b.origin[size_t(source)]);
   }
   std::vector<char> cleanedBand, emitted(mesh.faces.size(), 0);
   for (const FH f : m.faces()) {

@@ -171,7 +171,7 @@ INSTANTIATE_TEST_SUITE_P(
                       OverlapCase{"crossing tubes refined twice", "skeletons/overlapping/crossing.vtp", 2, true},
                       OverlapCase{"crossing tubes refined three times", "skeletons/overlapping/crossing.vtp", 3, true},
                       OverlapCase{"dense tree refined twice", "skeletons/overlapping/dense-tree.vtp", 2, true},
-                      OverlapCase{"hand sketch", "sketches/hand.txt", 0, false, 0.3},
+                      OverlapCase{"hand sketch", "sketches/hand.txt", 0, false, 0.25},
                       OverlapCase{"hand sketch refined twice", "sketches/hand.txt", 2, true, 1.0}),
     [](const ::testing::TestParamInfo<OverlapCase>& info) {
       std::string name = info.param.name;
