@@ -2,24 +2,14 @@
 
 #include "common/Stopwatch.h"
 
+#include "contraction/NormalMatrix.h"
 #include "mesh/MeshGeometry.h"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace medial {
-
-namespace {
-
-// W_L^2 L^T L + diag(W_H^2): the normal matrix of eq. (5). L is symmetric, so L^T L = L L.
-Eigen::SparseMatrix<double> normalMatrix(const Eigen::SparseMatrix<double>& laplacian,
-                                         double contractionWeight, const Eigen::VectorXd& attraction) {
-  Eigen::SparseMatrix<double> matrix = (laplacian * laplacian) * (contractionWeight * contractionWeight);
-  for (Eigen::Index i = 0; i < matrix.rows(); ++i) matrix.coeffRef(i, i) += attraction[i] * attraction[i];
-  return matrix;
-}
-
-}  // namespace
 
 ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParameters& p,
                                const ProgressCallback& progress) {
@@ -67,6 +57,7 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
   };
 
   SparseSolver solver(p.solver);
+  std::unique_ptr<NormalMatrix> normal;  // its pattern from the first Laplacian
   double previousArea = initialArea;
   Vertices best = positions;
   result.stopReason = "maximum iterations";
@@ -84,7 +75,8 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
     if (p.recordSteps && iteration == 0) record(positions, laplacian, contractionWeight, attraction);
     const double weightUsed = contractionWeight;
     const Eigen::VectorXd attractionUsed = p.recordSteps ? attraction : Eigen::VectorXd();
-    const Eigen::SparseMatrix<double> matrix = normalMatrix(laplacian, contractionWeight, attraction);
+    if (!normal) normal = std::make_unique<NormalMatrix>(laplacian);
+    const Eigen::SparseMatrix<double>& matrix = normal->update(laplacian, contractionWeight, attraction);
     const Eigen::MatrixXd rhs = attraction.array().square().matrix().asDiagonal() * positions;
     result.assembleSeconds += start.seconds();
 
