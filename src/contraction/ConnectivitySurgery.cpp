@@ -25,7 +25,10 @@ class CollapsibleComplex {
         collapsedAt_(n_, 0),
         neighbours_(n_),
         vertexFaces_(n_),
-        quadric_(n_, Eigen::Matrix4d::Zero()) {
+        quadric_(n_, Eigen::Matrix4d::Zero()),
+        ring_(n_, 0),
+        ringVersion_(n_, 0),
+        ringKnown_(n_, false) {
     for (int i = 0; i < n_; ++i) {
       position_[i] = positions.row(i).transpose();
       owner_[i] = i;
@@ -70,14 +73,25 @@ class CollapsibleComplex {
   double cost(int i, int j, double shapeWeight, double samplingWeight) const {
     const Eigen::Vector4d p(position_[j].x(), position_[j].y(), position_[j].z(), 1.0);
     const double shape = p.dot((quadric_[i] + quadric_[j]) * p);  // (8) at the kept position
-    double ringLength = 0;
-    for (int k : neighbours_[i]) ringLength += length(i, k);
-    const double sampling = length(i, j) * ringLength;  // (9)
+    const double sampling = length(i, j) * ringLength(i);  // (9)
     return shapeWeight * shape + samplingWeight * sampling;
   }
 
-  // Collapses i into j; returns the vertices whose collapse costs changed (j and i's other neighbours).
-  std::vector<int> collapse(int i, int j) {
+  // The summed length of i's edges, cached until i's neighbourhood changes (its version): each collapse
+  // re-ranks every edge around the vertices it touched, and each ranking needs this sum.
+  double ringLength(int i) const {
+    if (ringVersion_[i] != version_[i] || !ringKnown_[i]) {
+      double sum = 0;
+      for (int k : neighbours_[i]) sum += length(i, k);
+      ring_[i] = sum;
+      ringVersion_[i] = version_[i];
+      ringKnown_[i] = true;
+    }
+    return ring_[i];
+  }
+
+  // Collapses i into j; j and i's other neighbours change (their version grows).
+  void collapse(int i, int j) {
     for (int f : vertexFaces_[i]) {
       if (!faceAlive_[f]) continue;
       auto& face = faces_[f];
@@ -105,7 +119,6 @@ class CollapsibleComplex {
     vertexFaces_[i].clear();
     compactFaces(j);
     for (int v : touched) ++version_[v];
-    return touched;
   }
 
   // The node that finally holds vertex i (following the collapse chain).
@@ -160,47 +173,71 @@ class CollapsibleComplex {
   std::vector<std::vector<int>> neighbours_;
   std::vector<std::vector<int>> vertexFaces_;
   std::vector<Eigen::Matrix4d> quadric_;
+  mutable std::vector<double> ring_;
+  mutable std::vector<unsigned> ringVersion_;
+  mutable std::vector<bool> ringKnown_;
   std::vector<std::array<int, 3>> faces_;
   std::vector<bool> faceAlive_;
   int aliveFaces_ = 0;
 };
 
+// A vertex's cheapest collapse. The queue holds one per vertex: `stamp` tells whether it is still the
+// vertex's latest ranking (an edge per entry, as before, pushed ~20 entries per collapse: at 104k vertices
+// ten million entries whose sifting was most of the surgery's time).
 struct Candidate {
   double key;
   int from, to;
-  unsigned fromVersion, toVersion;
+  unsigned stamp;
   bool operator>(const Candidate& other) const { return key > other.key; }
 };
 using CandidateQueue = std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>>;
 
-bool isCurrent(const CollapsibleComplex& complex, const Candidate& c) {
-  return complex.alive(c.from) && complex.alive(c.to) && complex.version(c.from) == c.fromVersion &&
-         complex.version(c.to) == c.toVersion && complex.edgeHasFace(c.from, c.to);
-}
-
 // Runs collapses from a queue until it empties or no face is left; key(i, j) ranks collapsing i into j,
-// accept(candidate) may reject a popped current candidate (and stops the pass when it returns false).
-template <class Key, class Accept>
-int runCollapses(CollapsibleComplex& complex, Key key, Accept accept,
+// orient(candidate) may turn the popped edge round (from <-> to) before it collapses, accept(candidate)
+// may reject it (and stops the pass when it returns false). A collapse of i into j changes the keys of
+// edges out of the vertices it touched (their rings and faces changed) and into j (its quadric grew):
+// j and its neighbours are ranked again.
+template <class Key, class Orient, class Accept>
+int runCollapses(CollapsibleComplex& complex, Key key, Orient orient, Accept accept,
                  const std::function<bool(double)>& progress, bool& aborted) {
   CandidateQueue queue;
-  auto pushAround = [&](int v) {
-    for (int k : complex.neighbours(v)) {
-      queue.push({key(v, k), v, k, complex.version(v), complex.version(k)});
-      queue.push({key(k, v), k, v, complex.version(k), complex.version(v)});
-    }
-  };
-  for (int v = 0; v < complex.vertexCount(); ++v)
-    for (int k : complex.neighbours(v)) queue.push({key(v, k), v, k, complex.version(v), complex.version(k)});
-
+  std::vector<unsigned> stamp(size_t(complex.vertexCount()), 0);
+  std::vector<int> rankedAt(size_t(complex.vertexCount()), -1);
   int collapses = 0;
+  const auto rank = [&](int v) {
+    if (rankedAt[size_t(v)] == collapses) return;
+    rankedAt[size_t(v)] = collapses;
+    ++stamp[size_t(v)];
+    double best = INFINITY;
+    int to = -1;
+    for (int k : complex.neighbours(v)) {
+      if (!complex.edgeHasFace(v, k)) continue;
+      const double c = key(v, k);
+      if (c < best) {
+        best = c;
+        to = k;
+      }
+    }
+    if (to >= 0) queue.push({best, v, to, stamp[size_t(v)]});
+  };
+  for (int v = 0; v < complex.vertexCount(); ++v) rank(v);
+
   while (!queue.empty() && complex.aliveFaces() > 0) {
-    const Candidate c = queue.top();
+    Candidate c = queue.top();
     queue.pop();
-    if (!isCurrent(complex, c)) continue;
+    if (!complex.alive(c.from) || stamp[size_t(c.from)] != c.stamp) continue;
+    if (!complex.alive(c.to) || !complex.edgeHasFace(c.from, c.to)) {  // not expected: rank it afresh
+      rankedAt[size_t(c.from)] = -1;
+      rank(c.from);
+      continue;
+    }
     if (!accept(c)) break;
-    for (int v : complex.collapse(c.from, c.to)) pushAround(v);
-    if (++collapses % 2048 == 0 && progress &&
+    orient(c);
+    complex.collapse(c.from, c.to);
+    ++collapses;
+    rank(c.to);
+    for (int k : complex.neighbours(c.to)) rank(k);
+    if (collapses % 2048 == 0 && progress &&
         !progress(1.0 - double(complex.aliveFaces()) / std::max(1, complex.initialFaces()))) {
       aborted = true;
       break;
@@ -219,17 +256,20 @@ CurveSkeleton collapseToCurveSkeleton(const Vertices& contracted, const Faces& f
   bool aborted = false;
 
   // 1. Pre-pass: shortest edges first while they are shorter than delta; the direction of each collapse
-  //    follows the total cost so that the quadrics stay meaningful.
+  //    follows the total cost so that the quadrics stay meaningful (chosen when the edge comes up).
   const double delta = p.deltaFraction * boundingBoxDiagonal(contracted);
   auto total = [&](int i, int j) { return complex.cost(i, j, p.shapeWeight, p.samplingWeight); };
   skeleton.prePassCollapses = runCollapses(
-      complex, [&](int i, int j) { return total(i, j) <= total(j, i) ? complex.length(i, j) : INFINITY; },
+      complex, [&](int i, int j) { return complex.length(i, j); },
+      [&](Candidate& c) {
+        if (total(c.to, c.from) < total(c.from, c.to)) std::swap(c.from, c.to);
+      },
       [&](const Candidate& c) { return c.key <= delta; }, progress, aborted);
 
   // 2. Cost-ranked collapses until no triangle is left.
   if (!aborted)
     skeleton.costCollapses = runCollapses(
-        complex, total, [](const Candidate&) { return true; }, progress, aborted);
+        complex, total, [](Candidate&) {}, [](const Candidate&) { return true; }, progress, aborted);
   if (aborted) return {};
   skeleton.remainingFaces = complex.aliveFaces();
 
