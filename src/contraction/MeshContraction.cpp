@@ -56,6 +56,7 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
     result.steps.push_back(std::move(step));
   };
 
+  LaplacianAssembler assembler(mesh.faces, n);
   SparseSolver solver(p.solver);
   std::unique_ptr<NormalMatrix> normal;  // its pattern from the first Laplacian
   double previousArea = initialArea;
@@ -71,7 +72,7 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
         if (!frozen[size_t(f)]) cotangents.row(f) = current.row(f);
       }
     }
-    const Eigen::SparseMatrix<double> laplacian = laplacianFromCotangents(mesh.faces, cotangents, n);
+    const Eigen::SparseMatrix<double>& laplacian = assembler.update(cotangents);
     if (p.recordSteps && iteration == 0) record(positions, laplacian, contractionWeight, attraction);
     const double weightUsed = contractionWeight;
     const Eigen::VectorXd attractionUsed = p.recordSteps ? attraction : Eigen::VectorXd();

@@ -97,6 +97,49 @@ Eigen::SparseMatrix<double> laplacianFromCotangents(const Faces& faces, const Ei
   return laplacian;
 }
 
+namespace {
+
+// The position of entry (row, column) in a compressed column-major matrix with sorted columns.
+int entryAt(const Eigen::SparseMatrix<double>& m, int row, int column) {
+  const int* first = m.innerIndexPtr() + m.outerIndexPtr()[column];
+  const int* last = m.innerIndexPtr() + m.outerIndexPtr()[column + 1];
+  const int* at = std::lower_bound(first, last, row);
+  return at != last && *at == row ? int(at - m.innerIndexPtr()) : -1;
+}
+
+}  // namespace
+
+LaplacianAssembler::LaplacianAssembler(const Faces& faces, Eigen::Index vertexCount)
+    : laplacian_(laplacianFromCotangents(faces, Eigen::MatrixX3d::Ones(faces.rows(), 3), vertexCount)),
+      targets_(size_t(faces.rows() * 3)) {
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+    for (int corner = 0; corner < 3; ++corner) {
+      const int i = faces(f, (corner + 1) % 3), j = faces(f, (corner + 2) % 3);
+      auto& target = targets_[size_t(3 * f + corner)];
+      if (i == j) {
+        target = {-1, -1, -1, -1};
+        continue;
+      }
+      target = {entryAt(laplacian_, j, i), entryAt(laplacian_, i, j), entryAt(laplacian_, i, i), entryAt(laplacian_, j, j)};
+    }
+}
+
+const Eigen::SparseMatrix<double>& LaplacianAssembler::update(const Eigen::MatrixX3d& cotangents) {
+  double* value = laplacian_.valuePtr();
+  std::fill(value, value + laplacian_.nonZeros(), 0.0);
+  for (Eigen::Index f = 0; f < cotangents.rows(); ++f)
+    for (int corner = 0; corner < 3; ++corner) {
+      const auto& target = targets_[size_t(3 * f + corner)];
+      if (target[0] < 0) continue;
+      const double w = cotangents(f, corner);
+      value[target[0]] += w;
+      value[target[1]] += w;
+      value[target[2]] -= w;
+      value[target[3]] -= w;
+    }
+  return laplacian_;
+}
+
 Eigen::SparseMatrix<double> cotangentLaplacian(const Vertices& vertices, const Faces& faces,
                                                double minAngle) {
   return laplacianFromCotangents(faces, faceCotangents(vertices, faces, minAngle), vertices.rows());

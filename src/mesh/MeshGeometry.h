@@ -3,6 +3,9 @@
 // face areas, one-ring areas, enclosed volume, and the bounding-box diagonal.
 #pragma once
 
+#include <array>
+#include <vector>
+
 #include "mesh/TriangleMesh.h"
 
 #include <Eigen/Geometry>
@@ -21,6 +24,19 @@ Eigen::SparseMatrix<double> cotangentLaplacian(const Vertices& vertices, const F
 Eigen::MatrixX3d faceCotangents(const Vertices& vertices, const Faces& faces, double minAngle);
 Eigen::SparseMatrix<double> laplacianFromCotangents(const Faces& faces, const Eigen::MatrixX3d& cotangents,
                                                     Eigen::Index vertexCount);
+
+// laplacianFromCotangents for a mesh whose connectivity stays while its cotangents change (the contraction's
+// iterations): the pattern and, per face corner, the four entries its cotangent goes to are found once;
+// each update only adds the cotangents into the values (no sorting, no allocation).
+class LaplacianAssembler {
+ public:
+  LaplacianAssembler(const Faces& faces, Eigen::Index vertexCount);
+  const Eigen::SparseMatrix<double>& update(const Eigen::MatrixX3d& cotangents);
+
+ private:
+  Eigen::SparseMatrix<double> laplacian_;
+  std::vector<std::array<int, 4>> targets_;  // per face corner: entries (i, j), (j, i), (i, i), (j, j); -1: none
+};
 
 Eigen::VectorXd faceAreas(const Vertices& vertices, const Faces& faces);
 

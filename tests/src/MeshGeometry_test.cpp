@@ -36,3 +36,24 @@ TEST(MeshGeometry, LaplacianEqualsTheSumOfTheFacesCornerWeights) {
     for (int k = laplacian.outerIndexPtr()[c] + 1; k < laplacian.outerIndexPtr()[c + 1]; ++k)
       ASSERT_LT(laplacian.innerIndexPtr()[k - 1], laplacian.innerIndexPtr()[k]);
 }
+
+// The contraction's assembler refills the same pattern: equal to a fresh assembly, iteration after
+// iteration, with the degenerate face and the unused vertex above.
+TEST(MeshGeometry, AssemblerRefillsTheLaplacianOfNewCotangents) {
+  medial::TriangleMesh torus = medial::testing::torusMesh(2, 0.5, 24, 8);
+  torus.vertices.conservativeResize(torus.vertices.rows() + 1, 3);
+  torus.vertices.row(torus.vertices.rows() - 1) << 9, 9, 9;
+  torus.faces.conservativeResize(torus.faces.rows() + 1, 3);
+  torus.faces.row(torus.faces.rows() - 1) << 3, 3, 7;
+  const Eigen::Index n = torus.vertices.rows();
+  medial::LaplacianAssembler assembler(torus.faces, n);
+  medial::Vertices at = torus.vertices;
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    at.col(0) *= 0.7;
+    const Eigen::MatrixX3d cotangents = medial::faceCotangents(at, torus.faces, M_PI / 180);
+    const Eigen::SparseMatrix<double> fresh = medial::laplacianFromCotangents(torus.faces, cotangents, n);
+    const Eigen::SparseMatrix<double>& refilled = assembler.update(cotangents);
+    ASSERT_EQ(refilled.nonZeros(), fresh.nonZeros());
+    EXPECT_LT((Eigen::MatrixXd(refilled) - Eigen::MatrixXd(fresh)).cwiseAbs().maxCoeff(), 1e-12);
+  }
+}
