@@ -1,15 +1,16 @@
 // MeshGeometry: the per-face and per-vertex measures the contraction and weight solvers share:
 // the cotangent Laplacian of eq. (1) of the contraction paper (Desbrun et al. 1999) with clamped angles,
-// face areas, one-ring areas, enclosed volume, and the bounding-box diagonal.
+// face areas, one-ring areas, enclosed volume, and the bounding-box diagonal; LaplacianAssembler refills the
+// Laplacian of a mesh whose connectivity stays.
 #pragma once
-
-#include <array>
-#include <vector>
 
 #include "mesh/TriangleMesh.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>
+
+#include <array>
+#include <vector>
 
 namespace medial {
 
