@@ -58,8 +58,12 @@ TEST(MeshUnion, CrossOfTwoTubesIsOneClosedManifold) {
   for (Eigen::Index v = 0; v < r.mesh.vertices.rows(); ++v) {
     const Eigen::RowVector3d p = r.mesh.vertices.row(v);
     // Far along x only tube a is there; far along the rotated axis only tube b.
-    if (std::abs(p.x()) > 3) EXPECT_EQ(r.vertexLabel[size_t(v)], 0) << p;
-    if (std::abs(p.y()) > 2) EXPECT_EQ(r.vertexLabel[size_t(v)], 1) << p;
+    if (std::abs(p.x()) > 3) {
+      EXPECT_EQ(r.vertexLabel[size_t(v)], 0) << p;
+    }
+    if (std::abs(p.y()) > 2) {
+      EXPECT_EQ(r.vertexLabel[size_t(v)], 1) << p;
+    }
   }
   // The union's volume is less than the sum of the two (they share their crossing).
   const double sum = volumeOf(a) + volumeOf(b), joined = volumeOf(r.mesh);
