@@ -82,6 +82,21 @@ double medianAround(const Mesh& m, VH a, VH b) {
   return lengths[lengths.size() / 2];
 }
 
+// Collapses h's from-vertex into its to-vertex, remembering where it went (the whole polygons that named it
+// name the survivor).
+void collapseRecorded(BandMesh& b, HH h) {
+  Mesh& m = b.mesh;
+  b.mergedInto[size_t(m.property(b.index, m.from_vertex_handle(h)))] = m.property(b.index, m.to_vertex_handle(h));
+  m.collapse(h);
+}
+
+// A polygon's corner (h's from-vertex) moved onto the curve vertex h points to, a polygon corner from then on.
+void snapInto(BandMesh& b, HH h) {
+  const VH to = b.mesh.to_vertex_handle(h);
+  collapseRecorded(b, h);
+  b.mesh.property(b.fixed, to) = true;
+}
+
 int collapseShortCurveEdges(BandMesh& b) {
   Mesh& m = b.mesh;
   int collapsed = 0;
@@ -107,8 +122,7 @@ int collapseShortCurveEdges(BandMesh& b) {
         // Only where the curve runs on nearly straight: a corner of it (two boxes meeting) is its shape.
         const Eigen::Vector3d in = (at(m, from) - at(m, other)).normalized(), out = (at(m, to) - at(m, from)).normalized();
         if (in.dot(out) < std::cos(kStraightCurve * M_PI / 180)) continue;
-        b.mergedInto[size_t(m.property(b.index, from))] = m.property(b.index, to);
-        m.collapse(h);
+        collapseRecorded(b, h);
         const HH joined = m.find_halfedge(to, other);  // the curve goes on from `to`
         if (joined.is_valid()) m.property(b.curve, m.edge_handle(joined)) = true;
         ++collapsed;
@@ -145,9 +159,7 @@ int snapCornersOntoCurves(BandMesh& b) {
       if (m.calc_edge_length(e) >= kSnapCorner * medianAround(m, from, to) || !m.is_collapse_ok(h) ||
           !collapseKeepsOrientation(m, from, to))
         continue;
-      b.mergedInto[size_t(m.property(b.index, from))] = m.property(b.index, to);
-      m.collapse(h);
-      m.property(b.fixed, to) = true;
+      snapInto(b, h);
       ++snapped;
       break;
     }
@@ -198,9 +210,7 @@ int snapCornersOntoCurveEdges(BandMesh& b) {
       }
       const HH toW = m.find_halfedge(corner, w);
       if (toW.is_valid() && m.is_collapse_ok(toW)) {
-        b.mergedInto[size_t(m.property(b.index, corner))] = m.property(b.index, w);
-        m.collapse(toW);
-        m.property(b.fixed, w) = true;
+        snapInto(b, toW);
         ++snapped;
       }
       break;
