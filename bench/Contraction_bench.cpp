@@ -6,7 +6,8 @@
 // the solver x ordering study of the paper's Table I (contraction only) on one mesh.
 //   medial_bench_contraction [--repeat N] [--table MESH|none] [--no-subdivided] [--centring-only]
 //                            [--write DIR] [MESH...]
-// (--write DIR: the skeletons of the off-centre table as legacy VTK line files, to look at.)
+// (--write DIR: the skeletons of the off-centre table as legacy VTK line files, and their samples as points
+// with the ratio as point data, to look at.)
 // Then the off-centre ratio of issue 26 (src/contraction/CrossSections.h) of each mesh's skeletons.
 // With no mesh: the CGAL samples under data/external (scripts/fetch-samples) and armadillo after one Loop
 // subdivision (~104k vertices). Each run is a child process (fork), so that its peak resident memory
@@ -142,7 +143,6 @@ RunResult runContractionOnly(const medial::TriangleMesh& mesh, medial::SparseSol
   return out;
 }
 
-// The issue's off-centre ratio (src/contraction/CrossSections.h) of Medial's default skeleton, of its
 // Writes a skeleton as a legacy VTK file of lines (ParaView and Medial's GUI open it).
 void writeSkeleton(const medial::Skeleton& s, const std::string& path) {
   FILE* file = std::fopen(path.c_str(), "w");
@@ -155,8 +155,24 @@ void writeSkeleton(const medial::Skeleton& s, const std::string& path) {
   std::fclose(file);
 }
 
+// Writes the off-centre samples as legacy VTK vertices with their ratio as point data `OffCentre`.
+void writeSamples(const medial::OffCentreSummary& summary, const std::string& path) {
+  FILE* file = std::fopen(path.c_str(), "w");
+  if (!file) return;
+  const int n = int(summary.points.size());
+  std::fprintf(file, "# vtk DataFile Version 3.0\noff-centre samples\nASCII\nDATASET POLYDATA\nPOINTS %d double\n", n);
+  for (const auto& p : summary.points) std::fprintf(file, "%.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+  std::fprintf(file, "VERTICES %d %d\n", n, 2 * n);
+  for (int k = 0; k < n; ++k) std::fprintf(file, "1 %d\n", k);
+  std::fprintf(file, "POINT_DATA %d\nSCALARS OffCentre double 1\nLOOKUP_TABLE default\n", n);
+  for (double r : summary.ratios) std::fprintf(file, "%.6g\n", r);
+  std::fclose(file);
+}
+
+// The issue's off-centre ratio (src/contraction/CrossSections.h) of Medial's default skeleton, of its
 // unselected one (--nodes 0) and of CGAL's: median and 90th percentile, and the samples outside. With
-// `folder`, the three skeletons are written there (NAME-medial.vtk, NAME-medial-nodes0.vtk, NAME-cgal.vtk).
+// `folder`, the three skeletons are written there (NAME-medial.vtk, NAME-medial-nodes0.vtk, NAME-cgal.vtk),
+// each with its samples (NAME-...-samples.vtk).
 void centringRow(const std::string& name, const SurfaceMesh& sm, const std::string& folder) {
   const medial::TriangleMesh mesh = toTriangleMesh(sm);
   const medial::CrossSections sections(mesh);
@@ -165,18 +181,17 @@ void centringRow(const std::string& name, const SurfaceMesh& sm, const std::stri
   p.targetNodes = 0;
   const medial::Skeleton unselected = medial::skeletonByContraction(mesh, p).skeleton;
   std::printf("%-18s", name.c_str());
-  for (const medial::Skeleton* s : {&selected, &unselected}) {
-    const auto m = medial::offCentre(*s, sections);
-    std::printf(" | %6.3f %6.3f %4d", m.median(), m.percentile90(), m.outside);
-  }
   const medial::Skeleton cgal = cgalSkeleton(sm);
-  const auto peer = medial::offCentre(cgal, sections);
-  if (!folder.empty()) {
-    writeSkeleton(selected, folder + "/" + name + "-medial.vtk");
-    writeSkeleton(unselected, folder + "/" + name + "-medial-nodes0.vtk");
-    writeSkeleton(cgal, folder + "/" + name + "-cgal.vtk");
+  const std::pair<const medial::Skeleton*, const char*> rows[] = {
+      {&selected, "-medial"}, {&unselected, "-medial-nodes0"}, {&cgal, "-cgal"}};
+  for (const auto& [skeleton, suffix] : rows) {
+    const auto m = medial::offCentre(*skeleton, sections);
+    std::printf(" | %6.3f %6.3f %4d", m.median(), m.percentile90(), m.outside);
+    if (folder.empty()) continue;
+    writeSkeleton(*skeleton, folder + "/" + name + suffix + ".vtk");
+    writeSamples(m, folder + "/" + name + suffix + "-samples.vtk");
   }
-  std::printf(" | %6.3f %6.3f %4d\n", peer.median(), peer.percentile90(), peer.outside);
+  std::printf("\n");
   std::fflush(stdout);
 }
 

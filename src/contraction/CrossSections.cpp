@@ -121,9 +121,10 @@ OffCentreSummary offCentre(const Skeleton& skeleton, const CrossSections& sectio
     const Eigen::Vector3d from = skeleton.nodes[size_t(a)], to = skeleton.nodes[size_t(b)];
     const Eigen::Vector3d s = from + along(random) * (to - from);
     const CrossSection section = sections.around(s, to - from);
-    if (section.found)
+    if (section.found) {
       summary.ratios.push_back(section.offCentre(s));
-    else
+      summary.points.push_back(s);
+    } else
       ++summary.outside;
   }
   return summary;

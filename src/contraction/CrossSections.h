@@ -42,7 +42,8 @@ class CrossSections {
 // proportional to their length, a uniform position in the middle 60 % of the edge, a fixed seed), each
 // with its off-centre ratio; points with no loop around them are counted apart (outside).
 struct OffCentreSummary {
-  std::vector<double> ratios;  // of the points with a cross-section
+  std::vector<double> ratios;           // of the points with a cross-section
+  std::vector<Eigen::Vector3d> points;  // those points, in the order of `ratios`
   int outside = 0;
   double median() const;
   double percentile90() const;

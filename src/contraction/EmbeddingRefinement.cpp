@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace medial {
@@ -95,8 +96,8 @@ int pushNodesInside(CurveSkeleton& skeleton, const InsideTest& inside) {
   return moved;
 }
 
-int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVertices,
-                             const InsideTest& inside, int maxDepth) {
+int splitSkeletonEdges(CurveSkeleton& skeleton, const Vertices& originalVertices, int maxDepth,
+                       const SplitPoint& splitPoint) {
   std::vector<std::vector<int>> absorbed(size_t(skeleton.nodes.rows()));
   for (size_t v = 0; v < skeleton.vertexToNode.size(); ++v)
     if (skeleton.vertexToNode[v] >= 0) absorbed[size_t(skeleton.vertexToNode[v])].push_back(int(v));
@@ -115,29 +116,23 @@ int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVe
     const Pending e = pending.back();
     pending.pop_back();
     const Eigen::Vector3d pa = position(e.a), pb = position(e.b), ab = pb - pa;
-    if (e.depth >= maxDepth || ab.squaredNorm() == 0 || inside.segmentIsClear(pa, pb)) {
+    if (e.depth >= maxDepth || ab.squaredNorm() == 0) {
       edges.emplace_back(e.a, e.b);
       continue;
     }
     std::vector<int> middle;  // absorbed vertices of both ends over the middle half of the edge
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (int end : {e.a, e.b})
       for (int v : absorbed[size_t(end)]) {
-        const Eigen::Vector3d p = originalVertices.row(v).transpose();
-        const double t = (p - pa).dot(ab) / ab.squaredNorm();
-        if (t < 0.25 || t > 0.75) continue;
-        middle.push_back(v);
-        sum += p;
+        const double t = (originalVertices.row(v).transpose() - pa).dot(ab) / ab.squaredNorm();
+        if (t >= 0.25 && t <= 0.75) middle.push_back(v);
       }
-    Eigen::Vector3d centroid = middle.empty() ? pa : Eigen::Vector3d(sum / double(middle.size()));
-    if ((middle.size() < 3 || !inside.contains(centroid)) &&
-        !insidePointNearMiddle(pa, pb, inside, centroid)) {
+    Eigen::Vector3d point;
+    if (!splitPoint(pa, pb, middle, point)) {
       edges.emplace_back(e.a, e.b);
       continue;
     }
     const int k = int(skeleton.nodes.rows() + Eigen::Index(added.size()));
-    added.push_back(centroid);
-    absorbed.emplace_back(middle);
+    added.push_back(point);
     for (int end : {e.a, e.b}) {
       auto& list = absorbed[size_t(end)];
       list.erase(
@@ -145,6 +140,7 @@ int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVe
                          [&](int v) { return std::find(middle.begin(), middle.end(), v) != middle.end(); }),
           list.end());
     }
+    absorbed.emplace_back(std::move(middle));
     pending.push_back({e.a, k, e.depth + 1});
     pending.push_back({k, e.b, e.depth + 1});
   }
@@ -157,6 +153,20 @@ int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVe
   for (size_t node = 0; node < absorbed.size(); ++node)
     for (int v : absorbed[node]) skeleton.vertexToNode[size_t(v)] = int(node);
   return int(added.size());
+}
+
+int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVertices,
+                             const InsideTest& inside, int maxDepth) {
+  return splitSkeletonEdges(
+      skeleton, originalVertices, maxDepth,
+      [&](const Eigen::Vector3d& pa, const Eigen::Vector3d& pb, const std::vector<int>& middle,
+          Eigen::Vector3d& point) {
+        if (inside.segmentIsClear(pa, pb)) return false;
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        for (int v : middle) sum += originalVertices.row(v).transpose();
+        point = middle.empty() ? pa : Eigen::Vector3d(sum / double(middle.size()));
+        return (middle.size() >= 3 && inside.contains(point)) || insidePointNearMiddle(pa, pb, inside, point);
+      });
 }
 
 }  // namespace medial

@@ -1,5 +1,7 @@
 #include "contraction/NodeCentring.h"
 
+#include "contraction/EmbeddingRefinement.h"
+
 #include <cmath>
 #include <vector>
 
@@ -10,9 +12,12 @@ namespace {
 // a branch or a leaf). One short edge's direction is noisy and tilts the cut; on the sample meshes 5 hops
 // and two passes gave the lowest off-centre medians of the settings tried (1-5 hops, 2-4 passes).
 constexpr int kHops = 5;
+// splitOffCentreEdges: the largest bend a new node may make (30 degrees gained less, no limit zigzagged).
+const double kMaxSplitBend = M_PI / 4;
 }  // namespace
 
-int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const InsideTest& inside, int passes) {
+int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const InsideTest& inside, bool branchNodes,
+                int passes) {
   const Eigen::Index n = skeleton.nodes.rows();
   std::vector<std::vector<int>> neighbours(static_cast<size_t>(n));
   for (const auto& [a, b] : skeleton.edges) {
@@ -24,7 +29,7 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
   for (int pass = 0; pass < passes; ++pass) {
     for (Eigen::Index k = 0; k < n; ++k) {
       const std::vector<int>& around = neighbours[size_t(k)];
-      if (around.empty() || around.size() > 2) continue;
+      if (around.empty() || (around.size() > 2 && !branchNodes)) continue;
       const Eigen::Vector3d here = position(int(k));
       // The direction over a few edges each way: one short edge's direction is noisy.
       auto walk = [&](int from, int next) {
@@ -37,8 +42,22 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
         }
         return position(next);
       };
-      const Eigen::Vector3d direction = around.size() == 2 ? walk(int(k), around[1]) - walk(int(k), around[0])
-                                                           : here - walk(int(k), around[0]);
+      Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+      if (around.size() == 1) {
+        direction = here - walk(int(k), around[0]);
+      } else {
+        // Through the node along its straightest pair of edges (at a node of two edges, the only pair).
+        double leastBend = INFINITY;
+        for (size_t i = 0; i < around.size(); ++i)
+          for (size_t j = i + 1; j < around.size(); ++j) {
+            const Eigen::Vector3d before = walk(int(k), around[i]), after = walk(int(k), around[j]);
+            const double bend = 1 - (here - before).normalized().dot((after - here).normalized());
+            if (bend < leastBend) {
+              leastBend = bend;
+              direction = after - before;
+            }
+          }
+      }
       const CrossSection section = sections.around(here, direction);
       if (!section.found || section.offCentre(here) > 1 || !inside.contains(section.centroid)) continue;
       bool clear = true;
@@ -49,6 +68,24 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
     }
   }
   return moves;
+}
+
+int splitOffCentreEdges(CurveSkeleton& skeleton, const Vertices& originalVertices, const CrossSections& sections,
+                        const InsideTest& inside, double threshold, int maxDepth) {
+  return splitSkeletonEdges(
+      skeleton, originalVertices, maxDepth,
+      [&](const Eigen::Vector3d& pa, const Eigen::Vector3d& pb, const std::vector<int>&, Eigen::Vector3d& point) {
+        const Eigen::Vector3d middle = 0.5 * (pa + pb);
+        const CrossSection section = sections.around(middle, pb - pa);
+        if (!section.found) return false;
+        const double ratio = section.offCentre(middle);
+        if (ratio <= threshold || ratio > 1) return false;
+        point = section.centroid;
+        const Eigen::Vector3d in = point - pa, out = pb - point;
+        if (in.norm() == 0 || out.norm() == 0 || in.normalized().dot(out.normalized()) < std::cos(kMaxSplitBend))
+          return false;
+        return inside.contains(point) && inside.segmentIsClear(pa, point) && inside.segmentIsClear(point, pb);
+      });
 }
 
 }  // namespace medial

@@ -1,13 +1,18 @@
 // NodeCentring (beyond the paper, issue 26): after the refinement of III.C - which moves each node to the
 // centroid of the mesh vertices it absorbed, a centre of the surface, not of the volume: on a bent limb or
-// where one side of a part is more finely meshed it sits off the axis - every node of one or two edges
-// moves to the area centroid of the mesh's cross-section through it (the plane normal to the skeleton's
-// direction there, over five edges each way; the smallest closed loop around the node: CrossSections).
-// The move is kept only when
-// the centroid lies inside the mesh, within the section's equivalent radius (farther, the loop is not this
-// part's: a junction, a fold) and when every edge of the node stays inside the mesh. Branch nodes stay.
-// Two passes: the directions change as the neighbours move. MCF's answer (CGAL) is a medial attraction
-// term during the flow, towards the Voronoi poles; this one measures and centres the result directly.
+// where one side of a part is more finely meshed it sits off the axis - nodes move to the area centroid of
+// the mesh's cross-section through them (the plane normal to the skeleton's direction there, over five
+// edges each way; the smallest closed loop around the node: CrossSections). A node of one or two edges
+// takes the direction through it; a branch node, when asked (`branchNodes`), the direction of its
+// straightest pair of edges (the axis the branches leave from). The move is kept only when the centroid
+// lies inside the mesh, within the section's equivalent radius (farther, the loop is not this part's: a
+// junction, a fold) and when every edge of the node stays inside the mesh. Two passes: the directions
+// change as the neighbours move.
+//
+// MCF's answer (CGAL) is a medial attraction term during the flow, towards the Voronoi poles. Tried in
+// Medial's contraction (each vertex attracted to its inner pole with w_M W_H, w_M 0.3-2, poles of the
+// contracted or of the input mesh): the off-centre medians moved both ways by up to 0.3 from mesh to mesh,
+// no better on the whole; so Medial measures the sections and centres on them directly.
 #pragma once
 
 #include "contraction/ConnectivitySurgery.h"
@@ -18,6 +23,16 @@ namespace medial {
 
 // Returns the number of node moves made (over both passes).
 int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const InsideTest& inside,
-                int passes = 2);
+                bool branchNodes = false, int passes = 2);
+
+// An edge whose middle is off its cross-section's centroid by more than `threshold` times the section's
+// equivalent radius (the plane normal to the edge; the issue's measure) gets a node at that centroid, when
+// the centroid lies inside, both halves stay inside and the edge bends there by at most 45 degrees (more:
+// the plane was too oblique to the part's axis, a thick body cut at a slant, and the skeleton would
+// zigzag); the halves are tried again, up to `maxDepth` times (splitSkeletonEdges). The surgery leaves one
+// straight edge along a whole bent limb or body: a straight edge cannot follow a bent axis. Returns the
+// number of nodes added.
+int splitOffCentreEdges(CurveSkeleton& skeleton, const Vertices& originalVertices, const CrossSections& sections,
+                        const InsideTest& inside, double threshold = 0.1, int maxDepth = 6);
 
 }  // namespace medial

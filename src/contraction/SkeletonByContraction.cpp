@@ -134,14 +134,21 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
     // within a small fraction of a radius of the input's, and 6 s less at 1.66M vertices.
     sections = std::make_unique<CrossSections>(coarse.coarsened.faces.rows() > 0 ? coarse.coarsened : mesh);
     // With a selection only the selected nodes are centred (below): as centred, at a fifth of the cost.
-    if (p.targetNodes <= 0) result.centredNodes = centreNodes(curve, *sections, inside);
+    // Without one, edges still off-centre after the centring are split at their sections' centroids and
+    // the new nodes centred in turn. (Branch nodes of the whole curve skeleton stay: moved, those of small
+    // side branches - the cow's udder - tangled the skeleton.)
+    if (p.targetNodes <= 0) {
+      result.centredNodes = centreNodes(curve, *sections, inside);
+      result.centringSplits = splitOffCentreEdges(curve, mesh.vertices, *sections, inside);
+      result.centredNodes += centreNodes(curve, *sections, inside);
+    }
   }
   result.refinementSeconds = start.seconds();
   start.restart();
   if (p.recordStages) result.unselectedSkeleton = skeletonOf(curve);
   if (p.targetNodes > 0) {
     selectNodes(curve, p.targetNodes, &inside);
-    if (sections) result.centredNodes += centreNodes(curve, *sections, inside);
+    if (sections) result.centredNodes += centreNodes(curve, *sections, inside, /*branchNodes=*/true);
   }
   result.selectionSeconds = start.seconds();
   start.restart();

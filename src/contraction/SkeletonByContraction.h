@@ -25,9 +25,10 @@ struct SkeletonByContractionParameters {
   ContractionParameters contraction;
   SurgeryParameters surgery;
   bool refineEmbedding = true;
-  // Beyond the paper: nodes of one or two edges move to the centroid of the mesh's cross-section through
-  // them (src/contraction/NodeCentring.h): the selected nodes after the selection, or without a selection
-  // every node after the refinement.
+  // Beyond the paper: nodes move to the centroid of the mesh's cross-section through them
+  // (src/contraction/NodeCentring.h): the selected nodes after the selection, branch nodes included, or
+  // without a selection every node of one or two edges after the refinement, and edges whose middle is
+  // still off-centre are split at their sections' centroids.
   bool centreNodes = true;
   // Beyond the paper: put back the cycles surgery lost, so that the skeleton has as many independent
   // cycles as the closed mesh has genus (src/contraction/CycleRepair.h).
@@ -56,6 +57,7 @@ struct SkeletonByContractionResult {
   CycleRepairResult cycleRepair;  // genus, cycles after surgery, cycles restored
   int splitEdges = 0;             // nodes added inside edges that left the mesh (splitEdgesLeavingTheMesh)
   int centredNodes = 0;           // node moves to their cross-section's centroid (centreNodes)
+  int centringSplits = 0;         // nodes added in off-centre edges (splitOffCentreEdges, without selection)
   // With recordStages: the contraction's steps on the contracted mesh (its faces: contractedFaces), the
   // curve skeleton after the surgery (III.B, unrefined) and before the selection (after III.C).
   std::vector<ContractionStep> contractionSteps;
