@@ -160,7 +160,8 @@ void writeSamples(const medial::OffCentreSummary& summary, const std::string& pa
   FILE* file = std::fopen(path.c_str(), "w");
   if (!file) return;
   const int n = int(summary.points.size());
-  std::fprintf(file, "# vtk DataFile Version 3.0\noff-centre samples\nASCII\nDATASET POLYDATA\nPOINTS %d double\n", n);
+  std::fprintf(
+      file, "# vtk DataFile Version 3.0\noff-centre samples\nASCII\nDATASET POLYDATA\nPOINTS %d double\n", n);
   for (const auto& p : summary.points) std::fprintf(file, "%.9g %.9g %.9g\n", p.x(), p.y(), p.z());
   std::fprintf(file, "VERTICES %d %d\n", n, 2 * n);
   for (int k = 0; k < n; ++k) std::fprintf(file, "1 %d\n", k);

@@ -157,16 +157,15 @@ int splitSkeletonEdges(CurveSkeleton& skeleton, const Vertices& originalVertices
 
 int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVertices,
                              const InsideTest& inside, int maxDepth) {
-  return splitSkeletonEdges(
-      skeleton, originalVertices, maxDepth,
-      [&](const Eigen::Vector3d& pa, const Eigen::Vector3d& pb, const std::vector<int>& middle,
-          Eigen::Vector3d& point) {
-        if (inside.segmentIsClear(pa, pb)) return false;
-        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-        for (int v : middle) sum += originalVertices.row(v).transpose();
-        point = middle.empty() ? pa : Eigen::Vector3d(sum / double(middle.size()));
-        return (middle.size() >= 3 && inside.contains(point)) || insidePointNearMiddle(pa, pb, inside, point);
-      });
+  const SplitPoint whereItLeaves = [&](const Eigen::Vector3d& pa, const Eigen::Vector3d& pb,
+                                       const std::vector<int>& middle, Eigen::Vector3d& point) {
+    if (inside.segmentIsClear(pa, pb)) return false;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int v : middle) sum += originalVertices.row(v).transpose();
+    point = middle.empty() ? pa : Eigen::Vector3d(sum / double(middle.size()));
+    return (middle.size() >= 3 && inside.contains(point)) || insidePointNearMiddle(pa, pb, inside, point);
+  };
+  return splitSkeletonEdges(skeleton, originalVertices, maxDepth, whereItLeaves);
 }
 
 }  // namespace medial

@@ -29,10 +29,10 @@ int pushNodesInside(CurveSkeleton& skeleton, const InsideTest& inside);
 int splitEdgesLeavingTheMesh(CurveSkeleton& skeleton, const Vertices& originalVertices,
                              const InsideTest& inside, int maxDepth = 5);
 
-// The splitting that splitEdgesLeavingTheMesh and NodeCentring's splitOffCentreEdges share: each edge (a, b) is offered
-// to `splitPoint` with the input vertices its ends absorbed that project onto its middle half; when it
-// returns true, a node at `point` joins the halves, takes those vertices, and each half is offered again,
-// up to `maxDepth` times. Returns the number of nodes added.
+// The splitting that splitEdgesLeavingTheMesh and NodeCentring's splitOffCentreEdges share: each edge (a, b)
+// is offered to `splitPoint` with the input vertices its ends absorbed that project onto its middle half;
+// when it returns true, a node at `point` joins the halves, takes those vertices, and each half is offered
+// again, up to `maxDepth` times. Returns the number of nodes added.
 using SplitPoint = std::function<bool(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                       const std::vector<int>& middleVertices, Eigen::Vector3d& point)>;
 int splitSkeletonEdges(CurveSkeleton& skeleton, const Vertices& originalVertices, int maxDepth,

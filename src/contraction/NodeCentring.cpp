@@ -16,8 +16,8 @@ constexpr int kHops = 5;
 const double kMaxSplitBend = M_PI / 4;
 }  // namespace
 
-int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const InsideTest& inside, bool branchNodes,
-                int passes) {
+int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const InsideTest& inside,
+                bool branchNodes, int passes) {
   const Eigen::Index n = skeleton.nodes.rows();
   std::vector<std::vector<int>> neighbours(static_cast<size_t>(n));
   for (const auto& [a, b] : skeleton.edges) {
@@ -70,22 +70,24 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
   return moves;
 }
 
-int splitOffCentreEdges(CurveSkeleton& skeleton, const Vertices& originalVertices, const CrossSections& sections,
-                        const InsideTest& inside, double threshold, int maxDepth) {
-  return splitSkeletonEdges(
-      skeleton, originalVertices, maxDepth,
-      [&](const Eigen::Vector3d& pa, const Eigen::Vector3d& pb, const std::vector<int>&, Eigen::Vector3d& point) {
-        const Eigen::Vector3d middle = 0.5 * (pa + pb);
-        const CrossSection section = sections.around(middle, pb - pa);
-        if (!section.found) return false;
-        const double ratio = section.offCentre(middle);
-        if (ratio <= threshold || ratio > 1) return false;
-        point = section.centroid;
-        const Eigen::Vector3d in = point - pa, out = pb - point;
-        if (in.norm() == 0 || out.norm() == 0 || in.normalized().dot(out.normalized()) < std::cos(kMaxSplitBend))
-          return false;
-        return inside.contains(point) && inside.segmentIsClear(pa, point) && inside.segmentIsClear(point, pb);
-      });
+int splitOffCentreEdges(CurveSkeleton& skeleton, const Vertices& originalVertices,
+                        const CrossSections& sections, const InsideTest& inside, double threshold,
+                        int maxDepth) {
+  const SplitPoint atTheCentroid = [&](const Eigen::Vector3d& pa, const Eigen::Vector3d& pb,
+                                       const std::vector<int>&, Eigen::Vector3d& point) {
+    const Eigen::Vector3d middle = 0.5 * (pa + pb);
+    const CrossSection section = sections.around(middle, pb - pa);
+    if (!section.found) return false;
+    const double ratio = section.offCentre(middle);
+    if (ratio <= threshold || ratio > 1) return false;
+    point = section.centroid;
+    const Eigen::Vector3d in = point - pa, out = pb - point;
+    const bool smooth =
+        in.norm() > 0 && out.norm() > 0 && in.normalized().dot(out.normalized()) >= std::cos(kMaxSplitBend);
+    return smooth && inside.contains(point) && inside.segmentIsClear(pa, point) &&
+           inside.segmentIsClear(point, pb);
+  };
+  return splitSkeletonEdges(skeleton, originalVertices, maxDepth, atTheCentroid);
 }
 
 }  // namespace medial

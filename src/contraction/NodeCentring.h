@@ -32,7 +32,8 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
 // zigzag); the halves are tried again, up to `maxDepth` times (splitSkeletonEdges). The surgery leaves one
 // straight edge along a whole bent limb or body: a straight edge cannot follow a bent axis. Returns the
 // number of nodes added.
-int splitOffCentreEdges(CurveSkeleton& skeleton, const Vertices& originalVertices, const CrossSections& sections,
-                        const InsideTest& inside, double threshold = 0.1, int maxDepth = 6);
+int splitOffCentreEdges(CurveSkeleton& skeleton, const Vertices& originalVertices,
+                        const CrossSections& sections, const InsideTest& inside, double threshold = 0.1,
+                        int maxDepth = 6);
 
 }  // namespace medial

@@ -105,16 +105,18 @@ TEST(NodeCentring, UnselectedSkeletonsAreAsCentredAsCgalsOnThreeSamples) {
     EXPECT_EQ(ours.outside, 0) << sample.name;
     EXPECT_LT(ours.median(), before.median()) << sample.name;
     if (sample.fixedMedian > 0) {
-      std::printf("%s: off-centre median / 90th percentile: Medial %.3f / %.3f (without centring %.3f / %.3f)\n",
-                  sample.name, ours.median(), ours.percentile90(), before.median(), before.percentile90());
+      std::printf(
+          "%s: off-centre median / 90th percentile: Medial %.3f / %.3f (without centring %.3f / %.3f)\n",
+          sample.name, ours.median(), ours.percentile90(), before.median(), before.percentile90());
       EXPECT_LE(ours.median(), sample.fixedMedian) << sample.name;
       continue;
     }
     const auto cgal = medial::offCentre(medial::peer::cgalSkeleton(sm), sections);
-    std::printf("%s: off-centre median / 90th percentile: Medial %.3f / %.3f (without centring %.3f / %.3f), "
-                "CGAL %.3f / %.3f\n",
-                sample.name, ours.median(), ours.percentile90(), before.median(), before.percentile90(),
-                cgal.median(), cgal.percentile90());
+    std::printf(
+        "%s: off-centre median / 90th percentile: Medial %.3f / %.3f (without centring %.3f / %.3f), "
+        "CGAL %.3f / %.3f\n",
+        sample.name, ours.median(), ours.percentile90(), before.median(), before.percentile90(),
+        cgal.median(), cgal.percentile90());
     EXPECT_LE(ours.median(), cgal.median()) << sample.name;
     if (sample.percentile) {
       EXPECT_LE(ours.percentile90(), cgal.percentile90() + 0.1) << sample.name;
@@ -164,5 +166,6 @@ TEST(NodeCentring, AnEdgeAcrossABendIsSplitOntoTheAxis) {
   EXPECT_EQ(int(chord.edges.size()), 1 + added);
   EXPECT_EQ(after.outside, 0);
   EXPECT_LT(after.median(), 0.5 * before);
-  for (Eigen::Index k = 0; k < chord.nodes.rows(); ++k) EXPECT_TRUE(inside.contains(chord.nodes.row(k).transpose()));
+  for (Eigen::Index k = 0; k < chord.nodes.rows(); ++k)
+    EXPECT_TRUE(inside.contains(chord.nodes.row(k).transpose()));
 }
