@@ -124,8 +124,9 @@ OffCentreSummary offCentre(const Skeleton& skeleton, const CrossSections& sectio
     if (section.found) {
       summary.ratios.push_back(section.offCentre(s));
       summary.points.push_back(s);
-    } else
+    } else {
       ++summary.outside;
+    }
   }
   return summary;
 }

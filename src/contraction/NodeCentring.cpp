@@ -31,8 +31,11 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
       const std::vector<int>& around = neighbours[size_t(k)];
       if (around.empty() || (around.size() > 2 && !branchNodes)) continue;
       const Eigen::Vector3d here = position(int(k));
-      // The direction over a few edges each way: one short edge's direction is noisy.
-      auto walk = [&](int from, int next) {
+      // The direction over a few edges each way: one short edge's direction is noisy. ends[i]: the node
+      // reached from this one through its i-th edge.
+      std::vector<Eigen::Vector3d> ends;
+      for (int first : around) {
+        int from = int(k), next = first;
         for (int hop = 1; hop < kHops; ++hop) {
           const auto& onward = neighbours[size_t(next)];
           if (onward.size() != 2) break;
@@ -40,21 +43,20 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
           from = next;
           next = after;
         }
-        return position(next);
-      };
+        ends.push_back(position(next));
+      }
       Eigen::Vector3d direction = Eigen::Vector3d::Zero();
       if (around.size() == 1) {
-        direction = here - walk(int(k), around[0]);
+        direction = here - ends[0];
       } else {
         // Through the node along its straightest pair of edges (at a node of two edges, the only pair).
         double leastBend = INFINITY;
-        for (size_t i = 0; i < around.size(); ++i)
-          for (size_t j = i + 1; j < around.size(); ++j) {
-            const Eigen::Vector3d before = walk(int(k), around[i]), after = walk(int(k), around[j]);
-            const double bend = 1 - (here - before).normalized().dot((after - here).normalized());
+        for (size_t i = 0; i < ends.size(); ++i)
+          for (size_t j = i + 1; j < ends.size(); ++j) {
+            const double bend = 1 - (here - ends[i]).normalized().dot((ends[j] - here).normalized());
             if (bend < leastBend) {
               leastBend = bend;
-              direction = after - before;
+              direction = ends[j] - ends[i];
             }
           }
       }

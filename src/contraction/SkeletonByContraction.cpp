@@ -15,15 +15,14 @@
 
 namespace medial {
 
-namespace {
-
-// The curve skeleton's nodes and edges as a Skeleton (no radii).
 Skeleton skeletonOf(const CurveSkeleton& curve) {
   Skeleton skeleton;
   for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k) skeleton.nodes.push_back(curve.nodes.row(k).transpose());
   for (const auto& [a, b] : curve.edges) skeleton.edges.push_back({a, b});
   return skeleton;
 }
+
+namespace {
 
 // The root: the node of highest degree, ties broken by the number of vertices it absorbed.
 int chooseRoot(const Skeleton& skeleton, const std::vector<int>& vertexToNode) {

@@ -71,6 +71,9 @@ struct SkeletonByContractionResult {
   bool ok() const { return error.empty(); }
 };
 
+// The curve skeleton's nodes and edges as a Skeleton (no radii, no root).
+Skeleton skeletonOf(const CurveSkeleton& curve);
+
 // Checks what the algorithm needs: at least one triangle, finite coordinates, valid vertex ids. The
 // message names the first problem; empty when the mesh is usable.
 std::string checkContractionInput(const TriangleMesh& mesh);

@@ -151,15 +151,9 @@ TEST(NodeCentring, AnEdgeAcrossABendIsSplitOntoTheAxis) {
   chord.nodes << 6 * std::cos(a0), 6 * std::sin(a0), 0, 6 * std::cos(a1), 6 * std::sin(a1), 0;
   chord.edges = {{0, 1}};
   chord.vertexToNode.assign(size_t(arc.vertices.rows()), 0);
-  auto asSkeleton = [](const medial::CurveSkeleton& curve) {
-    medial::Skeleton s;
-    for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k) s.nodes.push_back(curve.nodes.row(k).transpose());
-    for (const auto& [a, b] : curve.edges) s.edges.push_back({a, b});
-    return s;
-  };
-  const double before = medial::offCentre(asSkeleton(chord), sections).median();
+  const double before = medial::offCentre(medial::skeletonOf(chord), sections).median();
   const int added = medial::splitOffCentreEdges(chord, arc.vertices, sections, inside);
-  const auto after = medial::offCentre(asSkeleton(chord), sections);
+  const auto after = medial::offCentre(medial::skeletonOf(chord), sections);
   std::printf("chord across the bend: %d nodes added, off-centre median %.3f -> %.3f\n", added, before,
               after.median());
   EXPECT_GT(added, 0);

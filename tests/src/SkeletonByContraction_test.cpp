@@ -211,13 +211,6 @@ TEST(SkeletonByContraction, BadInputIsRefusedWithAMessage) {
             "triangle 3 refers to vertex 100000, which does not exist");
 }
 
-medial::Skeleton toSkeleton(const medial::CurveSkeleton& s) {
-  medial::Skeleton out;
-  for (Eigen::Index k = 0; k < s.nodes.rows(); ++k) out.nodes.push_back(s.nodes.row(k).transpose());
-  for (const auto& [a, b] : s.edges) out.edges.push_back({a, b});
-  return out;
-}
-
 // Two nodes joined by one edge; no mesh vertex belongs to either yet.
 medial::CurveSkeleton twoNodeCurve(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                    Eigen::Index vertexCount) {
@@ -296,7 +289,7 @@ TEST(NodeSelection, KeepsCyclesAndTips) {
   }
   s.vertexToNode = {13, 0};
   medial::selectNodes(s, 4);
-  const medial::Skeleton out = toSkeleton(s);
+  const medial::Skeleton out = medial::skeletonOf(s);
   const GraphCounts c = countGraph(out);
   EXPECT_EQ(c.cycles, 1);
   EXPECT_EQ(c.components, 1);
@@ -315,7 +308,7 @@ TEST(NodeSelection, ShortSideBranchesGoFirst) {
   s.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {2, 5}, {2, 6}, {6, 7}, {7, 8}};
   s.vertexToNode = {5, 8};
   medial::selectNodes(s, 6);
-  const medial::Skeleton out = toSkeleton(s);
+  const medial::Skeleton out = medial::skeletonOf(s);
   EXPECT_EQ(out.nodeCount(), 6);
   EXPECT_EQ(countGraph(out).components, 1);
   EXPECT_NEAR(out.nodes[size_t(s.vertexToNode[0])].y(), 0.0, 1e-12);   // the twig's vertex went to the limb
@@ -344,7 +337,7 @@ TEST(NodeSelection, RefusesCollapsesThatLeaveTheMesh) {
   medial::CurveSkeleton constrained = circle();
   medial::selectNodes(constrained, 3, &inside);
   EXPECT_GE(constrained.nodes.rows(), 6);
-  EXPECT_EQ(countGraph(toSkeleton(constrained)).cycles, 1);
+  EXPECT_EQ(countGraph(medial::skeletonOf(constrained)).cycles, 1);
   for (const auto& [a, b] : constrained.edges)
     EXPECT_TRUE(
         inside.segmentIsClear(constrained.nodes.row(a).transpose(), constrained.nodes.row(b).transpose()));
