@@ -174,10 +174,12 @@ void writeSamples(const medial::OffCentreSummary& summary, const std::string& pa
 // unselected one (--nodes 0) and of CGAL's: median and 90th percentile, and the samples outside. With
 // `folder`, the three skeletons are written there (NAME-medial.vtk, NAME-medial-nodes0.vtk, NAME-cgal.vtk),
 // each with its samples (NAME-...-samples.vtk).
-void centringRow(const std::string& name, const SurfaceMesh& sm, const std::string& folder) {
+void centringRow(const std::string& name, const SurfaceMesh& sm, const std::string& folder,
+                 int centringVertices) {
   const medial::TriangleMesh mesh = toTriangleMesh(sm);
   const medial::CrossSections sections(mesh);
   medial::SkeletonByContractionParameters p;
+  if (centringVertices >= 0) p.contractionVertices = centringVertices;
   const medial::Skeleton selected = medial::skeletonByContraction(mesh, p).skeleton;
   p.targetNodes = 0;
   const medial::Skeleton unselected = medial::skeletonByContraction(mesh, p).skeleton;
@@ -213,6 +215,7 @@ int main(int argc, char** argv) {
   int repeat = 3;
   bool subdivided = true, timing = true;
   std::string writeFolder;
+  int centringVertices = -1;  // the centring table's vertex budget: Medial's default unless given
   std::string tableMesh = "elephant";
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i) {
@@ -224,12 +227,14 @@ int main(int argc, char** argv) {
       subdivided = false;
     } else if (!std::strcmp(argv[i], "--centring-only")) {
       timing = false;
+    } else if (!std::strcmp(argv[i], "--centring-vertices") && i + 1 < argc) {
+      centringVertices = std::max(0, std::atoi(argv[++i]));
     } else if (!std::strcmp(argv[i], "--write") && i + 1 < argc) {
       writeFolder = argv[++i];
     } else if (argv[i][0] == '-') {
       std::fprintf(stderr,
-                   "usage: %s [--repeat N] [--table MESH|none] [--no-subdivided] [--centring-only] [--write DIR] "
-                   "[MESH...]\n",
+                   "usage: %s [--repeat N] [--table MESH|none] [--no-subdivided] [--centring-only] "
+                   "[--centring-vertices N] [--write DIR] [MESH...]\n",
                    argv[0]);
       return 2;
     } else {
@@ -288,7 +293,8 @@ int main(int argc, char** argv) {
   std::printf("%-18s | %20s | %20s | %20s\n", "mesh", "Medial default", "Medial --nodes 0", "CGAL");
   for (const std::string& name : meshes) {
     SurfaceMesh sm;
-    if (readMesh(sampleMesh(name), sm)) centringRow(std::filesystem::path(name).stem().string(), sm, writeFolder);
+    if (readMesh(sampleMesh(name), sm))
+      centringRow(std::filesystem::path(name).stem().string(), sm, writeFolder, centringVertices);
   }
 
   // Table I of the paper: every solver x ordering on one mesh, contraction only.

@@ -57,9 +57,9 @@ void writeStages(vtkMedialContractionSkeleton* filter, const std::string& dir) {
 int runSkeleton(const std::vector<std::string>& args) {
   const ParsedArgs parsed =
       parseArgs(args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations",
-                        "--contraction-vertices", "--wl0", "--sl", "--wh0", "--max-wl", "--max-wh",
-                        "--shape-weight", "--sampling-weight", "--collapse-length", "--heat", "--contracted",
-                        "--contraction-steps"},
+                        "--contraction-vertices", "--reference-vertices", "--wl0", "--sl", "--wh0", "--max-wl",
+                        "--max-wh", "--shape-weight", "--sampling-weight", "--collapse-length", "--heat",
+                        "--contracted", "--contraction-steps"},
                        {"--no-refine", "--no-cycle-repair", "--no-centring", "--weights", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("skeleton needs exactly one MESH file");
   const std::string input = parsed.positional[0];
@@ -80,6 +80,7 @@ int runSkeleton(const std::vector<std::string>& args) {
   MEDIAL_OPTION(parsed, "--contraction-vertices", filter, ContractionVertices);
   MEDIAL_OPTION(parsed, "--iterations", filter, MaxIterations);
   // The paper's constants (§III): W_L0 factor, s_L, W_H0, the W_L and W_H caps, w_a, w_b, delta, heat c.
+  MEDIAL_OPTION(parsed, "--reference-vertices", filter, ReferenceVertices);
   MEDIAL_OPTION(parsed, "--wl0", filter, InitialContractionFactor);
   MEDIAL_OPTION(parsed, "--sl", filter, ContractionScale);
   MEDIAL_OPTION(parsed, "--wh0", filter, InitialAttractionWeight);

@@ -31,6 +31,7 @@ vtkMedialContractionSkeleton::vtkMedialContractionSkeleton() {
   const medial::SkeletonByContractionParameters defaults;
   this->TargetNodes = defaults.targetNodes;
   this->ContractionVertices = defaults.contractionVertices;
+  this->ReferenceVertices = defaults.contraction.referenceVertices;
   this->InitialContractionFactor = defaults.contraction.initialContractionFactor;
   this->ContractionScale = defaults.contraction.contractionScale;
   this->MaxContractionWeight = defaults.contraction.maxContractionWeight;
@@ -52,6 +53,7 @@ medial::SkeletonByContractionParameters vtkMedialContractionSkeleton::MakeParame
   medial::SkeletonByContractionParameters p;
   p.targetNodes = this->TargetNodes;
   p.contractionVertices = this->ContractionVertices;
+  p.contraction.referenceVertices = this->ReferenceVertices;
   p.contraction.initialContractionFactor = this->InitialContractionFactor;
   p.contraction.contractionScale = this->ContractionScale;
   p.contraction.maxContractionWeight = this->MaxContractionWeight;
@@ -102,6 +104,7 @@ void vtkMedialContractionSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "TargetNodes: " << this->TargetNodes << "\n";
   os << indent << "ContractionVertices: " << this->ContractionVertices << "\n";
+  os << indent << "ReferenceVertices: " << this->ReferenceVertices << "\n";
   os << indent << "InitialContractionFactor: " << this->InitialContractionFactor << "\n";
   os << indent << "ContractionScale: " << this->ContractionScale << "\n";
   os << indent << "MaxContractionWeight: " << this->MaxContractionWeight << "\n";

@@ -45,6 +45,11 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   /// contracts the input itself).
   vtkSetClampMacro(ContractionVertices, int, 0, VTK_INT_MAX);
   vtkGetMacro(ContractionVertices, int);
+  /// A mesh contracted with more vertices than this starts with W_L0 x (n / ReferenceVertices)^1.5, so
+  /// that its first iterations contract as a mesh of this size does (default 4000; 0: the paper's W_L0
+  /// at every resolution).
+  vtkSetClampMacro(ReferenceVertices, int, 0, VTK_INT_MAX);
+  vtkGetMacro(ReferenceVertices, int);
   /// W_L0 = factor * sqrt(mean face area) in the normalized frame (default 1e-3).
   vtkSetClampMacro(InitialContractionFactor, double, 1e-6, 10.0);
   vtkGetMacro(InitialContractionFactor, double);
@@ -151,6 +156,7 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   // Parameters: defaults from medial::SkeletonByContractionParameters (the constructor).
   int TargetNodes;
   int ContractionVertices;
+  int ReferenceVertices;
   double InitialContractionFactor;
   double ContractionScale;
   double MaxContractionWeight;

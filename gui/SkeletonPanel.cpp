@@ -36,6 +36,9 @@ std::vector<Parameter> contractionParameters() {
       MEDIAL_INTEGER_PARAMETER(f, ContractionVertices, "Contracted vertices",
                                "Larger meshes are decimated to this many vertices before the contraction "
                                "(topology kept); 0 contracts the mesh as it is"),
+      MEDIAL_INTEGER_PARAMETER(f, ReferenceVertices, "Reference vertices",
+                               "A mesh contracted with more vertices starts with W_L0 × (n / this)^1.5, so "
+                               "that its first iterations contract as at this size; 0: the paper's W_L0"),
       MEDIAL_REAL_PARAMETER(f, InitialContractionFactor, "W_L0 factor", 6,
                             "W_L0 = factor · sqrt(mean face area) (§III.A, default 1e-3)"),
       MEDIAL_REAL_PARAMETER(f, ContractionScale, "s_L", 2, "Growth of W_L per iteration (§III.A, default 2)"),
@@ -108,6 +111,7 @@ vtkSmartPointer<vtkAlgorithm> SkeletonPanel::makeFilter(SceneObject* input, QStr
   filter->SetInputData(copyOf(input));
   filter->SetTargetNodes(static_cast<int>(f->value("TargetNodes")));
   filter->SetContractionVertices(static_cast<int>(f->value("ContractionVertices")));
+  filter->SetReferenceVertices(static_cast<int>(f->value("ReferenceVertices")));
   filter->SetInitialContractionFactor(f->value("InitialContractionFactor"));
   filter->SetContractionScale(f->value("ContractionScale"));
   filter->SetMaxContractionWeight(f->value("MaxContractionWeight"));

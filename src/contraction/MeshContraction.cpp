@@ -36,6 +36,8 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
   const double initialArea = initialFaceAreas.sum();
   const double initialVolume = std::abs(enclosedVolume(positions, mesh.faces));
   double contractionWeight = p.initialContractionFactor * std::sqrt(initialArea / double(mesh.faces.rows()));
+  if (p.referenceVertices > 0 && n > p.referenceVertices)
+    contractionWeight *= std::pow(double(n) / p.referenceVertices, 1.5);
   Eigen::VectorXd attraction = Eigen::VectorXd::Constant(n, p.initialAttraction);
 
   // Cotangents of faces that have collapsed are frozen at their last value (see the header).

@@ -153,7 +153,7 @@ TEST(Cli, SkeletonTakesThePapersConstantsAndWritesTheContractedMesh) {
   const std::string contracted = dir + "/contracted.vtp";
   auto r = runCommand(medialCommand(
       "skeleton " + dataPath("meshes/torus.off") + " -o " + dir + "/s.vtp --contracted " + contracted +
-      " --wl0 0.002 --sl 2.5 --wh0 1.5 --max-wl 1000 --max-wh 5000 --shape-weight 1 "
+      " --reference-vertices 500 --wl0 0.002 --sl 2.5 --wh0 1.5 --max-wl 1000 --max-wh 5000 --shape-weight 1 "
       "--sampling-weight 0.2 --collapse-length 0.002 --heat 2 --weights --quiet"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
@@ -174,7 +174,7 @@ TEST(Cli, SkeletonTakesThePapersConstantsAndWritesTheContractedMesh) {
   }
   EXPECT_LT(sum / double(mesh->GetNumberOfPoints()), 0.1) << "mean distance to the core circle (input: 0.35)";
   EXPECT_LT(farthest, 0.25);
-  for (const char* bad : {"--wl0 -1", "--sl 1", "--heat 0", "--collapse-length 2", "--wh0 x"}) {
+  for (const char* bad : {"--wl0 -1", "--reference-vertices -1", "--sl 1", "--heat 0", "--collapse-length 2", "--wh0 x"}) {
     auto usage = runCommand(
         medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir + "/bad.vtp --quiet " + bad));
     EXPECT_EQ(usage.exitCode, 2) << bad << ": " << usage.err;

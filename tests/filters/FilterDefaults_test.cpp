@@ -18,6 +18,7 @@ TEST(FilterDefaults, ContractionSkeletonTakesSkeletonByContractionParameters) {
   const auto f = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
   EXPECT_EQ(f->GetTargetNodes(), p.targetNodes);
   EXPECT_EQ(f->GetContractionVertices(), p.contractionVertices);
+  EXPECT_EQ(f->GetReferenceVertices(), p.contraction.referenceVertices);
   EXPECT_EQ(f->GetInitialContractionFactor(), p.contraction.initialContractionFactor);
   EXPECT_EQ(f->GetContractionScale(), p.contraction.contractionScale);
   EXPECT_EQ(f->GetMaxContractionWeight(), p.contraction.maxContractionWeight);

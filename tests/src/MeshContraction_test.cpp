@@ -87,3 +87,25 @@ TEST(MeshContraction, AbortStopsWithAnError) {
       medial::contractMesh(torusMesh(2, 0.5), {}, [](double) { return false; });
   EXPECT_EQ(r.error, "aborted");
 }
+
+// The paper's W_L0 (~ sqrt of the mean face area) makes a finer mesh's first iterations idle: four times
+// the vertices, three more iterations (MeshContraction.h). Above referenceVertices W_L0 is scaled so that a
+// torus at four times the resolution contracts in about as many iterations as at the reference.
+TEST(MeshContraction, AFinerMeshContractsInAsManyIterations) {
+  const medial::TriangleMesh coarse = torusMesh(2, 0.5, 48, 16), fine = torusMesh(2, 0.5, 96, 32);
+  medial::ContractionParameters p;
+  p.referenceVertices = int(coarse.vertices.rows());
+  const medial::ContractionResult atReference = medial::contractMesh(coarse, p);
+  const medial::ContractionResult scaled = medial::contractMesh(fine, p);
+  p.referenceVertices = 0;  // the paper's W_L0 at every resolution
+  const medial::ContractionResult unscaled = medial::contractMesh(fine, p);
+  ASSERT_TRUE(atReference.ok() && scaled.ok() && unscaled.ok());
+  EXPECT_LE(scaled.iterations, atReference.iterations + 1);
+  EXPECT_GE(unscaled.iterations, scaled.iterations + 2);
+  // And it still contracts onto the torus' core circle (radius 2 in the xy plane).
+  for (const auto* r : {&atReference, &scaled}) {
+    const Eigen::VectorXd ring = r->contracted.leftCols(2).rowwise().norm();
+    EXPECT_LT((ring.array() - 2).abs().maxCoeff(), 0.1);
+    EXPECT_LT(r->contracted.col(2).cwiseAbs().maxCoeff(), 0.1);
+  }
+}
