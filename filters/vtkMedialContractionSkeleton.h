@@ -97,7 +97,7 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   /// c of H_jj = c / d(j)^2 in the heat equilibrium (default 1, Baran and Popović).
   vtkSetClampMacro(HeatConstant, double, 1e-3, 100.0);
   vtkGetMacro(HeatConstant, double);
-  /// Sparse solver, one of GetSolverNames() (default auto: Eigen's simplicial LLT with AMD below 14,000
+  /// Sparse solver, one of GetSolverNames() (default auto: Eigen's simplicial LLT with AMD below 30,000
   /// vertices, CHOLMOD supernodal with METIS above); an unknown name is an error and leaves the solver as
   /// it was.
   void SetSolver(const std::string& name);

@@ -18,9 +18,11 @@ namespace medial {
 
 enum class SparseSolverKind {
   // Default: Eigen's simplicial LLT with AMD below kSimplicialBelow unknowns, CHOLMOD supernodal with METIS
-  // (the paper's winner) from there on. Measured on the armadillo's contraction decimated to 4000 / 8000 /
-  // 12000 / 16000 / 26002 vertices, factorization seconds supernodal : simplicial 0.18 : 0.09, 0.48 : 0.31,
-  // 0.79 : 0.63, 1.24 : 1.27, 1.84 : 3.05: the supernodes' BLAS calls cost more than they save while small.
+  // (the paper's winner) from there on: the supernodes' BLAS calls cost more than they save while small.
+  // Factorization seconds of whole full-resolution contractions, simplicial : supernodal, on an idle
+  // machine (stop 29): man (17,495 vertices) 0.51 : 1.00, diplodocus (23,982) 1.13 : 1.53, armadillo
+  // (26,002) 1.71 : 1.88, bunny00 (37,706) 4.12 : 3.08, refined_elephant (44,460) 3.82 : 3.30. (CHOLMOD's
+  // OpenBLAS threads also slow down badly when the other core is busy; the simplicial one does not.)
   // A sparser matrix than the contraction's two-ring one (fewer than kAmdBelowDensity entries per column on
   // average: the heat weights' one-ring Laplacian) takes AMD instead of METIS: METIS's analysis of the
   // 1.66M-vertex armadillo's weights took 15.9 s against AMD's 4.8 s, and the heat weights as a whole
@@ -39,7 +41,7 @@ enum class SparseSolverKind {
   ConjugateGradient,
 };
 
-constexpr int kSimplicialBelow = 14000;
+constexpr int kSimplicialBelow = 30000;  // see SparseSolverKind::Automatic
 constexpr double kAmdBelowDensity = 12;  // entries per column (one-ring Laplacian: about 7, two-ring: 19)
 
 // Short names used on the command line and in benchmarks: auto, cholmod-metis, cholmod-amd, llt-amd,

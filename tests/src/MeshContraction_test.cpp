@@ -47,6 +47,29 @@ TEST(SparseSolver, EverySolverSolvesTheContractionSystem) {
   }
 }
 
+// auto: Eigen's simplicial LLT below kSimplicialBelow unknowns, CHOLMOD supernodal above - with METIS for
+// the contraction's two-ring matrix, AMD for a sparser one (SparseSolver.h has the measurements).
+TEST(SparseSolver, AutomaticChoosesBySizeAndDensity) {
+  auto banded = [](int n, int halfWidth) {
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < n; ++i)
+      for (int j = std::max(0, i - halfWidth); j <= std::min(n - 1, i + halfWidth); ++j)
+        entries.emplace_back(i, j, i == j ? 4.0 * halfWidth : -1.0);
+    Eigen::SparseMatrix<double> A(n, n);
+    A.setFromTriplets(entries.begin(), entries.end());
+    return A;
+  };
+  const std::pair<Eigen::SparseMatrix<double>, medial::SparseSolverKind> cases[] = {
+      {banded(medial::kSimplicialBelow - 1, 9), medial::SparseSolverKind::SimplicialLltAmd},
+      {banded(medial::kSimplicialBelow, 9), medial::SparseSolverKind::CholmodSupernodalMetis},
+      {banded(medial::kSimplicialBelow, 3), medial::SparseSolverKind::CholmodSupernodalAmd}};
+  for (const auto& [A, expected] : cases) {
+    medial::SparseSolver solver;
+    solver.analyze(A);
+    EXPECT_EQ(solver.chosen(), expected) << A.rows() << " unknowns, " << A.nonZeros() << " entries";
+  }
+}
+
 TEST(SparseSolver, NamesRoundTrip) {
   for (medial::SparseSolverKind kind : medial::allSparseSolverKinds()) {
     medial::SparseSolverKind parsed;
