@@ -27,6 +27,10 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
   auto position = [&](int k) -> Eigen::Vector3d { return skeleton.nodes.row(k).transpose(); };
   int moves = 0;
   for (int pass = 0; pass < passes; ++pass) {
+    // Every node's target first (its section's centroid, or where it is), all against the same skeleton,
+    // so that the result does not depend on the order of the nodes; then the moves whose edges stay inside.
+    Vertices target = skeleton.nodes;
+    std::vector<bool> moving(static_cast<size_t>(n), false);
     for (Eigen::Index k = 0; k < n; ++k) {
       const std::vector<int>& around = neighbours[size_t(k)];
       if (around.empty() || (around.size() > 2 && !branchNodes)) continue;
@@ -62,12 +66,28 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
       }
       const CrossSection section = sections.around(here, direction);
       if (!section.found || section.offCentre(here) > 1 || !inside.contains(section.centroid)) continue;
-      bool clear = true;
-      for (int m : around) clear = clear && inside.segmentIsClear(section.centroid, position(m));
-      if (!clear) continue;
-      skeleton.nodes.row(k) = section.centroid.transpose();
-      ++moves;
+      target.row(k) = section.centroid.transpose();
+      moving[size_t(k)] = true;
     }
+    // A move is kept when every edge of the node, to its neighbour's target, stays inside the mesh. A
+    // rejected node stays where it is, so its neighbours are checked again against that.
+    bool changed = true;
+    while (changed) {
+      changed = false;
+      for (Eigen::Index k = 0; k < n; ++k) {
+        if (!moving[size_t(k)]) continue;
+        const Eigen::Vector3d to = target.row(k).transpose();
+        bool keep = true;
+        for (int m : neighbours[size_t(k)])
+          keep = keep && inside.segmentIsClear(to, target.row(m).transpose());
+        if (keep) continue;
+        moving[size_t(k)] = false;
+        target.row(k) = skeleton.nodes.row(k);
+        changed = true;
+      }
+    }
+    for (Eigen::Index k = 0; k < n; ++k) moves += moving[size_t(k)] ? 1 : 0;
+    skeleton.nodes = target;
   }
   return moves;
 }
