@@ -77,10 +77,10 @@ const std::vector<Command>& commands() {
        "usage: medial skeleton MESH -o SKELETON.vtp [--segmentation MESH_OUT.vtp] [--nodes N] [--rig "
        "RIG.glb|RIG.fbx]\n"
        "                       [--weights] [--solver NAME] [--iterations N] [--contraction-vertices N]\n"
-       "                       [--reference-vertices N] [--wl0 F] [--sl S] [--wh0 W] [--max-wl W] [--max-wh W]\n"
-       "                       [--shape-weight A] [--sampling-weight B] [--collapse-length D] [--heat C]\n"
-       "                       [--contracted MESH] [--no-refine] [--no-cycle-repair] [--no-centring]\n"
-       "                       [--contraction-steps DIR] [--quiet] [--timings]\n\n"
+       "                       [--reference-vertices N] [--wl0 F] [--sl S] [--wh0 W] [--max-wl W]\n"
+       "                       [--max-wh W] [--shape-weight A] [--sampling-weight B] [--collapse-length D]\n"
+       "                       [--heat C] [--contracted MESH] [--no-refine] [--no-cycle-repair]\n"
+       "                       [--no-centring] [--contraction-steps DIR] [--quiet] [--timings]\n\n"
        "Contracts MESH (.off .obj .ply .stl .vtp .vtk; polygons are triangulated) by constrained Laplacian\n"
        "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, "
        "III.A-D);\n"
@@ -106,9 +106,12 @@ const std::vector<Command>& commands() {
            number(contraction->GetContractionScale()) + "), W_H0 (" +
            number(contraction->GetInitialAttractionWeight()) +
            ")\n"
-           "  --reference-vertices N    a mesh contracted with n > N vertices starts with W_L0 x (n / N)^1.5,\n"
-           "                            so that its first iterations contract as an N-vertex mesh's do\n"
-           "                            (default " + number(contraction->GetReferenceVertices()) + "; 0: the paper's W_L0 at any size)\n"
+           "  --reference-vertices N    a mesh contracted with n > N vertices starts with W_L0\n"
+           "                            x (n / N)^1.5, so that its first iterations contract as an\n"
+           "                            N-vertex mesh's do (default " +
+           number(contraction->GetReferenceVertices()) +
+           "; 0: the paper's\n"
+           "                            W_L0 at any size)\n"
            "  --max-wl W, --max-wh W    caps on W_L and W_H (defaults " +
            number(contraction->GetMaxContractionWeight()) + ", " +
            number(contraction->GetMaxAttractionWeight()) +

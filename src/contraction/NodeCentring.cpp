@@ -28,7 +28,7 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
   int moves = 0;
   for (int pass = 0; pass < passes; ++pass) {
     // Every node's target first (its section's centroid, or where it is), all against the same skeleton,
-    // so that the result does not depend on the order of the nodes; then the moves whose edges stay inside.
+    // so that the targets do not depend on the order of the nodes; then the moves whose edges stay inside.
     Vertices target = skeleton.nodes;
     std::vector<bool> moving(static_cast<size_t>(n), false);
     for (Eigen::Index k = 0; k < n; ++k) {
@@ -70,7 +70,8 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
       moving[size_t(k)] = true;
     }
     // A move is kept when every edge of the node, to its neighbour's target, stays inside the mesh. A
-    // rejected node stays where it is, so its neighbours are checked again against that.
+    // rejected node stays where it is, so its neighbours are checked again against that (sweeps until
+    // none is rejected: as many as the longest chain of rejections: one to three on the samples).
     bool changed = true;
     while (changed) {
       changed = false;

@@ -174,7 +174,8 @@ TEST(Cli, SkeletonTakesThePapersConstantsAndWritesTheContractedMesh) {
   }
   EXPECT_LT(sum / double(mesh->GetNumberOfPoints()), 0.1) << "mean distance to the core circle (input: 0.35)";
   EXPECT_LT(farthest, 0.25);
-  for (const char* bad : {"--wl0 -1", "--reference-vertices -1", "--sl 1", "--heat 0", "--collapse-length 2", "--wh0 x"}) {
+  for (const char* bad :
+       {"--wl0 -1", "--reference-vertices -1", "--sl 1", "--heat 0", "--collapse-length 2", "--wh0 x"}) {
     auto usage = runCommand(
         medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + dir + "/bad.vtp --quiet " + bad));
     EXPECT_EQ(usage.exitCode, 2) << bad << ": " << usage.err;
