@@ -38,6 +38,7 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
   double contractionWeight = p.initialContractionFactor * std::sqrt(initialArea / double(mesh.faces.rows()));
   if (p.referenceVertices > 0 && n > p.referenceVertices)
     contractionWeight *= std::pow(double(n) / p.referenceVertices, 1.5);
+  contractionWeight = std::min(contractionWeight, p.maxContractionWeight);  // a small reference: capped
   Eigen::VectorXd attraction = Eigen::VectorXd::Constant(n, p.initialAttraction);
 
   // Cotangents of faces that have collapsed are frozen at their last value (see the header).

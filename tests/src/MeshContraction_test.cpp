@@ -125,6 +125,12 @@ TEST(MeshContraction, AFinerMeshContractsInAsManyIterations) {
   ASSERT_TRUE(atReference.ok() && scaled.ok() && unscaled.ok());
   EXPECT_LE(scaled.iterations, atReference.iterations + 1);
   EXPECT_GE(unscaled.iterations, scaled.iterations + 2);
+  // W_L0 never starts above the W_L cap, however small the reference.
+  p.referenceVertices = 1;
+  p.recordSteps = true;
+  const medial::ContractionResult capped = medial::contractMesh(fine, p);
+  ASSERT_TRUE(capped.ok()) << capped.error;
+  EXPECT_EQ(capped.steps.front().contractionWeight, p.maxContractionWeight);
   // And it still contracts onto the torus' core circle (radius 2 in the xy plane).
   for (const auto* r : {&atReference, &scaled}) {
     const Eigen::VectorXd ring = r->contracted.leftCols(2).rowwise().norm();
