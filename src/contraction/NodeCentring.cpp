@@ -70,13 +70,16 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
       moving[size_t(k)] = true;
     }
     // A move is kept when every edge of the node, to its neighbour's target, stays inside the mesh. A
-    // rejected node stays where it is, so its neighbours are checked again against that (sweeps until
-    // none is rejected: as many as the longest chain of rejections: one to three on the samples).
-    bool changed = true;
-    while (changed) {
-      changed = false;
+    // rejected node stays where it is, so its moving neighbours are checked again against that (in sweeps
+    // over the nodes in order, each testing only the nodes whose neighbourhood changed: one to three sweeps
+    // on the samples).
+    std::vector<bool> check = moving;
+    bool again = true;
+    while (again) {
+      again = false;
       for (Eigen::Index k = 0; k < n; ++k) {
-        if (!moving[size_t(k)]) continue;
+        if (!check[size_t(k)]) continue;
+        check[size_t(k)] = false;
         const Eigen::Vector3d to = target.row(k).transpose();
         bool keep = true;
         for (int m : neighbours[size_t(k)])
@@ -84,7 +87,8 @@ int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const In
         if (keep) continue;
         moving[size_t(k)] = false;
         target.row(k) = skeleton.nodes.row(k);
-        changed = true;
+        for (int m : neighbours[size_t(k)])
+          if (moving[size_t(m)]) again = check[size_t(m)] = true;
       }
     }
     for (Eigen::Index k = 0; k < n; ++k) moves += moving[size_t(k)] ? 1 : 0;
