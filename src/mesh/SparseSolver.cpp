@@ -40,6 +40,21 @@ struct EigenBackend : SparseSolver::Backend {
   }
 };
 
+// Eigen's simplicial LLT whose symbolic analysis tells the factorization's cost: the sum over the factor's
+// columns of their squared entry counts (the multiply-adds of the up-looking factorization, about).
+template <class Ordering>
+struct CountedLlt : EigenBackend<Eigen::SimplicialLLT<SpMat, Eigen::Lower, Ordering>> {
+  struct Exposed : Eigen::SimplicialLLT<SpMat, Eigen::Lower, Ordering> {
+    double multiplyAdds() const {
+      double sum = 0;
+      for (Eigen::Index j = 0; j < this->m_nonZerosPerCol.size(); ++j)
+        sum += double(this->m_nonZerosPerCol[j] + 1) * double(this->m_nonZerosPerCol[j] + 1);
+      return sum;
+    }
+  };
+  double multiplyAdds() const { return static_cast<const Exposed&>(this->solver).multiplyAdds(); }
+};
+
 // CHOLMOD's supernodal LLT with one forced ordering (CHOLMOD otherwise tries several and keeps the best).
 struct CholmodBackend : EigenBackend<Eigen::CholmodSupernodalLLT<SpMat, Eigen::Lower>> {
   explicit CholmodBackend(int ordering) {
@@ -148,13 +163,28 @@ SparseSolver::SparseSolver(SparseSolverKind kind) : kind_(kind), chosen_(kind), 
 SparseSolver::~SparseSolver() = default;
 
 void SparseSolver::analyze(const SpMat& matrix) {
-  if (kind_ == SparseSolverKind::Automatic) {
-    const bool sparse = double(matrix.nonZeros()) < kAmdBelowDensity * double(matrix.cols());
-    chosen_ = matrix.rows() < kSimplicialBelow ? SparseSolverKind::SimplicialLltAmd
-              : sparse                         ? SparseSolverKind::CholmodSupernodalAmd
-                                               : SparseSolverKind::CholmodSupernodalMetis;
-    backend_ = makeBackend(chosen_);
+  if (kind_ != SparseSolverKind::Automatic) {
+    backend_->analyze(matrix);
+    return;
   }
+  const bool sparse = double(matrix.nonZeros()) < kAmdBelowDensity * double(matrix.cols());
+  if (matrix.rows() < kSimplicialBelow && !sparse) {
+    auto amd = std::make_unique<CountedLlt<Eigen::AMDOrdering<int>>>();
+    auto metis = std::make_unique<CountedLlt<Eigen::MetisOrdering<int>>>();
+    amd->analyze(matrix);
+    metis->analyze(matrix);
+    const bool metisCheaper = metis->multiplyAdds() < amd->multiplyAdds();
+    chosen_ = metisCheaper ? SparseSolverKind::SimplicialLltMetis : SparseSolverKind::SimplicialLltAmd;
+    if (metisCheaper)
+      backend_ = std::move(metis);
+    else
+      backend_ = std::move(amd);
+    return;
+  }
+  chosen_ = matrix.rows() < kSimplicialBelow ? SparseSolverKind::SimplicialLltAmd
+            : sparse                         ? SparseSolverKind::CholmodSupernodalAmd
+                                             : SparseSolverKind::CholmodSupernodalMetis;
+  backend_ = makeBackend(chosen_);
   backend_->analyze(matrix);
 }
 
