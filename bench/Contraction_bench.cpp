@@ -201,13 +201,23 @@ void centringRow(const std::string& name, const SurfaceMesh& input, const std::s
   const char* suffixes[] = {"-medial", "-medial-nodes0", "-cgal"};
   std::vector<double> medians[3], percentiles[3];
   int outside[3] = {0, 0, 0};
+  std::vector<double> nodeMedians[2];  // the selected nodes', their sources'
+  int worseNodes = 0, pairedNodes = 0;
   for (int turn = 0; turn < rotations; ++turn) {
     const SurfaceMesh sm = turn == 0 ? input : rotated(input, turn);
     const medial::TriangleMesh mesh = toTriangleMesh(sm);
     const medial::CrossSections sections(mesh);
     medial::SkeletonByContractionParameters p;
     if (centringVertices >= 0) p.contractionVertices = centringVertices;
-    const medial::Skeleton selected = medial::skeletonByContraction(mesh, p).skeleton;
+    p.recordStages = true;  // for the selected nodes' sources
+    const medial::SkeletonByContractionResult selectedRun = medial::skeletonByContraction(mesh, p);
+    const medial::Skeleton& selected = selectedRun.skeleton;
+    const medial::SelectionCentring nodes = medial::measureSelectionCentring(selectedRun, mesh);
+    nodeMedians[0].push_back(nodes.selectedMedian());
+    nodeMedians[1].push_back(nodes.sourceMedian());
+    worseNodes = std::max(worseNodes, nodes.worse);
+    pairedNodes = std::max(pairedNodes, int(nodes.selected.size()));
+    p.recordStages = false;
     p.targetNodes = 0;
     const medial::Skeleton unselected = medial::skeletonByContraction(mesh, p).skeleton;
     const medial::Skeleton cgal = cgalSkeleton(sm);
@@ -229,7 +239,8 @@ void centringRow(const std::string& name, const SurfaceMesh& input, const std::s
       std::printf(" [%.3f-%.3f]", *std::min_element(medians[k].begin(), medians[k].end()),
                   *std::max_element(medians[k].begin(), medians[k].end()));
   }
-  std::printf("\n");
+  std::printf(" | %6.3f %6.3f %3d/%-3d\n", medianOf(nodeMedians[0]), medianOf(nodeMedians[1]), worseNodes,
+              pairedNodes);
   std::fflush(stdout);
 }
 
@@ -334,8 +345,12 @@ int main(int argc, char** argv) {
         "Each the median over the mesh and %d turns of it (1, 2, ... degrees), most samples outside, "
         "[range of the medians]\n",
         rotations - 1);
-  std::printf("%-18s | %*s | %*s | %*s\n", "mesh", width, "Medial default", width, "Medial --nodes 0", width,
-              "CGAL");
+  std::printf(
+      "Selected nodes: the default skeleton's nodes and the unselected (centred) nodes they came from, "
+      "off-centre at the node: medians (over turns), and the most nodes more than 0.1 further off than "
+      "their source / nodes compared\n");
+  std::printf("%-18s | %*s | %*s | %*s | %21s\n", "mesh", width, "Medial default", width, "Medial --nodes 0",
+              width, "CGAL", "selected source worse");
   for (const std::string& name : meshes) {
     SurfaceMesh sm;
     if (readMesh(sampleMesh(name), sm))

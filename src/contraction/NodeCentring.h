@@ -22,11 +22,25 @@
 #include "contraction/CrossSections.h"
 #include "mesh/InsideTest.h"
 
+#include <vector>
+
 namespace medial {
 
 // Returns the number of node moves made (over both passes).
+// `directions`, when given, replaces the skeleton's own direction at each node where it is not zero.
 int centreNodes(CurveSkeleton& skeleton, const CrossSections& sections, const InsideTest& inside,
-                bool branchNodes = false, int passes = 2);
+                bool branchNodes = false, int passes = 2,
+                const std::vector<Eigen::Vector3d>* directions = nullptr);
+
+// The skeleton's direction at every node as centreNodes finds it: over five edges each way, at a branch
+// node along its straightest pair of edges; zero at a node without edges.
+std::vector<Eigen::Vector3d> nodeDirections(const CurveSkeleton& skeleton);
+
+// The off-centre ratio at every node (|node - section centroid| / the section's equivalent radius), the
+// section cut normal to the node's direction; NaN where the direction is zero or no closed loop winds
+// around the node (outside).
+std::vector<double> nodeOffCentre(const Vertices& nodes, const std::vector<Eigen::Vector3d>& directions,
+                                  const CrossSections& sections);
 
 // An edge whose middle is off its cross-section's centroid by more than `threshold` times the section's
 // equivalent radius (the plane normal to the edge; the measure) gets a node at that centroid, when

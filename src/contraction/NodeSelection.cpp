@@ -53,7 +53,8 @@ bool staysInside(const Graph& g, const InsideTest& inside, const Eigen::Vector3d
 
 }  // namespace
 
-int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* inside) {
+int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* inside,
+                std::vector<int>* cameFrom) {
   const int n = int(skeleton.nodes.rows());
   Graph g{std::vector<Eigen::Vector3d>(size_t(n)), std::vector<std::vector<int>>(size_t(n)),
           std::vector<bool>(size_t(n), true), std::vector<unsigned>(size_t(n), 0),
@@ -123,10 +124,12 @@ int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* insi
   // Renumber the surviving nodes and map every absorbed vertex through the merge chain.
   std::vector<int> newId(size_t(n), -1);
   std::vector<Eigen::Vector3d> nodes;
+  if (cameFrom) cameFrom->clear();
   for (int i = 0; i < n; ++i)
     if (g.alive[size_t(i)]) {
       newId[size_t(i)] = int(nodes.size());
       nodes.push_back(g.position[size_t(i)]);
+      if (cameFrom) cameFrom->push_back(i);
     }
   auto finalOwner = [&](int i) {
     while (g.owner[size_t(i)] != i) i = g.owner[size_t(i)];

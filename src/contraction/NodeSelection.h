@@ -19,7 +19,10 @@
 
 namespace medial {
 
-// Returns the number of collapses; vertexToNode is renumbered to the surviving nodes.
-int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* inside = nullptr);
+// Returns the number of collapses; vertexToNode is renumbered to the surviving nodes. cameFrom, when
+// given, receives for each surviving node its index before the selection (the node that absorbed the
+// others; it may have moved to the middle of a collapsed edge).
+int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* inside = nullptr,
+                std::vector<int>* cameFrom = nullptr);
 
 }  // namespace medial

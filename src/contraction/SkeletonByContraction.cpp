@@ -10,6 +10,7 @@
 #include "mesh/InsideTest.h"
 #include "mesh/MeshDecimation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -20,6 +21,52 @@ Skeleton skeletonOf(const CurveSkeleton& curve) {
   for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k) skeleton.nodes.push_back(curve.nodes.row(k).transpose());
   for (const auto& [a, b] : curve.edges) skeleton.edges.push_back({a, b});
   return skeleton;
+}
+
+CurveSkeleton curveSkeletonOf(const Skeleton& skeleton) {
+  CurveSkeleton curve;
+  curve.nodes.resize(Eigen::Index(skeleton.nodes.size()), 3);
+  for (size_t k = 0; k < skeleton.nodes.size(); ++k)
+    curve.nodes.row(Eigen::Index(k)) = skeleton.nodes[k].transpose();
+  for (const auto& e : skeleton.edges) curve.edges.emplace_back(e[0], e[1]);
+  return curve;
+}
+
+namespace {
+double medianOf(std::vector<double> values) {
+  if (values.empty()) return NAN;
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
+  return values[values.size() / 2];
+}
+}  // namespace
+
+double SelectionCentring::selectedMedian() const { return medianOf(selected); }
+double SelectionCentring::sourceMedian() const { return medianOf(source); }
+
+SelectionCentring measureSelectionCentring(const SkeletonByContractionResult& result,
+                                           const TriangleMesh& mesh, double tolerance) {
+  const CrossSections sections(mesh);
+  const InsideTest inside(mesh);
+  CurveSkeleton source = curveSkeletonOf(result.unselectedSkeleton);
+  const std::vector<Eigen::Vector3d> directions = nodeDirections(source);
+  centreNodes(source, sections, inside);
+  // Both cut across the unselected skeleton's direction at the source (before its centring, as the
+  // pipeline centres the selected nodes): a selected node's own edges are chords of a bent axis, and a
+  // cut across a chord would measure the direction as well as the position.
+  const std::vector<double> sourceRatios = nodeOffCentre(source.nodes, directions, sections);
+  std::vector<Eigen::Vector3d> selectedDirections;
+  for (int from : result.selectedFrom) selectedDirections.push_back(directions[size_t(from)]);
+  const std::vector<double> selectedRatios =
+      nodeOffCentre(curveSkeletonOf(result.skeleton).nodes, selectedDirections, sections);
+  SelectionCentring out;
+  for (size_t k = 0; k < selectedRatios.size() && k < result.selectedFrom.size(); ++k) {
+    const double from = sourceRatios[size_t(result.selectedFrom[k])];
+    if (std::isnan(selectedRatios[k]) || std::isnan(from)) continue;
+    out.selected.push_back(selectedRatios[k]);
+    out.source.push_back(from);
+    out.worse += selectedRatios[k] > from + tolerance ? 1 : 0;
+  }
+  return out;
 }
 
 namespace {
@@ -146,8 +193,16 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   start.restart();
   if (p.recordStages) result.unselectedSkeleton = skeletonOf(curve);
   if (p.targetNodes > 0) {
-    selectNodes(curve, p.targetNodes, &inside);
-    if (sections) result.centredNodes += centreNodes(curve, *sections, inside, /*branchNodes=*/true);
+    // The selected nodes are centred across the unselected skeleton's direction where they came from: their
+    // own edges are chords of bent parts, and a cut across a chord is oblique to the part (a node centred
+    // in it lands off the axis: 68 of 395 selected nodes over 14 meshes ended more than 0.1 further off
+    // than their sources, 12 now).
+    const std::vector<Eigen::Vector3d> unselectedDirections = nodeDirections(curve);
+    selectNodes(curve, p.targetNodes, &inside, &result.selectedFrom);
+    std::vector<Eigen::Vector3d> directions;
+    for (int from : result.selectedFrom) directions.push_back(unselectedDirections[size_t(from)]);
+    if (sections)
+      result.centredNodes += centreNodes(curve, *sections, inside, /*branchNodes=*/true, 2, &directions);
   }
   result.selectionSeconds = start.seconds();
   start.restart();

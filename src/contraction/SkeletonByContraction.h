@@ -26,7 +26,8 @@ struct SkeletonByContractionParameters {
   SurgeryParameters surgery;
   bool refineEmbedding = true;
   // Beyond the paper: nodes move to the centroid of the mesh's cross-section through them
-  // (src/contraction/NodeCentring.h): the selected nodes after the selection, branch nodes included, or
+  // (src/contraction/NodeCentring.h): the selected nodes after the selection, branch nodes included, cut
+  // across the unselected skeleton's direction where each came from, or
   // without a selection every node of one or two edges after the refinement, and edges whose middle is
   // still off-centre are split at their sections' centroids.
   bool centreNodes = true;
@@ -64,6 +65,7 @@ struct SkeletonByContractionResult {
   std::vector<int> collapseOrder;  // per contracted vertex: when the surgery collapsed it (1: first; 0: a node)
   Faces contractedFaces;
   Skeleton surgerySkeleton, unselectedSkeleton;
+  std::vector<int> selectedFrom;  // with a selection: per node of `skeleton`, the node it came from
   // Seconds per stage, and the share of the contraction spent factorizing.
   double decimationSeconds = 0, contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0,
          refinementSeconds = 0, selectionSeconds = 0, radiiSeconds = 0, weightsSeconds = 0;
@@ -73,6 +75,22 @@ struct SkeletonByContractionResult {
 
 // The curve skeleton's nodes and edges as a Skeleton (no radii, no root).
 Skeleton skeletonOf(const CurveSkeleton& curve);
+
+// A Skeleton's nodes and edges as a curve skeleton (no vertex map).
+CurveSkeleton curveSkeletonOf(const Skeleton& skeleton);
+
+// Issue 26's goal for the selection: every selected node as centred as the node it came from. Each node
+// of a run's selected skeleton (recordStages: unselectedSkeleton and selectedFrom) is compared with its
+// source in the unselected skeleton, that one centred as the unselected path centres it (centreNodes,
+// without the splits): the off-centre ratio at the node itself (nodeOffCentre).
+struct SelectionCentring {
+  std::vector<double> selected, source;  // the pairs where both nodes have a cross-section
+  int worse = 0;                         // pairs whose selected node is more than `tolerance` further off
+  double selectedMedian() const;
+  double sourceMedian() const;
+};
+SelectionCentring measureSelectionCentring(const SkeletonByContractionResult& result,
+                                           const TriangleMesh& mesh, double tolerance = 0.1);
 
 // Checks what the algorithm needs: at least one triangle, finite coordinates, valid vertex ids. The
 // message names the first problem; empty when the mesh is usable.

@@ -288,8 +288,11 @@ TEST(NodeSelection, KeepsCyclesAndTips) {
     s.edges.emplace_back(k == 0 ? 1 : 3 + k, 4 + k);
   }
   s.vertexToNode = {13, 0};
-  medial::selectNodes(s, 4);
+  std::vector<int> cameFrom;
+  medial::selectNodes(s, 4, nullptr, &cameFrom);
   const medial::Skeleton out = medial::skeletonOf(s);
+  ASSERT_EQ(cameFrom.size(), out.nodes.size());
+  EXPECT_EQ(cameFrom[size_t(s.vertexToNode[0])], 13);  // the tip is the tail's last node
   const GraphCounts c = countGraph(out);
   EXPECT_EQ(c.cycles, 1);
   EXPECT_EQ(c.components, 1);
