@@ -213,10 +213,10 @@ void centringRow(const std::string& name, const SurfaceMesh& input, const std::s
     const medial::SkeletonByContractionResult selectedRun = medial::skeletonByContraction(mesh, p);
     const medial::Skeleton& selected = selectedRun.skeleton;
     const medial::SelectionCentring nodes = medial::measureSelectionCentring(selectedRun, mesh);
-    nodeMedians[0].push_back(nodes.selectedMedian());
-    nodeMedians[1].push_back(nodes.sourceMedian());
+    nodeMedians[0].push_back(nodes.selected.median());
+    nodeMedians[1].push_back(nodes.source.median());
     worseNodes = std::max(worseNodes, nodes.worse);
-    pairedNodes = std::max(pairedNodes, int(nodes.selected.size()));
+    pairedNodes = std::max(pairedNodes, int(nodes.selected.ratios.size()));
     p.recordStages = false;
     p.targetNodes = 0;
     const medial::Skeleton unselected = medial::skeletonByContraction(mesh, p).skeleton;

@@ -10,7 +10,6 @@
 #include "mesh/InsideTest.h"
 #include "mesh/MeshDecimation.h"
 
-#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -32,19 +31,12 @@ CurveSkeleton curveSkeletonOf(const Skeleton& skeleton) {
   return curve;
 }
 
-namespace {
-double medianOf(std::vector<double> values) {
-  if (values.empty()) return NAN;
-  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
-  return values[values.size() / 2];
-}
-}  // namespace
-
-double SelectionCentring::selectedMedian() const { return medianOf(selected); }
-double SelectionCentring::sourceMedian() const { return medianOf(source); }
-
 SelectionCentring measureSelectionCentring(const SkeletonByContractionResult& result,
                                            const TriangleMesh& mesh, double tolerance) {
+  SelectionCentring out;
+  const int sources = int(result.unselectedSkeleton.nodes.size());
+  for (int from : result.selectedFrom)
+    if (from < 0 || from >= sources) return out;  // no recorded stages, or not this run's
   const CrossSections sections(mesh);
   const InsideTest inside(mesh);
   CurveSkeleton source = curveSkeletonOf(result.unselectedSkeleton);
@@ -58,12 +50,11 @@ SelectionCentring measureSelectionCentring(const SkeletonByContractionResult& re
   for (int from : result.selectedFrom) selectedDirections.push_back(directions[size_t(from)]);
   const std::vector<double> selectedRatios =
       nodeOffCentre(curveSkeletonOf(result.skeleton).nodes, selectedDirections, sections);
-  SelectionCentring out;
   for (size_t k = 0; k < selectedRatios.size() && k < result.selectedFrom.size(); ++k) {
     const double from = sourceRatios[size_t(result.selectedFrom[k])];
     if (std::isnan(selectedRatios[k]) || std::isnan(from)) continue;
-    out.selected.push_back(selectedRatios[k]);
-    out.source.push_back(from);
+    out.selected.ratios.push_back(selectedRatios[k]);
+    out.source.ratios.push_back(from);
     out.worse += selectedRatios[k] > from + tolerance ? 1 : 0;
   }
   return out;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "contraction/ConnectivitySurgery.h"
+#include "contraction/CrossSections.h"
 #include "contraction/CycleRepair.h"
 #include "rig/HeatWeights.h"
 #include "contraction/MeshContraction.h"
@@ -83,11 +84,10 @@ CurveSkeleton curveSkeletonOf(const Skeleton& skeleton);
 // of a run's selected skeleton (recordStages: unselectedSkeleton and selectedFrom) is compared with its
 // source in the unselected skeleton, that one centred as the unselected path centres it (centreNodes,
 // without the splits): the off-centre ratio at the node itself (nodeOffCentre).
+// Empty without recordStages.
 struct SelectionCentring {
-  std::vector<double> selected, source;  // the pairs where both nodes have a cross-section
-  int worse = 0;                         // pairs whose selected node is more than `tolerance` further off
-  double selectedMedian() const;
-  double sourceMedian() const;
+  OffCentreSummary selected, source;  // ratios of the pairs where both nodes have a cross-section
+  int worse = 0;                      // pairs whose selected node is more than `tolerance` further off
 };
 SelectionCentring measureSelectionCentring(const SkeletonByContractionResult& result,
                                            const TriangleMesh& mesh, double tolerance = 0.1);

@@ -40,19 +40,17 @@ struct EigenBackend : SparseSolver::Backend {
   }
 };
 
-// Eigen's simplicial LLT whose symbolic analysis tells the factorization's cost: the sum over the factor's
-// columns of their squared entry counts (the multiply-adds of the up-looking factorization, about).
+// Eigen's simplicial LLT that tells, after its symbolic analysis, what the factorization will cost: the
+// sum over the factor's columns of their squared entry counts (about the up-looking factorization's
+// multiply-adds; m_nonZerosPerCol counts each column's entries below the diagonal).
 template <class Ordering>
-struct CountedLlt : EigenBackend<Eigen::SimplicialLLT<SpMat, Eigen::Lower, Ordering>> {
-  struct Exposed : Eigen::SimplicialLLT<SpMat, Eigen::Lower, Ordering> {
-    double multiplyAdds() const {
-      double sum = 0;
-      for (Eigen::Index j = 0; j < this->m_nonZerosPerCol.size(); ++j)
-        sum += double(this->m_nonZerosPerCol[j] + 1) * double(this->m_nonZerosPerCol[j] + 1);
-      return sum;
-    }
-  };
-  double multiplyAdds() const { return static_cast<const Exposed&>(this->solver).multiplyAdds(); }
+struct CostedLlt : Eigen::SimplicialLLT<SpMat, Eigen::Lower, Ordering> {
+  double multiplyAdds() const {
+    double sum = 0;
+    for (Eigen::Index j = 0; j < this->m_nonZerosPerCol.size(); ++j)
+      sum += double(this->m_nonZerosPerCol[j] + 1) * double(this->m_nonZerosPerCol[j] + 1);
+    return sum;
+  }
 };
 
 // CHOLMOD's supernodal LLT with one forced ordering (CHOLMOD otherwise tries several and keeps the best).
@@ -169,11 +167,11 @@ void SparseSolver::analyze(const SpMat& matrix) {
   }
   const bool sparse = double(matrix.nonZeros()) < kAmdBelowDensity * double(matrix.cols());
   if (matrix.rows() < kSimplicialBelow && !sparse) {
-    auto amd = std::make_unique<CountedLlt<Eigen::AMDOrdering<int>>>();
-    auto metis = std::make_unique<CountedLlt<Eigen::MetisOrdering<int>>>();
+    auto amd = std::make_unique<EigenBackend<CostedLlt<Eigen::AMDOrdering<int>>>>();
+    auto metis = std::make_unique<EigenBackend<CostedLlt<Eigen::MetisOrdering<int>>>>();
     amd->analyze(matrix);
     metis->analyze(matrix);
-    const bool metisCheaper = metis->multiplyAdds() < amd->multiplyAdds();
+    const bool metisCheaper = metis->solver.multiplyAdds() < amd->solver.multiplyAdds();
     chosen_ = metisCheaper ? SparseSolverKind::SimplicialLltMetis : SparseSolverKind::SimplicialLltAmd;
     if (metisCheaper)
       backend_ = std::move(metis);

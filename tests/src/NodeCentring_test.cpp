@@ -141,12 +141,16 @@ TEST(NodeCentring, SelectedNodesAreAsCentredAsTheNodesTheyCameFrom) {
     const auto run = medial::skeletonByContraction(mesh, p);
     ASSERT_TRUE(run.ok()) << name;
     ASSERT_EQ(run.selectedFrom.size(), run.skeleton.nodes.size()) << name;
+    medial::SkeletonByContractionResult unrecorded = run;
+    unrecorded.unselectedSkeleton = {};
+    EXPECT_TRUE(medial::measureSelectionCentring(unrecorded, mesh).selected.ratios.empty());
     const medial::SelectionCentring nodes = medial::measureSelectionCentring(run, mesh);
     std::printf("%s: selected nodes' median off-centre %.3f, their sources' %.3f, %d of %zu further off\n",
-                name, nodes.selectedMedian(), nodes.sourceMedian(), nodes.worse, nodes.selected.size());
-    EXPECT_GE(nodes.selected.size(), run.skeleton.nodes.size() * 3 / 4) << name;
-    EXPECT_LE(10 * nodes.worse, int(nodes.selected.size())) << name;
-    EXPECT_LE(nodes.selectedMedian(), nodes.sourceMedian() + 0.01) << name;
+                name, nodes.selected.median(), nodes.source.median(), nodes.worse,
+                nodes.selected.ratios.size());
+    EXPECT_GE(nodes.selected.ratios.size(), run.skeleton.nodes.size() * 3 / 4) << name;
+    EXPECT_LE(10 * nodes.worse, int(nodes.selected.ratios.size())) << name;
+    EXPECT_LE(nodes.selected.median(), nodes.source.median() + 0.01) << name;
   }
 }
 
