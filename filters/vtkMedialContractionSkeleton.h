@@ -97,9 +97,9 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   /// c of H_jj = c / d(j)^2 in the heat equilibrium (default 1, Baran and Popović).
   vtkSetClampMacro(HeatConstant, double, 1e-3, 100.0);
   vtkGetMacro(HeatConstant, double);
-  /// Sparse solver, one of GetSolverNames() (default auto: Eigen's simplicial LLT below 30,000 vertices,
-  /// ordered by AMD or METIS, whichever promises less work, CHOLMOD supernodal with METIS above); an
-  /// unknown name is an error and leaves the solver as it was.
+  /// Sparse solver, one of GetSolverNames() (default auto: Eigen's simplicial LLT with AMD below 30,000
+  /// vertices, CHOLMOD supernodal with METIS above); an unknown name is an error and leaves the solver as
+  /// it was.
   void SetSolver(const std::string& name);
   std::string GetSolver() const { return this->Solver; }
   /// The solvers' names, comma-separated: auto, cholmod-metis, cholmod-amd, llt-amd, ldlt-amd, llt-metis,

@@ -40,19 +40,6 @@ struct EigenBackend : SparseSolver::Backend {
   }
 };
 
-// Eigen's simplicial LLT that tells, after its symbolic analysis, what the factorization will cost: the
-// sum over the factor's columns of their squared entry counts (about the up-looking factorization's
-// multiply-adds; m_nonZerosPerCol counts each column's entries below the diagonal).
-template <class Ordering>
-struct CostedLlt : Eigen::SimplicialLLT<SpMat, Eigen::Lower, Ordering> {
-  double multiplyAdds() const {
-    double sum = 0;
-    for (Eigen::Index j = 0; j < this->m_nonZerosPerCol.size(); ++j)
-      sum += double(this->m_nonZerosPerCol[j] + 1) * double(this->m_nonZerosPerCol[j] + 1);
-    return sum;
-  }
-};
-
 // CHOLMOD's supernodal LLT with one forced ordering (CHOLMOD otherwise tries several and keeps the best).
 struct CholmodBackend : EigenBackend<Eigen::CholmodSupernodalLLT<SpMat, Eigen::Lower>> {
   explicit CholmodBackend(int ordering) {
@@ -161,28 +148,13 @@ SparseSolver::SparseSolver(SparseSolverKind kind) : kind_(kind), chosen_(kind), 
 SparseSolver::~SparseSolver() = default;
 
 void SparseSolver::analyze(const SpMat& matrix) {
-  if (kind_ != SparseSolverKind::Automatic) {
-    backend_->analyze(matrix);
-    return;
+  if (kind_ == SparseSolverKind::Automatic) {
+    const bool sparse = double(matrix.nonZeros()) < kAmdBelowDensity * double(matrix.cols());
+    chosen_ = matrix.rows() < kSimplicialBelow ? SparseSolverKind::SimplicialLltAmd
+              : sparse                         ? SparseSolverKind::CholmodSupernodalAmd
+                                               : SparseSolverKind::CholmodSupernodalMetis;
+    backend_ = makeBackend(chosen_);
   }
-  const bool sparse = double(matrix.nonZeros()) < kAmdBelowDensity * double(matrix.cols());
-  if (matrix.rows() < kSimplicialBelow && !sparse) {
-    auto amd = std::make_unique<EigenBackend<CostedLlt<Eigen::AMDOrdering<int>>>>();
-    auto metis = std::make_unique<EigenBackend<CostedLlt<Eigen::MetisOrdering<int>>>>();
-    amd->analyze(matrix);
-    metis->analyze(matrix);
-    const bool metisCheaper = metis->solver.multiplyAdds() < amd->solver.multiplyAdds();
-    chosen_ = metisCheaper ? SparseSolverKind::SimplicialLltMetis : SparseSolverKind::SimplicialLltAmd;
-    if (metisCheaper)
-      backend_ = std::move(metis);
-    else
-      backend_ = std::move(amd);
-    return;
-  }
-  chosen_ = matrix.rows() < kSimplicialBelow ? SparseSolverKind::SimplicialLltAmd
-            : sparse                         ? SparseSolverKind::CholmodSupernodalAmd
-                                             : SparseSolverKind::CholmodSupernodalMetis;
-  backend_ = makeBackend(chosen_);
   backend_->analyze(matrix);
 }
 

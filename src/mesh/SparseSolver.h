@@ -17,14 +17,11 @@
 namespace medial {
 
 enum class SparseSolverKind {
-  // Default: Eigen's simplicial LLT below kSimplicialBelow unknowns, CHOLMOD supernodal with METIS (the
-  // paper's winner) from there on: the supernodes' BLAS calls cost more than they save while small. For
-  // the contraction's two-ring matrix the simplicial LLT takes the ordering, AMD or METIS, whose symbolic
-  // analysis promises fewer multiply-adds (both analyses cost about one factorization at 4,000 unknowns;
-  // the contraction factorizes 13-15 times): knot1's 12.8 million with METIS against 16.3 with AMD
-  // (factorization 0.19 -> 0.16 s over its contraction); most sample meshes keep AMD, 5-40 % cheaper
-  // there. A sparser matrix, factorized once (the heat weights), keeps AMD: the second analysis cost more
-  // than it could save (the armadillo's weights 0.17 -> 0.29 s).
+  // Default: Eigen's simplicial LLT with AMD below kSimplicialBelow unknowns, CHOLMOD supernodal with METIS
+  // (the paper's winner) from there on: the supernodes' BLAS calls cost more than they save while small.
+  // (Choosing AMD or METIS by the fill of both analyses was tried: METIS saves knot1 21 % of the
+  // factorization's multiply-adds, but Eigen's METIS analysis takes 15 ms at 3,000 unknowns against
+  // AMD's 4-6 ms and 3-6 ms per factorization: it paid for itself on knot1 alone and cost the others.)
   // Factorization seconds of whole full-resolution contractions, simplicial : supernodal, on an idle
   // machine (stop 29): man (17,495 vertices) 0.51 : 1.00, diplodocus (23,982) 1.13 : 1.53, armadillo
   // (26,002) 1.71 : 1.88, bunny00 (37,706) 4.12 : 3.08, refined_elephant (44,460) 3.82 : 3.30. (CHOLMOD's
