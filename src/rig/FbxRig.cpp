@@ -124,8 +124,9 @@ std::string fbxRigFile(const Rig& rig, const std::vector<RigBone>& bones,
     connect(attribute, id);
   }
 
-  // The skin: one Cluster per bone that drives vertices. Transform takes the mesh into the bone's rest
-  // frame, TransformLink is the bone's rest frame (the mesh sits at the origin).
+  // The skin: one Cluster per bone, empty for a bone that drives no vertex (importers find a skin's bones
+  // by its clusters, and the file should hold the whole skeleton). Transform takes the mesh into the bone's
+  // rest frame, TransformLink is the bone's rest frame (the mesh sits at the origin).
   const int64_t skinId = nextId++;
   Node& skin = objects.add("Deformer", {skinId, objectName(meshName, "Deformer"), std::string("Skin")});
   skin.add("Version", {int32_t(101)});
@@ -133,7 +134,7 @@ std::string fbxRigFile(const Rig& rig, const std::vector<RigBone>& bones,
   connect(skinId, geometryId);
   int clusters = 0;
   for (size_t b = 0; b < bones.size(); ++b) {
-    if (bones[b].edge < 0 || influences[size_t(bones[b].edge)].empty()) continue;
+    if (bones[b].edge < 0) continue;
     const int64_t clusterId = nextId++;
     Node& cluster = objects.add(
         "Deformer", {clusterId, objectName(bones[b].name, "SubDeformer"), std::string("Cluster")});

@@ -82,14 +82,15 @@ std::string writeGltfRig(const Rig& rig, const std::vector<RigBone>& bones,
   model.accessors[size_t(position)].minValues = {lo[0], lo[1], lo[2]};
   model.accessors[size_t(position)].maxValues = {hi[0], hi[1], hi[2]};
 
-  // The skin's joints: the root joint and each bone that drives a vertex, in the bones' order.
+  // The skin's joints: the root joint and every bone, in the bones' order - also a bone that drives no
+  // vertex (a short bone beside longer ones, whose influence no vertex keeps among its four), so that the
+  // file holds the whole skeleton.
   std::vector<int> jointOfBone(bones.size(), -1);
   std::vector<size_t> joints;
-  for (size_t b = 0; b < bones.size(); ++b)
-    if (bones[b].edge < 0 || !influences[size_t(bones[b].edge)].empty()) {
-      jointOfBone[b] = int(joints.size());
-      joints.push_back(b);
-    }
+  for (size_t b = 0; b < bones.size(); ++b) {
+    jointOfBone[b] = int(joints.size());
+    joints.push_back(b);
+  }
   std::vector<uint16_t> jointIds(4 * n, 0);
   std::vector<float> weights(4 * n, 0.0f);
   std::vector<uint8_t> used(n, 0);
