@@ -24,7 +24,11 @@ TEST(NormalMatrix, EqualsTheProductOfTheLaplacianWithItselfPlusTheAttraction) {
     const double weight = 0.25 * (iteration + 1);
     Eigen::MatrixXd expected = Eigen::MatrixXd(laplacian * laplacian) * weight * weight;
     expected.diagonal() += attraction.cwiseAbs2();
-    const Eigen::MatrixXd got = normal.update(laplacian, weight, attraction);
+    const Eigen::SparseMatrix<double>& sparse = normal.update(laplacian, weight, attraction);
+    Eigen::SparseMatrix<double> identity(n, n);
+    identity.setIdentity();
+    EXPECT_EQ(sparse.nonZeros(), Eigen::SparseMatrix<double>(laplacian * laplacian + identity).nonZeros());
+    const Eigen::MatrixXd got = sparse;
     EXPECT_LT((got - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
     EXPECT_DOUBLE_EQ(got(n - 1, n - 1), 9.0);  // the unused vertex: its attraction only
   }
