@@ -21,7 +21,7 @@ enum class SparseSolverKind {
   // (the paper's winner) from there on: the supernodes' BLAS calls cost more than they save while small.
   // (Choosing AMD or METIS by the fill of both analyses was tried: METIS saves knot1 21 % of the
   // factorization's multiply-adds, but Eigen's METIS analysis takes 15 ms at 3,000 unknowns against
-  // Eigen's AMD's 4-6 ms and 3-6 ms per factorization: it paid for itself on knot1 alone and cost the others.)
+  // Eigen's AMD's 4-6 ms and 3-6 ms per factorization: it paid for itself on knot1 alone, cost the rest.)
   // Factorization seconds of whole full-resolution contractions, simplicial : supernodal, on an idle
   // machine (stop 29): man (17,495 vertices) 0.51 : 1.00, diplodocus (23,982) 1.13 : 1.53, armadillo
   // (26,002) 1.71 : 1.88, bunny00 (37,706) 4.12 : 3.08, refined_elephant (44,460) 3.82 : 3.30. (CHOLMOD's

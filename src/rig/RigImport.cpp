@@ -74,11 +74,12 @@ ImportedRig importRig(const std::string& path) {
       for (unsigned b = 0; b < mesh->mNumBones; ++b) {
         const aiBone* bone = mesh->mBones[b];
         jointNames.insert(bone->mName.C_Str());
+        std::vector<std::pair<int, double>>& influenced = influence[bone->mName.C_Str()];
         for (unsigned w = 0; w < bone->mNumWeights; ++w) {
           const int vertex = first + int(bone->mWeights[w].mVertexId);
           auto& s = strongest[size_t(vertex)];
           if (bone->mWeights[w].mWeight > s.second) s = {bone->mName.C_Str(), bone->mWeights[w].mWeight};
-          influence[bone->mName.C_Str()].push_back({vertex, bone->mWeights[w].mWeight});
+          influenced.push_back({vertex, bone->mWeights[w].mWeight});
         }
       }
     }
