@@ -53,7 +53,6 @@ ImportedRig importRig(const std::string& path) {
   // The meshes in scene space, merged; the joints and, per vertex, its largest weight's joint.
   std::set<std::string> jointNames;
   std::vector<std::pair<std::string, double>> strongest;  // per merged vertex: (joint, weight)
-  std::map<std::string, std::vector<std::pair<int, double>>> influence;  // per joint: (vertex, weight)
   std::vector<Eigen::Vector3d> vertices;
   std::vector<Eigen::Vector3i> faces;
   std::function<void(const aiNode*)> addMeshes = [&](const aiNode* node) {
@@ -74,12 +73,9 @@ ImportedRig importRig(const std::string& path) {
       for (unsigned b = 0; b < mesh->mNumBones; ++b) {
         const aiBone* bone = mesh->mBones[b];
         jointNames.insert(bone->mName.C_Str());
-        std::vector<std::pair<int, double>>& influenced = influence[bone->mName.C_Str()];
         for (unsigned w = 0; w < bone->mNumWeights; ++w) {
-          const int vertex = first + int(bone->mWeights[w].mVertexId);
-          auto& s = strongest[size_t(vertex)];
+          auto& s = strongest[size_t(first) + bone->mWeights[w].mVertexId];
           if (bone->mWeights[w].mWeight > s.second) s = {bone->mName.C_Str(), bone->mWeights[w].mWeight};
-          influenced.push_back({vertex, bone->mWeights[w].mWeight});
         }
       }
     }
@@ -148,15 +144,9 @@ ImportedRig importRig(const std::string& path) {
     if (hasChild[j]) continue;
     const Eigen::Matrix4d& g = walk.global[joints[j]];
     const Eigen::Vector3d head = g.topRightCorner<3, 1>(), axis = g.block<3, 1>(0, 1).normalized();
-    const std::string name = joints[j]->mName.C_Str();
-    std::vector<int>& own = verticesOf[name];
-    // A bone that is the strongest influence of no vertex (a short bone beside a longer one, or one that
-    // closed a cycle): the vertices where it weighs at least half as much as their strongest bone.
-    if (own.empty())
-      for (const auto& [v, weight] : influence[name])
-        if (weight >= 0.5 * strongest[size_t(v)].second) own.push_back(v);
     double reach = 0;
-    for (int v : own) reach = std::max(reach, (vertices[size_t(v)] - head).dot(axis));
+    for (int v : verticesOf[joints[j]->mName.C_Str()])
+      reach = std::max(reach, (vertices[size_t(v)] - head).dot(axis));
     if (reach <= 1e-6 * size) continue;
     const int tail = nodeAt(head + reach * axis);
     edges.insert({std::min(nodeOf[j], tail), std::max(nodeOf[j], tail)});
