@@ -43,7 +43,8 @@ inline Skeleton cgalSkeleton(const SurfaceMesh& input) {
     const auto& p = graph[v].point;
     s.nodes.emplace_back(p.x(), p.y(), p.z());
   }
-  for (auto e : CGAL::make_range(edges(graph))) s.edges.push_back({int(source(e, graph)), int(target(e, graph))});
+  for (auto e : CGAL::make_range(edges(graph)))
+    s.edges.push_back({int(source(e, graph)), int(target(e, graph))});
   return s;
 }
 

@@ -337,8 +337,9 @@ int main(int argc, char** argv) {
   }
 
   // Centring: the off-centre ratio of the issue, 150 samples with a fixed seed.
-  std::printf("\nOff-centre ratio (distance to the cross-section's centroid / its equivalent radius; 150 "
-              "samples): median, 90th percentile, samples outside\n");
+  std::printf(
+      "\nOff-centre ratio (distance to the cross-section's centroid / its equivalent radius; 150 "
+      "samples): median, 90th percentile, samples outside\n");
   const int width = rotations > 1 ? 34 : 20;
   if (rotations > 1)
     std::printf(

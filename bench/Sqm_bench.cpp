@@ -78,9 +78,10 @@ void refinedRows(const std::vector<std::string>& paths, int repeat) {
   // The first run at a level also pays for its fresh memory (page faults: 40k at K = 4 on the octopus, about
   // half of that run here); the GUI's slider and editor run it again and again: the median is of the runs
   // after it, the first has a column of its own.
-  std::printf("\nSQM refined (--subdivide K, fold repair on), first run and median of the %d after it\n", repeat);
-  std::printf("%-16s %2s | %9s %9s %8s %6s %6s %6s\n", "skeleton", "K", "first ms", "SQM ms", "faces", "quads",
-              "border", "pairs");
+  std::printf("\nSQM refined (--subdivide K, fold repair on), first run and median of the %d after it\n",
+              repeat);
+  std::printf("%-16s %2s | %9s %9s %8s %6s %6s %6s\n", "skeleton", "K", "first ms", "SQM ms", "faces",
+              "quads", "border", "pairs");
   for (const std::string& path : paths) {
     auto reader = vtkSmartPointer<vtkMedialReader>::New();
     reader->SetFileName(path.c_str());
@@ -96,9 +97,9 @@ void refinedRows(const std::vector<std::string>& paths, int repeat) {
       const double seconds = medianSeconds(repeat, run);
       const Summary s = summarize(sqm->GetOutput());
       const std::string name = path.substr(path.find_last_of('/') + 1);
-      std::printf("%-16s %2d | %9.1f %9.1f %8lld %5.0f%% %6lld %6zu\n", name.c_str(), levels, 1e3 * first, 1e3 * seconds,
-                  static_cast<long long>(s.faces), 100 * s.quadShare, static_cast<long long>(s.border),
-                  intersectingPairs(sqm->GetOutput()));
+      std::printf("%-16s %2d | %9.1f %9.1f %8lld %5.0f%% %6lld %6zu\n", name.c_str(), levels, 1e3 * first,
+                  1e3 * seconds, static_cast<long long>(s.faces), 100 * s.quadShare,
+                  static_cast<long long>(s.border), intersectingPairs(sqm->GetOutput()));
     }
   }
 }
@@ -108,8 +109,8 @@ void refinedRows(const std::vector<std::string>& paths, int repeat) {
 // share, faces, quad share and intersecting pairs before and after.
 void unionRows(int repeat) {
   std::printf("\nSQM --union on overlapping tubes (capsules), median of %d runs\n", repeat);
-  std::printf("%-16s %2s | %9s %8s %6s | %9s %9s %8s %6s %6s %6s\n", "skeleton", "K", "SQM ms", "faces", "pairs",
-              "union ms", "of which", "faces", "quads", "border", "pairs");
+  std::printf("%-16s %2s | %9s %8s %6s | %9s %9s %8s %6s %6s %6s\n", "skeleton", "K", "SQM ms", "faces",
+              "pairs", "union ms", "of which", "faces", "quads", "border", "pairs");
   const std::string data = std::string(MEDIAL_SOURCE_DIR) + "/data/skeletons/";
   for (const char* name : {"overlapping/crossing.vtp", "overlapping/dense-tree.vtp"}) {
     auto reader = vtkSmartPointer<vtkMedialReader>::New();
@@ -133,10 +134,11 @@ void unionRows(int repeat) {
       });
       const Summary united = summarize(sqm->GetOutput());
       std::printf("%-16s %2d | %9.1f %8lld %6zu | %9.1f %8.0f%% %8lld %5.0f%% %6lld %6zu\n",
-                  std::strrchr(name, '/') + 1, levels, 1e3 * plainSeconds, static_cast<long long>(plain.faces),
-                  plainPairs, 1e3 * unionSeconds, 100 * sqm->GetStageSeconds("union") / unionSeconds,
-                  static_cast<long long>(united.faces), 100 * united.quadShare,
-                  static_cast<long long>(united.border), intersectingPairs(sqm->GetOutput()));
+                  std::strrchr(name, '/') + 1, levels, 1e3 * plainSeconds,
+                  static_cast<long long>(plain.faces), plainPairs, 1e3 * unionSeconds,
+                  100 * sqm->GetStageSeconds("union") / unionSeconds, static_cast<long long>(united.faces),
+                  100 * united.quadShare, static_cast<long long>(united.border),
+                  intersectingPairs(sqm->GetOutput()));
     }
   }
 }
@@ -181,7 +183,8 @@ void editorRows(int steps) {
   reader->Update();
   medial::Skeleton skeleton;
   std::string error;
-  if (!medial::skeletonFromPolyData(vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)), skeleton, error)) {
+  if (!medial::skeletonFromPolyData(vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)), skeleton,
+                                    error)) {
     std::printf("editor: %s\n", error.c_str());
     return;
   }
@@ -189,7 +192,9 @@ void editorRows(int steps) {
     int longest = 0;
     for (int e = 1; e < skeleton.edgeCount(); ++e) {
       const auto length = [&](int i) {
-        return (skeleton.nodes[size_t(skeleton.edges[size_t(i)][0])] - skeleton.nodes[size_t(skeleton.edges[size_t(i)][1])]).norm();
+        return (skeleton.nodes[size_t(skeleton.edges[size_t(i)][0])] -
+                skeleton.nodes[size_t(skeleton.edges[size_t(i)][1])])
+            .norm();
       };
       if (length(e) > length(longest)) longest = e;
     }
@@ -215,7 +220,8 @@ void editorRows(int steps) {
       sqm->Update();
     };
   };
-  const double base = dragTimes(sqmAt(0, true)), drag2 = dragTimes(sqmAt(2, false)), release2 = dragTimes(sqmAt(2, true));
+  const double base = dragTimes(sqmAt(0, true)), drag2 = dragTimes(sqmAt(2, false)),
+               release2 = dragTimes(sqmAt(2, true));
   const double tube = dragTimes([](vtkPolyData* input) {
     auto withScalars = vtkSmartPointer<vtkPolyData>::New();
     withScalars->ShallowCopy(input);
@@ -226,8 +232,9 @@ void editorRows(int steps) {
     tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
     tubes->Update();
   });
-  std::printf("\nSkeleton editor (octopus split to %d nodes, a leaf dragged in %d steps), median ms per step\n",
-              skeleton.nodeCount(), steps);
+  std::printf(
+      "\nSkeleton editor (octopus split to %d nodes, a leaf dragged in %d steps), median ms per step\n",
+      skeleton.nodeCount(), steps);
   std::printf("%-28s %9s %9s %10s\n", "rebuild", "ms", "goal ms", "ms / tube");
   std::printf("%-28s %9.2f %9.0f %10.2f\n", "base mesh (K = 0)", 1e3 * base, 16.0, base / tube);
   std::printf("%-28s %9.2f %9.0f %10.2f\n", "K = 2 while dragging", 1e3 * drag2, 100.0, drag2 / tube);

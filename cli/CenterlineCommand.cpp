@@ -43,7 +43,8 @@ void writeStages(vtkMedialTskCenterline* filter, const std::string& dir) {
       if (writer->Write() != 1) why = "cannot write the file";
       return why.empty();
     };
-    if (!medial::writeAtomically(dir + "/labels.vti", write, error)) throw Failure(dir + "/labels.vti: " + error);
+    if (!medial::writeAtomically(dir + "/labels.vti", write, error))
+      throw Failure(dir + "/labels.vti: " + error);
   }
   vtkPolyData* model = filter->GetStageData("tsk-model");
   if (!model) return;

@@ -185,7 +185,8 @@ int runRender(const std::vector<std::string>& args) {
   scene->ResetCamera(static_cast<double>(width) / height, camera[0], camera[1]);
   auto renderErrors = medial::ErrorCollector::Watch(scene);
   if (!scene->RenderToImage(output.c_str(), width, height)) throw Failure(renderErrors->Joined());
-  if (!ghost.importanceMap.empty()) writeImportanceMap(scene->GetGhostPass()->GetImportanceMap(), ghost.importanceMap);
+  if (!ghost.importanceMap.empty())
+    writeImportanceMap(scene->GetGhostPass()->GetImportanceMap(), ghost.importanceMap);
   progress.finish();
   timings.stop();
   if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());

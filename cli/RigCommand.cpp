@@ -22,13 +22,15 @@ namespace medial::cli {
 
 int runRig(const std::vector<std::string>& args) {
   const ParsedArgs parsed = parseArgs(
-      args, {{"-o", "--output", "--weights", "--root", "--heat", "--max-influences"}, {"--quiet", "--timings"}});
+      args,
+      {{"-o", "--output", "--weights", "--root", "--heat", "--max-influences"}, {"--quiet", "--timings"}});
   if (parsed.positional.size() != 2) throw UsageError("rig needs a SKELETON file and a MESH file");
   const std::string skeletonFile = parsed.positional[0], meshFile = parsed.positional[1];
   const std::string output = parsed.value("-o", parsed.value("--output"));
   if (output.empty()) throw UsageError("rig needs -o RIG.glb|RIG.fbx");
   if (!vtkMedialRigWriter::CanWriteFile(output.c_str()))
-    throw UsageError(std::string("-o must end in one of ") + vtkMedialRigWriter::GetExtensions() + ": " + output);
+    throw UsageError(std::string("-o must end in one of ") + vtkMedialRigWriter::GetExtensions() + ": " +
+                     output);
   const std::string weights = parsed.value("--weights");
   if (parsed.has("--weights")) requireWritableExtension(weights, "--weights");
 
@@ -43,7 +45,8 @@ int runRig(const std::vector<std::string>& args) {
   timings.start("read");
   const vtkSmartPointer<vtkDataObject> skeletonData = readInput(skeletonFile, progress);
   vtkPolyData* skeleton = vtkPolyData::SafeDownCast(skeletonData);
-  if (!skeleton || skeleton->GetNumberOfLines() == 0) throw Failure(skeletonFile + ": not a skeleton (no edges)");
+  if (!skeleton || skeleton->GetNumberOfLines() == 0)
+    throw Failure(skeletonFile + ": not a skeleton (no edges)");
   const vtkSmartPointer<vtkDataObject> meshData = readInput(meshFile, progress);
   vtkPolyData* mesh = vtkPolyData::SafeDownCast(meshData);
   if (!mesh || mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
@@ -53,7 +56,8 @@ int runRig(const std::vector<std::string>& args) {
   binding->SetSkeletonData(skeleton);
   runFilter(binding, mesh, meshFile + " with " + skeletonFile, "skinning weights of " + meshFile, progress);
   if (binding->GetNodesOutside() > 0)
-    std::fprintf(stderr, "medial rig: note: %d skeleton node%s outside the mesh (weighted by diffusion alone)\n",
+    std::fprintf(stderr,
+                 "medial rig: note: %d skeleton node%s outside the mesh (weighted by diffusion alone)\n",
                  binding->GetNodesOutside(), binding->GetNodesOutside() == 1 ? " lies" : "s lie");
 
   timings.start("write");

@@ -39,7 +39,8 @@ vtkSmartPointer<vtkPolyData> contractedMesh(vtkPolyData* segmentation) {
 // the weights of Fig. 7), contraction.pvd (the steps as a time series that ParaView plays), and the curve
 // skeleton after the surgery and before the selection.
 void writeStages(vtkMedialContractionSkeleton* filter, const std::string& dir) {
-  std::string collection = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  std::string collection =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
   for (int step = 0; step < filter->GetNumberOfContractionSteps(); ++step) {
     char name[32];
     std::snprintf(name, sizeof name, "contraction_%03d.vtp", step);
@@ -55,12 +56,28 @@ void writeStages(vtkMedialContractionSkeleton* filter, const std::string& dir) {
 }  // namespace
 
 int runSkeleton(const std::vector<std::string>& args) {
-  const ParsedArgs parsed =
-      parseArgs(args, {{"-o", "--output", "--segmentation", "--nodes", "--rig", "--solver", "--iterations",
-                        "--contraction-vertices", "--reference-vertices", "--wl0", "--sl", "--wh0", "--max-wl",
-                        "--max-wh", "--shape-weight", "--sampling-weight", "--collapse-length", "--heat",
-                        "--contracted", "--contraction-steps"},
-                       {"--no-refine", "--no-cycle-repair", "--no-centring", "--weights", "--quiet", "--timings"}});
+  const ParsedArgs parsed = parseArgs(
+      args, {{"-o",
+              "--output",
+              "--segmentation",
+              "--nodes",
+              "--rig",
+              "--solver",
+              "--iterations",
+              "--contraction-vertices",
+              "--reference-vertices",
+              "--wl0",
+              "--sl",
+              "--wh0",
+              "--max-wl",
+              "--max-wh",
+              "--shape-weight",
+              "--sampling-weight",
+              "--collapse-length",
+              "--heat",
+              "--contracted",
+              "--contraction-steps"},
+             {"--no-refine", "--no-cycle-repair", "--no-centring", "--weights", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("skeleton needs exactly one MESH file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));

@@ -1,5 +1,6 @@
 // `medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp] [--simplify ES] [--merge EM] [--prune ET]
-//                [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U] [--thickness C] [--separate-parts] [--stages DIR]`
+//                [--collapse EC] [--part K:ES,EM,ET,EC]... [--unit U] [--thickness C] [--separate-parts]
+//                [--stages DIR]`
 #include "Commands.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
@@ -19,10 +20,10 @@
 
 namespace medial::cli {
 int runSketch(const std::vector<std::string>& args) {
-  const ParsedArgs parsed = parseArgs(args, {{"-o", "--output", "--mesh", "--simplify", "--merge", "--prune",
-                                              "--collapse", "--part", "--unit", "--thickness", "--resample",
-                                              "--stages"},
-                                             {"--separate-parts", "--quiet", "--timings"}});
+  const ParsedArgs parsed =
+      parseArgs(args, {{"-o", "--output", "--mesh", "--simplify", "--merge", "--prune", "--collapse",
+                        "--part", "--unit", "--thickness", "--resample", "--stages"},
+                       {"--separate-parts", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sketch needs exactly one POLYGON file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));

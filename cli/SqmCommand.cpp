@@ -41,25 +41,27 @@ void noteOverlaps(vtkMedialSQM* filter) {
   const int nodes = filter->GetOverlappingNodePairs(), faces = filter->GetOverlappingFacePairs();
   if (faces == 0) return;
   if (filter->GetUnion())
-    std::fprintf(stderr,
-                 "medial sqm: note: tubes overlapped at %d pair%s of nodes (%d pairs of faces cutting each other); "
-                 "the union cut %d polygons along the intersection curves and removed %d inside it\n",
-                 nodes, nodes == 1 ? "" : "s", faces, filter->GetUnionCutPolygons(),
-                 filter->GetUnionRemovedPolygons());
+    std::fprintf(
+        stderr,
+        "medial sqm: note: tubes overlapped at %d pair%s of nodes (%d pairs of faces cutting each other); "
+        "the union cut %d polygons along the intersection curves and removed %d inside it\n",
+        nodes, nodes == 1 ? "" : "s", faces, filter->GetUnionCutPolygons(),
+        filter->GetUnionRemovedPolygons());
   else
-    std::fprintf(stderr,
-                 "medial sqm: note: tubes overlap at %d pair%s of nodes (%d pairs of faces cut each other): the "
-                 "mesh bounds no volume; --union makes it one closed surface without self-intersections\n",
-                 nodes, nodes == 1 ? "" : "s", faces);
+    std::fprintf(
+        stderr,
+        "medial sqm: note: tubes overlap at %d pair%s of nodes (%d pairs of faces cut each other): the "
+        "mesh bounds no volume; --union makes it one closed surface without self-intersections\n",
+        nodes, nodes == 1 ? "" : "s", faces);
 }
 
 }  // namespace
 
 int runSqm(const std::vector<std::string>& args) {
-  const ParsedArgs parsed = parseArgs(
-      args,
-      {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices", "--subdivide", "--sharp-scale", "--stages"},
-       {"--capsule", "--triangle-fans", "--no-fold-repair", "--no-merge", "--union", "--quiet", "--timings"}});
+  const ParsedArgs parsed = parseArgs(args, {{"-o", "--output", "--smoothing", "--pairing", "--ring-vertices",
+                                              "--subdivide", "--sharp-scale", "--stages"},
+                                             {"--capsule", "--triangle-fans", "--no-fold-repair",
+                                              "--no-merge", "--union", "--quiet", "--timings"}});
   if (parsed.positional.size() != 1) throw UsageError("sqm needs exactly one SKELETON file");
   const std::string input = parsed.positional[0];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -104,9 +106,10 @@ int runSqm(const std::vector<std::string>& args) {
                  "medial sqm: note: %d node%s inside a neighbouring branch node's sphere merged into it\n",
                  filter->GetMergedNodes(), filter->GetMergedNodes() == 1 ? "" : "s");
   if (filter->GetFoldRepairedVertices() > 0)
-    std::fprintf(stderr,
-                 "medial sqm: note: %d refined vert%s moved off the swept spheres, where faces cut each other\n",
-                 filter->GetFoldRepairedVertices(), filter->GetFoldRepairedVertices() == 1 ? "ex" : "ices");
+    std::fprintf(
+        stderr,
+        "medial sqm: note: %d refined vert%s moved off the swept spheres, where faces cut each other\n",
+        filter->GetFoldRepairedVertices(), filter->GetFoldRepairedVertices() == 1 ? "ex" : "ices");
 
   noteOverlaps(filter);
 

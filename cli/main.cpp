@@ -133,10 +133,12 @@ const std::vector<Command>& commands() {
            "  --no-centring             keep the refined nodes where they are (by default a node of one or\n"
            "                            two edges moves to the centroid of the mesh's cross-section through\n"
            "                            it)\n"
-           "  --contraction-steps DIR   the paper's intermediate results in DIR: contraction_NNN.vtp, the mesh\n"
+           "  --contraction-steps DIR   the paper's intermediate results in DIR: contraction_NNN.vtp, the "
+           "mesh\n"
            "                            after each iteration (Fig. 5) with point data Laplacian (|L V|) and\n"
            "                            AttractionWeight (W_H), field ContractionWeight (W_L) (Fig. 7);\n"
-           "                            contraction.pvd (the steps as a time series for ParaView); the curve\n"
+           "                            contraction.pvd (the steps as a time series for ParaView); the "
+           "curve\n"
            "                            skeleton after the surgery and before the selection\n"
            "  --rig RIG.glb|RIG.fbx     the skinned mesh and its bones (one per skeleton edge) as glTF 2.0 "
            "or FBX\n"
@@ -191,8 +193,10 @@ const std::vector<Command>& commands() {
            "  --section-rays N          angles per section (default " +
            number(tsk->GetSectionRays()) +
            ")\n"
-           "  --stages DIR              the paper's intermediate results in DIR: voxels.vtp (the structure's\n"
-           "                            voxels with Layer, Cluster and the order T: Figs. 3, 7-8), labels.vti\n"
+           "  --stages DIR              the paper's intermediate results in DIR: voxels.vtp (the "
+           "structure's\n"
+           "                            voxels with Layer, Cluster and the order T: Figs. 3, 7-8), "
+           "labels.vti\n"
            "                            (the same as label volumes),\n"
            "                            primitive.vtp (the primitive centerline, Figs. 4-6), tsk-model.vtp\n"
            "                            (the curve before centring) and tsk-fits.csv (x, y, z over t, Figs.\n"
@@ -243,8 +247,10 @@ const std::vector<Command>& commands() {
            "  --quiet                   no progress line\n"
            "  --timings                 print stage times (straightening, generation, refinement, joining,\n"
            "                            skinning, subdivision, repairs, union) and the paper's Table 1\n"
-           "                            counts (branch, connection, leaf and merged nodes, quads, triangles,\n"
-           "                            irregular vertices; overlapping face and node pairs) as JSON on stdout\n",
+           "                            counts (branch, connection, leaf and merged nodes, quads, "
+           "triangles,\n"
+           "                            irregular vertices; overlapping face and node pairs) as JSON on "
+           "stdout\n",
        runSqm},
       {"sketch", "animatable skeleton and inflated mesh of closed 2-D strokes",
        "usage: medial sketch POLYGON.txt -o SKELETON.vtp [--mesh MESH.vtp] [--simplify ES] [--merge EM]\n"
@@ -261,7 +267,8 @@ const std::vector<Command>& commands() {
        "--unit).\n"
        "  -o, --output SKELETON     the skeleton (.vtp: Radius, NodeType, Root, Part, Branch; .vtk .obj "
        ".ply)\n"
-       "  --mesh MESH               the inflated strokes joined into one watertight triangle mesh (the union\n"
+       "  --mesh MESH               the inflated strokes joined into one watertight triangle mesh (the "
+       "union\n"
        "                            of their volumes), point data Part\n"
        "  --separate-parts          with --mesh: one closed mesh per stroke, left overlapping\n"
        "  --simplify ES             branch simplification threshold epsilon_s (default " +
@@ -284,7 +291,8 @@ const std::vector<Command>& commands() {
            "  --thickness C             inflation thickness (default " +
            number(sketch->GetThickness()) +
            ": round tubes)\n"
-           "  --stages DIR              the skeleton after each step in DIR: straight-skeleton.vtp, bounded-dp.vtp,\n"
+           "  --stages DIR              the skeleton after each step in DIR: straight-skeleton.vtp, "
+           "bounded-dp.vtp,\n"
            "                            connected.vtp, pruned.vtp, merged.vtp (with Part and Branch)\n"
            "  --quiet                   no progress line\n"
            "  --timings                 print stage times as JSON on stdout\n",

@@ -121,7 +121,8 @@ bool turnPart(vtkPolyData* sketch, int part, double degrees) {
 bool scalePart(vtkPolyData* sketch, int part, double factor) {
   if (!hasPart(sketch, part) || !(factor > 0)) return false;
   const auto c = partCentroid(sketch, part);
-  setPlacement(sketch, part, about({c[0], c[1], c[2]}, factor * Eigen::Matrix3d::Identity()) * placementOf(sketch, part));
+  setPlacement(sketch, part,
+               about({c[0], c[1], c[2]}, factor * Eigen::Matrix3d::Identity()) * placementOf(sketch, part));
   return true;
 }
 
@@ -135,11 +136,13 @@ int mirrorPart(vtkPolyData* sketch, int part, int planePart) {
   const auto ids = strokeIds(sketch, part);
   vtkPoints* points = sketch->GetPoints();
   auto copy = vtkSmartPointer<vtkIdList>::New();
-  for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) copy->InsertNextId(points->InsertNextPoint(points->GetPoint(ids->GetId(k))));
+  for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    copy->InsertNextId(points->InsertNextPoint(points->GetPoint(ids->GetId(k))));
   sketch->GetLines()->InsertNextCell(copy);
   vtkCellData* cellData = sketch->GetCellData();
   for (int a = 0; a < cellData->GetNumberOfArrays(); ++a)  // other cell data: the part's values again
-    if (vtkDataArray* array = cellData->GetArray(a); array && std::string(array->GetName() ? array->GetName() : "") != "Placement")
+    if (vtkDataArray* array = cellData->GetArray(a);
+        array && std::string(array->GetName() ? array->GetName() : "") != "Placement")
       array->InsertNextTuple(part, array);
   cellData->GetArray("Placement")->InsertNextTuple(mirrored.data());
   points->Modified();

@@ -29,7 +29,7 @@
 namespace medial {
 struct SkeletonByContractionParameters;
 struct SkeletonByContractionResult;
-}
+}  // namespace medial
 
 class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgorithm {
  public:

@@ -241,7 +241,8 @@ void vtkMedialGhostPass::Render(const vtkRenderState* s) {
   const bool plain = this->Mode == Off || interestCount == 0 || width <= 0 || height <= 0 || !window ||
                      renderer->GetSelector() != nullptr;
   if (plain) {
-    if (this->KeepImportanceMap && renderer->GetSelector() == nullptr) this->KeptMap = nullptr;  // none this frame
+    if (this->KeepImportanceMap && renderer->GetSelector() == nullptr)
+      this->KeptMap = nullptr;  // none this frame
     delegate->Render(s);
     this->NumberOfRenderedProps = delegate->GetNumberOfRenderedProps();
     return;
@@ -504,7 +505,8 @@ void vtkMedialGhostPass::CopyImportanceMap() {
   values->SetNumberOfTuples(vtkIdType(width) * height);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      const bool drawn = x >= scissor[0] && x < scissor[0] + scissor[2] && y >= scissor[1] && y < scissor[1] + scissor[3];
+      const bool drawn =
+          x >= scissor[0] && x < scissor[0] + scissor[2] && y >= scissor[1] && y < scissor[1] + scissor[3];
       const float* t = &texels[(size_t(y) * size_t(width) + size_t(x)) * 4];
       for (int c = 0; c < 3; ++c) values->SetTypedComponent(vtkIdType(y) * width + x, c, drawn ? t[c] : 0.0f);
     }

@@ -62,7 +62,8 @@ int vtkMedialMeshTopology::RequestData(vtkInformation*, vtkInformationVector** i
   this->NumberOfIntersectingFacePairs = -1;
   if (this->CountSelfIntersections) {
     this->UpdateProgress(0.4);
-    this->NumberOfIntersectingFacePairs = vtkIdType(medial::selfIntersectingFaces(medial::pointsOf(input), faces).size());
+    this->NumberOfIntersectingFacePairs =
+        vtkIdType(medial::selfIntersectingFaces(medial::pointsOf(input), faces).size());
   }
 
   output->ShallowCopy(input);
@@ -76,7 +77,8 @@ int vtkMedialMeshTopology::RequestData(vtkInformation*, vtkInformationVector** i
   addCount(fieldData, "BorderEdges", t.borderEdges);
   addCount(fieldData, "NonManifoldEdges", t.nonManifoldEdges);
   addCount(fieldData, "BoundaryLoops", t.boundaryLoops);
-  if (this->CountSelfIntersections) addCount(fieldData, "IntersectingFacePairs", this->NumberOfIntersectingFacePairs);
+  if (this->CountSelfIntersections)
+    addCount(fieldData, "IntersectingFacePairs", this->NumberOfIntersectingFacePairs);
   this->UpdateProgress(1.0);
   return 1;
 }

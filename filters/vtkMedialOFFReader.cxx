@@ -156,7 +156,8 @@ std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineN
   size_t index = 0;
   for (std::string line; std::getline(in, line); ++index) {
     std::istringstream words(line);
-    std::vector<std::string> tokens{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+    std::vector<std::string> tokens{std::istream_iterator<std::string>(words),
+                                    std::istream_iterator<std::string>()};
     if (tokens.empty()) continue;  // fuzz_off under UBSan: a line of \v indexed an empty list
     lines.push_back(std::move(tokens));
     numbers.push_back(lineNumbers[index]);
@@ -201,11 +202,13 @@ std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineN
     const size_t l = first + size_t(vertices + f);
     long long corners = 0;
     if (!whole(lines[l][0], corners) || corners < 1 || size_t(corners) >= lines[l].size())
-      return at(l) + "face " + std::to_string(f) + " does not list the " + lines[l][0] + " corners it announces";
+      return at(l) + "face " + std::to_string(f) + " does not list the " + lines[l][0] +
+             " corners it announces";
     for (size_t k = 1; k <= size_t(corners); ++k) {
       long long index = 0;
       if (!whole(lines[l][k], index) || index < 0 || index >= vertices)
-        return at(l) + "face " + std::to_string(f) + " refers to vertex " + lines[l][k] + ", which does not exist";
+        return at(l) + "face " + std::to_string(f) + " refers to vertex " + lines[l][k] +
+               ", which does not exist";
     }
   }
   // What OpenMesh reads: the key word alone, the counts alone, then exactly the lines they announce, a

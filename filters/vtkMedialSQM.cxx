@@ -53,7 +53,8 @@ vtkMedialSQM::vtkMedialSQM() {
 }
 
 std::vector<std::string> vtkMedialSQM::GetStageNames() {
-  return {"straightening", "generation", "refinement", "joining", "skinning", "subdivision", "repairs", "union"};
+  return {"straightening", "generation",  "refinement", "joining",
+          "skinning",      "subdivision", "repairs",    "union"};
 }
 
 double vtkMedialSQM::GetStageSeconds(const std::string& stage) const {
@@ -121,7 +122,8 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   this->MergedNodes = this->FoldRepairedVertices = 0;
   this->BranchNodes = this->ConnectionNodes = this->LeafNodes = this->IrregularVertices = 0;
   this->Quads = this->Triangles = 0;
-  this->OverlappingFacePairs = this->OverlappingNodePairs = this->UnionCutPolygons = this->UnionRemovedPolygons = 0;
+  this->OverlappingFacePairs = this->OverlappingNodePairs = this->UnionCutPolygons =
+      this->UnionRemovedPolygons = 0;
   this->Seconds.assign(GetStageNames().size(), 0.0);
   this->Stages.clear();
   const medial::SqmResult result = medial::sqmMesh(skeleton, this->MakeParameters(), [this](double f) {
@@ -156,7 +158,8 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   if (this->RecordStages) {
     const medial::SqmMesh* stages[] = {&result.polyhedra, &result.refinedPolyhedra, &result.baseMesh};
     for (size_t k = 0; k < GetStageMeshNames().size(); ++k) {
-      vtkSmartPointer<vtkPolyData> stage = medial::polyDataFromPolygons(stages[k]->vertices, stages[k]->faces);
+      vtkSmartPointer<vtkPolyData> stage =
+          medial::polyDataFromPolygons(stages[k]->vertices, stages[k]->faces);
       stage->GetPointData()->AddArray(medial::intArray("SkeletonNode", stages[k]->vertexNode));
       this->Stages[GetStageMeshNames()[k]] = stage;
     }

@@ -29,7 +29,9 @@ void vtkMedialSkinBinding::PrintSelf(ostream& os, vtkIndent indent) {
 
 void vtkMedialSkinBinding::SetSkeletonData(vtkPolyData* skeleton) { this->SetInputData(1, skeleton); }
 
-void vtkMedialSkinBinding::SetSkeletonConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+void vtkMedialSkinBinding::SetSkeletonConnection(vtkAlgorithmOutput* output) {
+  this->SetInputConnection(1, output);
+}
 
 int vtkMedialSkinBinding::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
@@ -91,7 +93,8 @@ int vtkMedialSkinBinding::RequestData(vtkInformation*, vtkInformationVector** in
   meshOutput->ShallowCopy(input);
   meshOutput->GetPointData()->AddArray(medial::doubleArray("SkinWeights", result.weights));
   std::vector<int> strongest(size_t(result.weights.rows()));
-  for (Eigen::Index v = 0; v < result.weights.rows(); ++v) result.weights.row(v).maxCoeff(&strongest[size_t(v)]);
+  for (Eigen::Index v = 0; v < result.weights.rows(); ++v)
+    result.weights.row(v).maxCoeff(&strongest[size_t(v)]);
   meshOutput->GetPointData()->AddArray(medial::intArray("Bone", strongest));
   skeleton.root = result.root;
   skeletonOutput->ShallowCopy(medial::polyDataFromSkeleton(skeleton));

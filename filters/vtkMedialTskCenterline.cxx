@@ -285,13 +285,17 @@ vtkSmartPointer<vtkPolyData> pointSet(const std::vector<Eigen::Vector3d>& at, bo
   if (line) cells->InsertNextCell(vtkIdType(at.size()));
   for (const Eigen::Vector3d& p : at) {
     const vtkIdType id = points->InsertNextPoint(p.data());
-    if (line) cells->InsertCellPoint(id);
-    else cells->InsertNextCell(1, &id);
+    if (line)
+      cells->InsertCellPoint(id);
+    else
+      cells->InsertNextCell(1, &id);
   }
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
-  if (line) data->SetLines(cells);
-  else data->SetVerts(cells);
+  if (line)
+    data->SetLines(cells);
+  else
+    data->SetVerts(cells);
   return data;
 }
 
@@ -307,9 +311,9 @@ void vtkMedialTskCenterline::KeepStages(const medial::TskStages& stages) {
   this->Stages["voxels"] = voxels;
   vtkSmartPointer<vtkPolyData> primitive = pointSet(stages.primitive, true);
   primitive->GetPointData()->AddArray(medial::intArray("Layer", stages.primitiveLayer));
-  primitive->GetPointData()->AddArray(
-      medial::doubleArray("BorderDistance", std::vector<double>(stages.primitiveBorderDistance.begin(),
-                                                                stages.primitiveBorderDistance.end())));
+  primitive->GetPointData()->AddArray(medial::doubleArray(
+      "BorderDistance",
+      std::vector<double>(stages.primitiveBorderDistance.begin(), stages.primitiveBorderDistance.end())));
   this->Stages["primitive"] = primitive;
   vtkSmartPointer<vtkPolyData> model = pointSet(stages.model.point, true);
   model->GetPointData()->AddArray(medial::doubleArray("T", stages.model.t));

@@ -34,7 +34,7 @@
 namespace medial {
 struct TskCenterlineParameters;
 struct TskStages;
-}
+}  // namespace medial
 
 class vtkImageData;
 

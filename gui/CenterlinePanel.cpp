@@ -93,8 +93,9 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
   seedRow->addWidget(seedLabel_, 1);
   seedRow->addWidget(clear);
   extraLayout()->addLayout(seedRow);
-  enableSteps("Keep the structure's voxels (Manhattan layers, clusters), the primitive centerline and the "
-              "TSK curve before centring (the paper's Figs. 3-10)");
+  enableSteps(
+      "Keep the structure's voxels (Manhattan layers, clusters), the primitive centerline and the "
+      "TSK curve before centring (the paper's Figs. 3-10)");
   clearSeed();
 
   minDiameter_ = new QLineSeries;

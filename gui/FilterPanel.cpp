@@ -202,7 +202,8 @@ bool FilterPanel::showStep(int index) {
   SceneObject* shown = objects_->add(name, data, QString(), kComputedRadiusScale);
   // A stage labelled per point (SQM's polyhedra by node, the TSK voxels by cluster) in a colour per label.
   for (const char* label : {"SkeletonNode", "Cluster"})
-    if (vtkDataArray* ids = data->GetPointData()->GetArray(label); ids && shown && data->GetNumberOfPolys() + data->GetNumberOfVerts() > 0) {
+    if (vtkDataArray* ids = data->GetPointData()->GetArray(label);
+        ids && shown && data->GetNumberOfPolys() + data->GetNumberOfVerts() > 0) {
       colourByLabel(vtkActor::SafeDownCast(shown->prop), label, int(ids->GetRange()[1]) + 1);
       break;
     }

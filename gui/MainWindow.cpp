@@ -205,8 +205,9 @@ void MainWindow::buildPanels() {
   auto* editorScroll = new QScrollArea(this);
   editorScroll->setWidget(editor_);
   editorScroll->setWidgetResizable(true);
-  tabs_->setTabToolTip(tabs_->addTab(editorScroll, "Edit"),
-                       "Skeleton editor with a live SQM mesh (SQM paper §6): drag nodes, add branches, radii");
+  tabs_->setTabToolTip(
+      tabs_->addTab(editorScroll, "Edit"),
+      "Skeleton editor with a live SQM mesh (SQM paper §6): drag nodes, add branches, radii");
   connect(editor_, &SkeletonEditor::sceneChanged, this, &MainWindow::render);
   connect(editor_, &SkeletonEditor::message, this, &MainWindow::log);
   connect(editor_, &SkeletonEditor::failed, this, &MainWindow::reportError);
@@ -286,8 +287,9 @@ void MainWindow::buildGhostToolBar() {
   QAction* map = bar->addAction("Map");
   map->setObjectName("importanceMap");
   map->setCheckable(true);
-  map->setToolTip("Show the importance map over the view (the paper's Figs. 2, 4, 6): where the objects of "
-                  "interest project, brighter for the more important");
+  map->setToolTip(
+      "Show the importance map over the view (the paper's Figs. 2, 4, 6): where the objects of "
+      "interest project, brighter for the more important");
   connect(map, &QAction::toggled, this, &MainWindow::setImportanceMapShown);
   QAction* layers = bar->addAction("Layers");
   layers->setObjectName("ghostLayers");
@@ -448,7 +450,8 @@ void MainWindow::addRigSkeleton(const QString& path, const QString& title) {
   reader->RigSkeletonOn();
   reader->Update();
   if (errors->HasErrors()) return;
-  if (objects_->add(title + " skeleton", reader->GetOutputDataObject(0), path)) log("Opened the rig's skeleton");
+  if (objects_->add(title + " skeleton", reader->GetOutputDataObject(0), path))
+    log("Opened the rig's skeleton");
 }
 
 void MainWindow::onObjectsChanged() {
@@ -586,7 +589,8 @@ void MainWindow::onStrokeDrawn(const QVector<QPointF>& positions) {
   QVector<QPointF> stroke;
   for (const QPointF& position : positions) {
     Eigen::Vector3d p;
-    if (!viewPlanePoint(scene_->GetRenderer(), view_, position, Eigen::Vector3d(o), Eigen::Vector3d(n), p)) continue;
+    if (!viewPlanePoint(scene_->GetRenderer(), view_, position, Eigen::Vector3d(o), Eigen::Vector3d(n), p))
+      continue;
     const double d[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
     stroke.append(QPointF(vtkMath::Dot(d, u), vtkMath::Dot(d, v)));
   }

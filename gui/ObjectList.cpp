@@ -88,7 +88,8 @@ ObjectList::ObjectList(vtkMedialScene* scene, QWidget* parent) : QWidget(parent)
     importance_->setEnabled(object && object->kind != SceneObject::Kind::Volume);
     if (object) {
       const QSignalBlocker block(importance_);
-      importance_->setValue(static_cast<int>(std::lround(10 * vtkMedialGhostPass::GetImportance(object->prop))));
+      importance_->setValue(
+          static_cast<int>(std::lround(10 * vtkMedialGhostPass::GetImportance(object->prop))));
     }
     emit currentChanged(object);
   });
@@ -256,7 +257,9 @@ void ObjectList::setVisible(SceneObject* object, bool visible) {
   emit sceneChanged();
 }
 
-void ObjectList::setInterest(SceneObject* object, bool interest) { setImportance(object, interest ? 1.0 : 0.0); }
+void ObjectList::setInterest(SceneObject* object, bool interest) {
+  setImportance(object, interest ? 1.0 : 0.0);
+}
 
 void ObjectList::setImportance(SceneObject* object, double importance) {
   if (object->kind == SceneObject::Kind::Volume) return;  // the ghost pass cannot use an assembly
@@ -344,8 +347,8 @@ bool ObjectList::bindMesh(SceneObject* skeleton, SceneObject* mesh) {
   binding->Update();
   QApplication::restoreOverrideCursor();
   if (errors->HasErrors()) {
-    fail("Cannot bind " + mesh->name, mesh->name + " to " + skeleton->name + ": " +
-                                          QString::fromStdString(errors->Joined()));
+    fail("Cannot bind " + mesh->name,
+         mesh->name + " to " + skeleton->name + ": " + QString::fromStdString(errors->Joined()));
     return false;
   }
   skeleton->skinnedMesh = binding->GetOutput(0);
@@ -401,11 +404,13 @@ void ObjectList::rigDialog() {
     // Any skeleton: bind it to a mesh of the scene first (the only one, or the one the user picks).
     QStringList meshes;
     for (SceneObject* mesh : ofKind(SceneObject::Kind::Mesh)) meshes << mesh->name;
-    if (meshes.isEmpty()) return fail("Cannot export rig", "Open or compute a mesh to bind " + object->name + " to");
+    if (meshes.isEmpty())
+      return fail("Cannot export rig", "Open or compute a mesh to bind " + object->name + " to");
     bool chosen = true;
-    const QString name = meshes.size() == 1 ? meshes.front()
-                                            : QInputDialog::getItem(this, "Export rig", "Mesh to bind to " + object->name,
-                                                                    meshes, 0, false, &chosen);
+    const QString name = meshes.size() == 1
+                             ? meshes.front()
+                             : QInputDialog::getItem(this, "Export rig", "Mesh to bind to " + object->name,
+                                                     meshes, 0, false, &chosen);
     if (!chosen || !bindMesh(object, findByName(name))) return;
   }
   const QString path =

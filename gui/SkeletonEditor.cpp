@@ -43,15 +43,20 @@ namespace medial::gui {
 
 namespace {
 
-constexpr double kPickPixels = 12;       // a node or an edge this near the pointer is under it
-constexpr double kWheelFactor = 1.1;     // radius change per wheel notch
-constexpr int kRadiusStep = 1;           // QUndoCommand id: consecutive radius notches of a node merge
+constexpr double kPickPixels = 12;    // a node or an edge this near the pointer is under it
+constexpr double kWheelFactor = 1.1;  // radius change per wheel notch
+constexpr int kRadiusStep = 1;        // QUndoCommand id: consecutive radius notches of a node merge
 
 // One edit: the skeleton before and after it. Snapshots keep undo exact whatever the edit did to the ids.
 class EditStep : public QUndoCommand {
  public:
-  EditStep(SkeletonEditor* editor, Skeleton before, Skeleton after, const QString& what, int node, bool radius)
-      : QUndoCommand(what), editor_(editor), before_(std::move(before)), after_(std::move(after)), node_(node),
+  EditStep(SkeletonEditor* editor, Skeleton before, Skeleton after, const QString& what, int node,
+           bool radius)
+      : QUndoCommand(what),
+        editor_(editor),
+        before_(std::move(before)),
+        after_(std::move(after)),
+        node_(node),
         radius_(radius) {}
   void undo() override { editor_->setSkeleton(before_); }
   void redo() override { editor_->setSkeleton(after_); }
@@ -71,7 +76,8 @@ class EditStep : public QUndoCommand {
 };
 
 // Points, lines and a drawn radius (scale x Radius) of `nodes` of the skeleton.
-void fillShown(vtkPolyData* shown, const Skeleton& s, const std::vector<int>& nodes, double scale, bool lines) {
+void fillShown(vtkPolyData* shown, const Skeleton& s, const std::vector<int>& nodes, double scale,
+               bool lines) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   auto radius = vtkSmartPointer<vtkDoubleArray>::New();
@@ -261,10 +267,14 @@ void SkeletonEditor::showSelection() {
   if (selected_ >= 0) nodes.push_back(selected_);
   fillShown(selectionShown_, skeleton_, nodes, kComputedRadiusScale * 1.5, false);
   selectionShown_->Modified();
-  QString text = QString("%1 nodes, %2 edges; mesh %3 ms").arg(skeleton_.nodeCount()).arg(skeleton_.edgeCount())
+  QString text = QString("%1 nodes, %2 edges; mesh %3 ms")
+                     .arg(skeleton_.nodeCount())
+                     .arg(skeleton_.edgeCount())
                      .arg(meshMilliseconds_, 0, 'f', 1);
   if (selected_ >= 0)
-    text += QString("; node %1, radius %2").arg(selected_).arg(skeleton_.radii.empty() ? 0.0 : skeleton_.radii[size_t(selected_)], 0, 'g', 4);
+    text += QString("; node %1, radius %2")
+                .arg(selected_)
+                .arg(skeleton_.radii.empty() ? 0.0 : skeleton_.radii[size_t(selected_)], 0, 'g', 4);
   status_->setText(text);
 }
 
@@ -320,9 +330,11 @@ bool SkeletonEditor::mousePress(QMouseEvent* event) {
     const EdgeNearRay hit = nearestEdgeToRay(skeleton_, nearPoint, farPoint - nearPoint);
     if (hit.edge < 0) return false;
     const auto [a, b] = skeleton_.edges[size_t(hit.edge)];
-    const Eigen::Vector3d onEdge = (1 - hit.t) * skeleton_.nodes[size_t(a)] + hit.t * skeleton_.nodes[size_t(b)];
+    const Eigen::Vector3d onEdge =
+        (1 - hit.t) * skeleton_.nodes[size_t(a)] + hit.t * skeleton_.nodes[size_t(b)];
     const QPointF shown = widgetPosition(scene_->GetRenderer(), view_, onEdge);
-    if (std::hypot(shown.x() - event->position().x(), shown.y() - event->position().y()) > kPickPixels) return false;
+    if (std::hypot(shown.x() - event->position().x(), shown.y() - event->position().y()) > kPickPixels)
+      return false;
     const Skeleton before = skeleton_;
     selected_ = splitEdge(skeleton_, hit.edge, hit.t);
     commit(before, "Add node");
@@ -348,7 +360,8 @@ bool SkeletonEditor::mouseMove(QMouseEvent* event) {
   double direction[3];
   scene_->GetRenderer()->GetActiveCamera()->GetDirectionOfProjection(direction);
   Eigen::Vector3d point;
-  if (viewPlanePoint(scene_->GetRenderer(), view_, event->position(), dragOrigin_, Eigen::Vector3d(direction), point)) {
+  if (viewPlanePoint(scene_->GetRenderer(), view_, event->position(), dragOrigin_, Eigen::Vector3d(direction),
+                     point)) {
     moveNode(skeleton_, dragged_, point);
     rebuild(false);
   }

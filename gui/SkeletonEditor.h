@@ -42,7 +42,7 @@ class SkeletonEditor : public QWidget, public ViewInteraction {
 
   // Starts editing `skeleton` (a skeleton object); false (and a message) when it is not one.
   bool begin(SceneObject* skeleton);
-  // Ends editing: the edited skeleton and its mesh become objects ("<name> edited", "... SQM"). 
+  // Ends editing: the edited skeleton and its mesh become objects ("<name> edited", "... SQM").
   void finish();
   bool editing() const { return editing_; }
 

@@ -92,8 +92,9 @@ SkeletonPanel::SkeletonPanel(ObjectList* objects, QWidget* parent)
   auto* row = new QFormLayout;
   row->addRow("Show weights of bone", bone_);
   extraLayout()->addLayout(row);
-  enableSteps("Keep the contracted mesh after every iteration (the paper's Fig. 5, with |LV| and the "
-              "weights of Fig. 7) and the skeleton after the surgery and before the selection");
+  enableSteps(
+      "Keep the contracted mesh after every iteration (the paper's Fig. 5, with |LV| and the "
+      "weights of Fig. 7) and the skeleton after the surgery and before the selection");
   connect(bone_, &QSpinBox::valueChanged, this, [this](int bone) {
     if (lastSkeleton_) selectBone(lastSkeleton_, bone);
   });

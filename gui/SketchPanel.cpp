@@ -131,13 +131,14 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
   exportButton->setToolTip("Bind the sketch's mesh to its skeleton (heat weights) and write the rig");
   connect(exportButton, &QPushButton::clicked, this, [this] {
     if (!input()) return;
-    const QString path = QFileDialog::getSaveFileName(this, "Export character", input()->name + ".glb",
-                                                      "Rigs (*.glb *.fbx)");
+    const QString path =
+        QFileDialog::getSaveFileName(this, "Export character", input()->name + ".glb", "Rigs (*.glb *.fbx)");
     if (!path.isEmpty()) exportCharacter(path);
   });
   rows->addRow(exportButton);
   extraLayout()->addLayout(rows);
-  enableSteps("Keep the skeleton after each step: straight skeleton, BoundedDP, connection, pruning, merging");
+  enableSteps(
+      "Keep the skeleton after each step: straight skeleton, BoundedDP, connection, pruning, merging");
   connect(form(), &ParameterForm::valueChanged, this, &SketchPanel::parameterChanged);
   connect(draw_, &QCheckBox::toggled, this, &SketchPanel::drawingToggled);
 }
@@ -265,7 +266,8 @@ bool SketchPanel::turnPart(int part, double steps) {
 }
 
 bool SketchPanel::scalePart(int part, double steps) {
-  return editSketch([&](vtkPolyData* sketch) { return medial::scalePart(sketch, part, std::pow(1.1, steps)); });
+  return editSketch(
+      [&](vtkPolyData* sketch) { return medial::scalePart(sketch, part, std::pow(1.1, steps)); });
 }
 
 bool SketchPanel::mirrorPart(int part) {
@@ -303,7 +305,8 @@ FilterPanel::Steps SketchPanel::steps(vtkAlgorithm* filter) {
   auto* sketch = static_cast<vtkMedialSketchSkeleton*>(filter);
   Steps steps;
   for (const std::string& name : vtkMedialSketchSkeleton::GetStageSkeletonNames())
-    if (vtkPolyData* stage = sketch->GetStageSkeleton(name)) steps.emplace_back(QString::fromStdString(name), stage);
+    if (vtkPolyData* stage = sketch->GetStageSkeleton(name))
+      steps.emplace_back(QString::fromStdString(name), stage);
   return steps;
 }
 

@@ -37,16 +37,18 @@ std::vector<Parameter> sqmParameters() {
           "With subdivision: shrink the swept spheres' radius near sharp vertices by a Bézier curve "
           "(CESCG 2014, Tessellation)"),
       MEDIAL_REAL_PARAMETER(f, SharpMinimumScale, "Sharp scale", 2, "Radius factor at a sharp vertex"),
-      MEDIAL_TOGGLE_PARAMETER(f, FoldRepair, "Repair folds",
-                              "With subdivision: where the projection onto the swept spheres makes faces cut each "
-                              "other, move their vertices back towards the base mesh"),
+      MEDIAL_TOGGLE_PARAMETER(
+          f, FoldRepair, "Repair folds",
+          "With subdivision: where the projection onto the swept spheres makes faces cut each "
+          "other, move their vertices back towards the base mesh"),
       MEDIAL_TOGGLE_PARAMETER(f, MergeNodes, "Merge swallowed nodes",
                               "Merge a node lying inside a neighbouring branch node's sphere into it (off: "
                               "such a skeleton is an error naming the node)"),
-      MEDIAL_TOGGLE_PARAMETER(f, Union, "Union of overlapping tubes",
-                              "Where tubes of parts that are not neighbours overlap, make the mesh the boundary of "
-                              "their union: one closed surface without self-intersections, triangles along the "
-                              "intersection curves (overlaps are counted in the log either way)"),
+      MEDIAL_TOGGLE_PARAMETER(
+          f, Union, "Union of overlapping tubes",
+          "Where tubes of parts that are not neighbours overlap, make the mesh the boundary of "
+          "their union: one closed surface without self-intersections, triangles along the "
+          "intersection curves (overlaps are counted in the log either way)"),
   };
 }
 
@@ -62,7 +64,8 @@ SqmPanel::SqmPanel(ObjectList* objects, QWidget* parent)
   subdivision_->setPageStep(1);
   subdivision_->setTickPosition(QSlider::TicksBelow);
   subdivision_->setToolTip(
-      "Tessellation levels, each projected onto the spheres swept along the skeleton (CESCG 2014, Tessellation, Fig. 9)");
+      "Tessellation levels, each projected onto the spheres swept along the skeleton (CESCG 2014, "
+      "Tessellation, Fig. 9)");
   live_ = new QCheckBox("Update live", this);
   live_->setObjectName("live");
   live_->setChecked(true);
@@ -71,8 +74,9 @@ SqmPanel::SqmPanel(ObjectList* objects, QWidget* parent)
   rows->addRow("Subdivision", subdivision_);
   rows->addRow(live_);
   extraLayout()->addLayout(rows);
-  enableSteps("Keep the branch node polyhedra as generated and after the LIE refinement (bind pose), and the "
-              "joined mesh before subdivision, coloured by node");
+  enableSteps(
+      "Keep the branch node polyhedra as generated and after the LIE refinement (bind pose), and the "
+      "joined mesh before subdivision, coloured by node");
   connect(subdivision_, &QSlider::valueChanged, this, &SqmPanel::parameterChanged);
   connect(form(), &ParameterForm::valueChanged, this, &SqmPanel::parameterChanged);
 }
@@ -133,8 +137,9 @@ void SqmPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
                       .arg(overlaps)
                       .arg(sqm->GetUnionCutPolygons());
   else if (overlaps > 0)
-    overlapNote = QString("; tubes overlap at %1 pairs of nodes (%2 pairs of faces cut each other): the mesh "
-                          "bounds no volume, tick \"Union of overlapping tubes\"")
+    overlapNote = QString(
+                      "; tubes overlap at %1 pairs of nodes (%2 pairs of faces cut each other): the mesh "
+                      "bounds no volume, tick \"Union of overlapping tubes\"")
                       .arg(overlaps)
                       .arg(sqm->GetOverlappingFacePairs());
   emit message(

@@ -8,8 +8,8 @@
 
 namespace medial::gui {
 
-bool pointerRay(vtkRenderer* renderer, const QWidget* view, const QPointF& position, Eigen::Vector3d& nearPoint,
-                Eigen::Vector3d& farPoint) {
+bool pointerRay(vtkRenderer* renderer, const QWidget* view, const QPointF& position,
+                Eigen::Vector3d& nearPoint, Eigen::Vector3d& farPoint) {
   const qreal ratio = view->devicePixelRatioF();
   const double x = position.x() * ratio, y = (view->height() - position.y()) * ratio;
   Eigen::Vector3d* ends[2] = {&nearPoint, &farPoint};

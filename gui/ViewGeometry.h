@@ -12,8 +12,8 @@ class vtkRenderer;
 namespace medial::gui {
 
 // The pointer's ray from the near to the far clipping plane; false when the camera cannot invert.
-bool pointerRay(vtkRenderer* renderer, const QWidget* view, const QPointF& position, Eigen::Vector3d& nearPoint,
-                Eigen::Vector3d& farPoint);
+bool pointerRay(vtkRenderer* renderer, const QWidget* view, const QPointF& position,
+                Eigen::Vector3d& nearPoint, Eigen::Vector3d& farPoint);
 
 // Where the pointer's ray meets the plane through `origin` with `normal`; false when it runs along it.
 bool viewPlanePoint(vtkRenderer* renderer, const QWidget* view, const QPointF& position,

@@ -55,9 +55,9 @@ struct TskCenterlineParameters {
   // a longer gap starts another polyline. maxGap 0: the largest part only (the paper's input).
   double maxGap = 40;
   double minimumPartVolume = 1000;
-  bool detectBranches = false;          // one polyline per branch (Branches.h; the largest part only)
-  double minimumBranchLength = 0;       // mm; 0: twice the largest inscribed radius
-  bool computeSections = false;         // sections along the first polyline (TubeSections.h)
+  bool detectBranches = false;     // one polyline per branch (Branches.h; the largest part only)
+  double minimumBranchLength = 0;  // mm; 0: twice the largest inscribed radius
+  bool computeSections = false;    // sections along the first polyline (TubeSections.h)
   SectionParameters sections;
   // The paper's intermediate results (TskCenterlineResult::stages), along one tube (not with branches).
   bool recordStages = false;
@@ -65,10 +65,10 @@ struct TskCenterlineParameters {
 
 // What the paper draws on the way (WSCG 2008 Figs. 3-10), in physical coordinates (mm).
 struct TskStages {
-  std::vector<Eigen::Vector3d> voxels;  // the followed structure's voxel centres, in phase I's total order
-  std::vector<int> layer;               // Manhattan layer from P0 of each (Fig. 3)
-  std::vector<int> cluster;             // cluster (primitive point) of each (Figs. 7-8)
-  std::vector<Eigen::Vector3d> primitive;   // phase I's chosen points P_0 ... P_n (Figs. 4-6)
+  std::vector<Eigen::Vector3d> voxels;     // the followed structure's voxel centres, in phase I's total order
+  std::vector<int> layer;                  // Manhattan layer from P0 of each (Fig. 3)
+  std::vector<int> cluster;                // cluster (primitive point) of each (Figs. 7-8)
+  std::vector<Eigen::Vector3d> primitive;  // phase I's chosen points P_0 ... P_n (Figs. 4-6)
   std::vector<int> primitiveLayer;
   std::vector<float> primitiveBorderDistance;  // mm, six directions
   TskModelSamples model;  // x(t), y(t), z(t) (Figs. 9-10); a voxel's t is its rank / (voxels - 1)

@@ -73,7 +73,7 @@ class CollapsibleComplex {
   double cost(int i, int j, double shapeWeight, double samplingWeight) const {
     const Eigen::Vector4d p(position_[j].x(), position_[j].y(), position_[j].z(), 1.0);
     const double shape = p.dot((quadric_[i] + quadric_[j]) * p);  // (8) at the kept position
-    const double sampling = length(i, j) * ringLength(i);  // (9)
+    const double sampling = length(i, j) * ringLength(i);         // (9)
     return shapeWeight * shape + samplingWeight * sampling;
   }
 

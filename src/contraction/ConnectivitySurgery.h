@@ -33,7 +33,7 @@ struct CurveSkeleton {
   Vertices nodes;                          // node positions
   std::vector<std::pair<int, int>> edges;  // node index pairs
   std::vector<int> vertexToNode;           // for every mesh vertex, the node that absorbed it (-1: unused)
-  std::vector<int> collapseOrder;          // for every mesh vertex, when it was collapsed (1: first; 0: a node)
+  std::vector<int> collapseOrder;  // for every mesh vertex, when it was collapsed (1: first; 0: a node)
   int prePassCollapses = 0, costCollapses = 0;
   int remainingFaces = 0;  // triangles no loop-preserving collapse could remove
 };

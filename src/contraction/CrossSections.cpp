@@ -55,10 +55,12 @@ CrossSections::CrossSections(const TriangleMesh& mesh) : slicer_(std::make_uniqu
   Surface& s = slicer_->surface;
   std::vector<Surface::Vertex_index> handles;
   for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
-    handles.push_back(s.add_vertex(Kernel::Point_3(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2))));
+    handles.push_back(
+        s.add_vertex(Kernel::Point_3(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2))));
   // A face that would break the surface's manifold structure is left out: its cuts stay open.
   for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
-    s.add_face(handles[size_t(mesh.faces(f, 0))], handles[size_t(mesh.faces(f, 1))], handles[size_t(mesh.faces(f, 2))]);
+    s.add_face(handles[size_t(mesh.faces(f, 0))], handles[size_t(mesh.faces(f, 1))],
+               handles[size_t(mesh.faces(f, 2))]);
   slicer_->slicer = std::make_unique<CGAL::Polygon_mesh_slicer<Surface, Kernel>>(s);
 }
 
@@ -107,7 +109,8 @@ double OffCentreSummary::percentile90() const {
   return sorted[std::min(sorted.size() - 1, size_t(0.9 * double(sorted.size())))];
 }
 
-OffCentreSummary offCentre(const Skeleton& skeleton, const CrossSections& sections, int samples, unsigned seed) {
+OffCentreSummary offCentre(const Skeleton& skeleton, const CrossSections& sections, int samples,
+                           unsigned seed) {
   OffCentreSummary summary;
   std::vector<double> lengths;
   for (const auto& [a, b] : skeleton.edges)

@@ -47,11 +47,11 @@ struct ContractionParameters {
   // A mesh with more vertices than this starts with W_L0 x (n / referenceVertices)^1.5 (see the header;
   // 0: the paper's W_L0 at every resolution).
   int referenceVertices = 4000;
-  double initialAttraction = 1.0;          // W_H0
-  double contractionScale = 2.0;           // s_L
-  double maxContractionWeight = 2048.0;    // cap on W_L
-  double maxAttractionWeight = 10000.0;    // cap on W_H
-  double minAngleDegrees = 1.0;            // cotangent clamping (III.A detail 1)
+  double initialAttraction = 1.0;        // W_H0
+  double contractionScale = 2.0;         // s_L
+  double maxContractionWeight = 2048.0;  // cap on W_L
+  double maxAttractionWeight = 10000.0;  // cap on W_H
+  double minAngleDegrees = 1.0;          // cotangent clamping (III.A detail 1)
   // A face whose area falls below this fraction of its initial area keeps the cotangents it had then.
   double degenerateFaceFraction = 0.2;
   int maxIterations = 40;
@@ -75,10 +75,10 @@ struct ContractionParameters {
 // One contraction iteration as the paper draws it (Fig. 5: the mesh; Fig. 7: the weights): step 0 is the
 // input with the initial weights, step t the mesh after iteration t with the weights that iteration used.
 struct ContractionStep {
-  Vertices positions;             // in the input's frame
-  Eigen::VectorXd laplacian;      // |L V| per vertex, in the input's units: the curvature-flow pull left
-  double contractionWeight = 0;   // W_L (one value for every vertex, eq. 5), in the normalized frame
-  Eigen::VectorXd attraction;     // W_H,i per vertex (III.A step 3: W_H0 sqrt(A_0 / A_t))
+  Vertices positions;            // in the input's frame
+  Eigen::VectorXd laplacian;     // |L V| per vertex, in the input's units: the curvature-flow pull left
+  double contractionWeight = 0;  // W_L (one value for every vertex, eq. 5), in the normalized frame
+  Eigen::VectorXd attraction;    // W_H,i per vertex (III.A step 3: W_H0 sqrt(A_0 / A_t))
   double areaRatio = 1, volumeRatio = 1;
 };
 

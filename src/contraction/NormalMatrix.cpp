@@ -53,7 +53,8 @@ NormalMatrix::NormalMatrix(const Eigen::SparseMatrix<double>& laplacian)
 
 const Eigen::SparseMatrix<double>& NormalMatrix::update(const Eigen::SparseMatrix<double>& laplacian,
                                                         double weight, const Eigen::VectorXd& attraction) {
-  if (!laplacian.isCompressed() || laplacian.cols() != matrix_.cols() || laplacian.nonZeros() != laplacianEntries_)
+  if (!laplacian.isCompressed() || laplacian.cols() != matrix_.cols() ||
+      laplacian.nonZeros() != laplacianEntries_)
     throw std::logic_error("NormalMatrix: the Laplacian's pattern changed");
   const int* outer = matrix_.outerIndexPtr();
   const int* rows = matrix_.innerIndexPtr();
@@ -71,7 +72,8 @@ const Eigen::SparseMatrix<double>& NormalMatrix::update(const Eigen::SparseMatri
     for (Eigen::Index q = lOuter[j]; q < lOuter[j + 1]; ++q) {
       const int k = lRows[q];
       const double lkj = square * lValues[q];
-      for (Eigen::Index r = lOuter[k]; r < lOuter[k + 1]; ++r) values[position_[size_t(lRows[r])]] += lValues[r] * lkj;
+      for (Eigen::Index r = lOuter[k]; r < lOuter[k + 1]; ++r)
+        values[position_[size_t(lRows[r])]] += lValues[r] * lkj;
     }
     values[diagonal_[size_t(j)]] += attraction[j] * attraction[j];
   }

@@ -17,7 +17,8 @@ namespace medial {
 
 Skeleton skeletonOf(const CurveSkeleton& curve) {
   Skeleton skeleton;
-  for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k) skeleton.nodes.push_back(curve.nodes.row(k).transpose());
+  for (Eigen::Index k = 0; k < curve.nodes.rows(); ++k)
+    skeleton.nodes.push_back(curve.nodes.row(k).transpose());
   for (const auto& [a, b] : curve.edges) skeleton.edges.push_back({a, b});
   return skeleton;
 }
@@ -117,7 +118,8 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   const double contractionEnd = p.computeWeights ? 0.6 : 0.75, surgeryEnd = p.computeWeights ? 0.7 : 0.9;
   ContractionParameters contractionParameters = p.contraction;
   contractionParameters.recordSteps = contractionParameters.recordSteps || p.recordStages;
-  ContractionResult contraction = contractMesh(coarse.mesh, contractionParameters, report(0.02, contractionEnd));
+  ContractionResult contraction =
+      contractMesh(coarse.mesh, contractionParameters, report(0.02, contractionEnd));
   result.contractionSeconds = start.seconds();
   result.factorizationSeconds = contraction.analyzeSeconds + contraction.factorizeSeconds;
   result.contractionIterations = contraction.iterations;

@@ -63,7 +63,8 @@ struct SkeletonByContractionResult {
   // With recordStages: the contraction's steps on the contracted mesh (its faces: contractedFaces), the
   // curve skeleton after the surgery (III.B, unrefined) and before the selection (after III.C).
   std::vector<ContractionStep> contractionSteps;
-  std::vector<int> collapseOrder;  // per contracted vertex: when the surgery collapsed it (1: first; 0: a node)
+  std::vector<int>
+      collapseOrder;  // per contracted vertex: when the surgery collapsed it (1: first; 0: a node)
   Faces contractedFaces;
   Skeleton surgerySkeleton, unselectedSkeleton;
   std::vector<int> selectedFrom;  // with a selection: per node of `skeleton`, the node it came from

@@ -19,7 +19,7 @@ struct CoarseningTraits : OpenMesh::DefaultTraits {
 };
 using Mesh = OpenMesh::TriMesh_ArrayKernelT<CoarseningTraits>;
 
-constexpr double kLengthFactor = 1.5;    // collapse edges shorter than this x the mean edge length
+constexpr double kLengthFactor = 1.5;     // collapse edges shorter than this x the mean edge length
 constexpr double kMinNormalCosine = 0.2;  // a triangle may turn by at most acos(0.2), about 78 degrees
 constexpr int kMaxPasses = 60;
 
@@ -60,7 +60,8 @@ CoarsenedMesh coarsenEdges(const TriangleMesh& mesh, Eigen::Index targetVertices
   const Eigen::Index n = mesh.vertices.rows();
   Mesh m;
   m.reserve(size_t(n), size_t(3 * mesh.faces.rows() / 2), size_t(mesh.faces.rows()));
-  for (Eigen::Index v = 0; v < n; ++v) m.add_vertex(Mesh::Point(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2)));
+  for (Eigen::Index v = 0; v < n; ++v)
+    m.add_vertex(Mesh::Point(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2)));
   // OpenMesh reports a face it cannot add on its error stream; here that only means "not a 2-manifold".
   omerr().disable();
   bool manifold = true;
@@ -85,7 +86,8 @@ CoarsenedMesh coarsenEdges(const TriangleMesh& mesh, Eigen::Index targetVertices
       if (m.status(e).deleted()) continue;
       const auto h = m.halfedge_handle(e, 0);
       const auto from = m.from_vertex_handle(h), to = m.to_vertex_handle(h);
-      if (touched[size_t(from.idx())] || touched[size_t(to.idx())] || m.calc_edge_length(e) > threshold) continue;
+      if (touched[size_t(from.idx())] || touched[size_t(to.idx())] || m.calc_edge_length(e) > threshold)
+        continue;
       if (!m.is_collapse_ok(h)) continue;
       const Mesh::Point middle = 0.5 * (m.point(from) + m.point(to));
       if (turnsOver(m, from, to, middle) || turnsOver(m, to, from, middle)) continue;

@@ -42,7 +42,8 @@ InsideTest::InsideTest(const TriangleMesh& mesh) : tree_(std::make_unique<Tree>(
 InsideTest::~InsideTest() = default;
 
 namespace {
-const Kernel::Vector_3 kDirections[3] = {{0.5773, 0.5821, 0.5727}, {-0.7071, 0.1013, 0.6998}, {0.2113, -0.9349, 0.2851}};
+const Kernel::Vector_3 kDirections[3] = {
+    {0.5773, 0.5821, 0.5727}, {-0.7071, 0.1013, 0.6998}, {0.2113, -0.9349, 0.2851}};
 }  // namespace
 
 bool InsideTest::contains(const Eigen::Vector3d& point) const {
@@ -61,10 +62,13 @@ bool InsideTest::wrapped(const Eigen::Vector3d& point) const {
   std::vector<Primitive::Id> hits;
   for (const auto& direction : kDirections) {
     hits.clear();
-    tree_->tree.all_intersected_primitives(Kernel::Ray_3(toPoint(point), direction), std::back_inserter(hits));
+    tree_->tree.all_intersected_primitives(Kernel::Ray_3(toPoint(point), direction),
+                                           std::back_inserter(hits));
     int winding = 0;
     for (const auto& t : hits)
-      winding += CGAL::cross_product(t->vertex(1) - t->vertex(0), t->vertex(2) - t->vertex(0)) * direction > 0 ? 1 : -1;
+      winding += CGAL::cross_product(t->vertex(1) - t->vertex(0), t->vertex(2) - t->vertex(0)) * direction > 0
+                     ? 1
+                     : -1;
     if (winding >= 1) ++insideVotes;
   }
   return insideVotes >= 2;

@@ -94,8 +94,7 @@ DecimatedMesh collapseEdges(const TriangleMesh& mesh, int targetVertices, bool s
     triangles.push_back({size_t(corners[0]), size_t(corners[1]), size_t(corners[2])});
   }
   SurfaceMesh sm;
-  if (strict && !buildSurfaceMesh(points, triangles, sm))
-    return unchanged(mesh, "not a 2-manifold");
+  if (strict && !buildSurfaceMesh(points, triangles, sm)) return unchanged(mesh, "not a 2-manifold");
   if (!strict && !buildSurfaceMesh(points, triangles, sm)) {
     // Faces oriented against their neighbours, or edges with three faces: CGAL's soup orientation flips
     // faces and duplicates the vertices where the surface is not a disk (the copies come after the input's
@@ -167,7 +166,8 @@ DecimatedMesh decimateMesh(const TriangleMesh& mesh, int targetVertices) {
     if (result.decimated) {
       std::vector<int> representative(size_t(n), -1);  // input vertex -> coarse vertex -> survivor
       for (size_t v = 0; v < representative.size(); ++v)
-        if (const int c = coarse.representative[v]; c >= 0) representative[v] = result.representative[size_t(c)];
+        if (const int c = coarse.representative[v]; c >= 0)
+          representative[v] = result.representative[size_t(c)];
       result.representative = std::move(representative);
       result.coarsenedVertices = int(coarse.mesh.vertices.rows());
       result.coarsened = std::move(coarse.mesh);

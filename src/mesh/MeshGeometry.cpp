@@ -120,7 +120,8 @@ LaplacianAssembler::LaplacianAssembler(const Faces& faces, Eigen::Index vertexCo
         target = {-1, -1, -1, -1};
         continue;
       }
-      target = {entryAt(laplacian_, j, i), entryAt(laplacian_, i, j), entryAt(laplacian_, i, i), entryAt(laplacian_, j, j)};
+      target = {entryAt(laplacian_, j, i), entryAt(laplacian_, i, j), entryAt(laplacian_, i, i),
+                entryAt(laplacian_, j, j)};
     }
 }
 

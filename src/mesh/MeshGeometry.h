@@ -36,7 +36,8 @@ class LaplacianAssembler {
 
  private:
   Eigen::SparseMatrix<double> laplacian_;
-  std::vector<std::array<int, 4>> targets_;  // per face corner: entries (i, j), (j, i), (i, i), (j, j); -1: none
+  std::vector<std::array<int, 4>>
+      targets_;  // per face corner: entries (i, j), (j, i), (i, i), (j, j); -1: none
 };
 
 Eigen::VectorXd faceAreas(const Vertices& vertices, const Faces& faces);

@@ -23,7 +23,8 @@ bool toSurface(const TriangleMesh& mesh, Surface& surface) {
   std::vector<Surface::Vertex_index> handles;
   handles.reserve(size_t(mesh.vertices.rows()));
   for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
-    handles.push_back(surface.add_vertex(Kernel::Point_3(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2))));
+    handles.push_back(
+        surface.add_vertex(Kernel::Point_3(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2))));
   for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
     if (surface.add_face(handles[size_t(mesh.faces(f, 0))], handles[size_t(mesh.faces(f, 1))],
                          handles[size_t(mesh.faces(f, 2))]) == Surface::null_face())
@@ -31,11 +32,14 @@ bool toSurface(const TriangleMesh& mesh, Surface& surface) {
   return CGAL::is_closed(surface);
 }
 
-Key keyOf(const Kernel::Point_3& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}; }
+Key keyOf(const Kernel::Point_3& p) {
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+}
 
 }  // namespace
 
-MeshUnionResult meshUnion(const std::vector<TriangleMesh>& parts, const std::function<bool(double)>& progress) {
+MeshUnionResult meshUnion(const std::vector<TriangleMesh>& parts,
+                          const std::function<bool(double)>& progress) {
   MeshUnionResult result;
   // Where each input vertex came from; intersection vertices are found in none.
   std::map<Key, int> labelAt;
@@ -60,7 +64,8 @@ MeshUnionResult meshUnion(const std::vector<TriangleMesh>& parts, const std::fun
     } else {
       Surface joined;
       if (!PMP::corefine_and_compute_union(whole, part, joined)) {
-        result.error = name + " touches the earlier parts along an edge or at a point only: the union is not a manifold";
+        result.error =
+            name + " touches the earlier parts along an edge or at a point only: the union is not a manifold";
         return result;
       }
       whole = std::move(joined);

@@ -24,7 +24,8 @@ struct MeshUnionResult {
 };
 
 /// The union of `parts` (each closed, manifold and free of self-intersections; one oriented inward is
-/// turned outward), labelled 0, 1, ... in their order. progress(fraction) after each part; returning false aborts.
+/// turned outward), labelled 0, 1, ... in their order. progress(fraction) after each part; returning false
+/// aborts.
 MeshUnionResult meshUnion(const std::vector<TriangleMesh>& parts,
                           const std::function<bool(double)>& progress = {});
 

@@ -18,8 +18,7 @@ std::vector<std::pair<int, int>> selfIntersectingFaces(const std::vector<Eigen::
   size_t triangleCount = 0;
   for (const auto& f : faces) triangleCount += f.size() >= 2 ? f.size() - 2 : 0;
   surface.reserve(Surface::size_type(std::min(vertices.size(), 3 * triangleCount)),
-                  Surface::size_type(3 * triangleCount),
-                  Surface::size_type(triangleCount));
+                  Surface::size_type(3 * triangleCount), Surface::size_type(triangleCount));
   // Only the vertices the faces use (a few faces of a large mesh are tested again and again).
   std::vector<Surface::Vertex_index> handles(vertices.size(), Surface::null_vertex());
   for (const auto& f : faces)

@@ -190,7 +190,8 @@ void SparseSolver::analyze(const SpMat& matrix) {
 
 bool SparseSolver::factorize(const SpMat& matrix) {
   if (backend_->factorize(matrix)) return true;
-  error_ = sparseSolverName(chosen_) + ": the factorization failed (matrix not positive definite or singular)";
+  error_ =
+      sparseSolverName(chosen_) + ": the factorization failed (matrix not positive definite or singular)";
   return false;
 }
 

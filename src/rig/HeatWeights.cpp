@@ -184,7 +184,8 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
   for (Eigen::Index j = 0; j < n; ++j) {
     if (sums[j] > 0) continue;
     // Cannot happen for a solvable system; keep every row a partition of unity regardless.
-    for (int bone : nearest[size_t(j)].bones) result.weights(j, bone) = 1.0 / double(nearest[size_t(j)].bones.size());
+    for (int bone : nearest[size_t(j)].bones)
+      result.weights(j, bone) = 1.0 / double(nearest[size_t(j)].bones.size());
   }
   const Eigen::VectorXd divide = (sums.array() > 0).select(sums, 1.0);
   result.weights.array().colwise() /= divide.array();

@@ -27,7 +27,8 @@ Neighbours neighbours(const Skeleton& skeleton) {
 }
 
 // Distances along the edges from `source` (Dijkstra) and each node's predecessor on its shortest path.
-void shortestPaths(const Neighbours& around, int source, std::vector<double>& distance, std::vector<int>& previous) {
+void shortestPaths(const Neighbours& around, int source, std::vector<double>& distance,
+                   std::vector<int>& previous) {
   distance.assign(around.size(), INFINITY);
   previous.assign(around.size(), -1);
   using Entry = std::pair<double, int>;
@@ -99,7 +100,8 @@ int centralNode(const Skeleton& skeleton) {
 }
 
 SkinBindingResult bindSkin(const TriangleMesh& mesh, const Skeleton& skeleton,
-                           const HeatWeightParameters& parameters, const std::function<bool(double)>& progress) {
+                           const HeatWeightParameters& parameters,
+                           const std::function<bool(double)>& progress) {
   SkinBindingResult result;
   if (mesh.faces.rows() == 0) {
     result.error = "the mesh has no faces to bind";

@@ -24,7 +24,8 @@ double defaultRadius(const Skeleton& s) {
 int addNode(Skeleton& s, const Eigen::Vector3d& position, double radius, const Eigen::Matrix3d* axes) {
   s.nodes.push_back(position);
   if (!s.radii.empty()) s.radii.push_back(radius);
-  if (!s.ellipsoidAxes.empty()) s.ellipsoidAxes.push_back(axes ? *axes : Eigen::Matrix3d::Identity() * radius);
+  if (!s.ellipsoidAxes.empty())
+    s.ellipsoidAxes.push_back(axes ? *axes : Eigen::Matrix3d::Identity() * radius);
   return s.nodeCount() - 1;
 }
 
@@ -66,7 +67,8 @@ int splitEdge(Skeleton& s, int edge, double t) {
 int addBranch(Skeleton& s, int node, const Eigen::Vector3d& position) {
   if (!isNode(s, node)) return -1;
   const double radius = s.radii.empty() ? 0 : s.radii[size_t(node)];
-  const int leaf = addNode(s, position, radius, s.ellipsoidAxes.empty() ? nullptr : &s.ellipsoidAxes[size_t(node)]);
+  const int leaf =
+      addNode(s, position, radius, s.ellipsoidAxes.empty() ? nullptr : &s.ellipsoidAxes[size_t(node)]);
   s.edges.push_back({node, leaf});
   return leaf;
 }
@@ -76,19 +78,25 @@ bool deleteNode(Skeleton& s, int node) {
   std::vector<int> neighbours;
   std::vector<std::array<int, 2>> kept;
   for (const auto& e : s.edges) {
-    if (e[0] == node) neighbours.push_back(e[1]);
-    else if (e[1] == node) neighbours.push_back(e[0]);
-    else kept.push_back(e);
+    if (e[0] == node)
+      neighbours.push_back(e[1]);
+    else if (e[1] == node)
+      neighbours.push_back(e[0]);
+    else
+      kept.push_back(e);
   }
-  if (neighbours.size() == 2 && neighbours[0] != neighbours[1]) kept.push_back({neighbours[0], neighbours[1]});
+  if (neighbours.size() == 2 && neighbours[0] != neighbours[1])
+    kept.push_back({neighbours[0], neighbours[1]});
   const auto renumber = [node](int id) { return id > node ? id - 1 : id; };
   for (auto& e : kept) e = {renumber(e[0]), renumber(e[1])};
   s.edges = std::move(kept);
   s.nodes.erase(s.nodes.begin() + node);
   if (!s.radii.empty()) s.radii.erase(s.radii.begin() + node);
   if (!s.ellipsoidAxes.empty()) s.ellipsoidAxes.erase(s.ellipsoidAxes.begin() + node);
-  if (s.root == node) s.root = neighbours.empty() ? -1 : renumber(neighbours.front());
-  else if (s.root > node) --s.root;
+  if (s.root == node)
+    s.root = neighbours.empty() ? -1 : renumber(neighbours.front());
+  else if (s.root > node)
+    --s.root;
   if (s.root >= s.nodeCount()) s.root = -1;
   return true;
 }
@@ -99,12 +107,14 @@ bool setRoot(Skeleton& s, int node) {
   return true;
 }
 
-EdgeNearRay nearestEdgeToRay(const Skeleton& s, const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) {
+EdgeNearRay nearestEdgeToRay(const Skeleton& s, const Eigen::Vector3d& origin,
+                             const Eigen::Vector3d& direction) {
   EdgeNearRay best;
   best.distance = std::numeric_limits<double>::infinity();
   const Eigen::Vector3d d = direction.normalized();
   for (int i = 0; i < s.edgeCount(); ++i) {
-    const Eigen::Vector3d a = s.nodes[size_t(s.edges[size_t(i)][0])], b = s.nodes[size_t(s.edges[size_t(i)][1])];
+    const Eigen::Vector3d a = s.nodes[size_t(s.edges[size_t(i)][0])],
+                          b = s.nodes[size_t(s.edges[size_t(i)][1])];
     // Closest points of the segment a + t (b - a) and the line origin + s d (t clamped to the segment).
     const Eigen::Vector3d u = b - a, w = a - origin;
     const double uu = u.dot(u), ud = u.dot(d), uw = u.dot(w), dw = d.dot(w);

@@ -78,7 +78,8 @@ bool extractPart(const SketchPart& part, int partIndex, const SketchParameters& 
   if (straight) {  // recordStages: the straight skeleton as it is, before BoundedDP
     const int first = straight->skeleton.nodeCount();
     for (const Eigen::Vector2d& q : local.nodes)
-      straight->addNode(place(part.placement, q), scale * distanceToBoundary(out.stroke.resampled, q), partIndex);
+      straight->addNode(place(part.placement, q), scale * distanceToBoundary(out.stroke.resampled, q),
+                        partIndex);
     for (const auto& e : local.edges) straight->addEdge(first + e[0], first + e[1], partIndex, -1);
   }
   if (local.edges.empty()) {  // e.g. a triangle: one inscribed ball
@@ -163,7 +164,8 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
     if (!validPlacement(parts[k].placement))
       error = "the placement matrix must be finite, with last row 0 0 0 1 and a non-degenerate plane";
     else
-      extractPart(parts[k], k, p, unit, result.graph, result.parts[k], error, p.recordStages ? &straight : nullptr);
+      extractPart(parts[k], k, p, unit, result.graph, result.parts[k], error,
+                  p.recordStages ? &straight : nullptr);
     if (!error.empty()) {
       result.error = "stroke " + std::to_string(k + 1) + ": " + error;
       return result;
@@ -217,7 +219,8 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
       // One watertight mesh (the paper's Fig. 12: a model to animate), the parts' volumes joined.
       MeshUnionResult merged = meshUnion(pieces, [&](double f) { return !aborted(0.8 + 0.2 * f); });
       if (!merged.ok()) {
-        result.error = merged.error == "aborted" ? merged.error : "joining the inflated parts: " + merged.error;
+        result.error =
+            merged.error == "aborted" ? merged.error : "joining the inflated parts: " + merged.error;
         return result;
       }
       result.mesh = std::move(merged.mesh);

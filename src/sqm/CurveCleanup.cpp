@@ -42,9 +42,10 @@ struct BandMesh {
   Mesh mesh;
   OpenMesh::FPropHandleT<int> polygon;  // the whole polygon a triangle came from; -1 a cut triangle
   OpenMesh::EPropHandleT<bool> curve;
-  OpenMesh::VPropHandleT<bool> fixed;   // a vertex of a whole polygon: moves only onto a curve (snapped)
-  OpenMesh::VPropHandleT<bool> frozen;  // never removed, never a collapse's target, no edge flipped next to it
-  OpenMesh::VPropHandleT<int> index;    // into points
+  OpenMesh::VPropHandleT<bool> fixed;  // a vertex of a whole polygon: moves only onto a curve (snapped)
+  OpenMesh::VPropHandleT<bool>
+      frozen;                         // never removed, never a collapse's target, no edge flipped next to it
+  OpenMesh::VPropHandleT<int> index;  // into points
   std::vector<Eigen::Vector3d> points;  // the input's vertices, then those split onto curve edges
   std::vector<int> nodes, origin;       // their skeleton node; the input vertex they come from
   std::vector<int> mergedInto;          // vertex -> the vertex it was collapsed into, or -1
@@ -64,13 +65,16 @@ bool moveKeepsOrientation(const Mesh& m, VH from, const Eigen::Vector3d& target,
       ++k;
     }
     if (touches) continue;
-    const Eigen::Vector3d n0 = normalOf(before[0], before[1], before[2]), n1 = normalOf(after[0], after[1], after[2]);
+    const Eigen::Vector3d n0 = normalOf(before[0], before[1], before[2]),
+                          n1 = normalOf(after[0], after[1], after[2]);
     if (n0.dot(n1) <= 0.2 * n0.norm() * n1.norm()) return false;
   }
   return true;
 }
 
-bool collapseKeepsOrientation(const Mesh& m, VH from, VH to) { return moveKeepsOrientation(m, from, at(m, to), to); }
+bool collapseKeepsOrientation(const Mesh& m, VH from, VH to) {
+  return moveKeepsOrientation(m, from, at(m, to), to);
+}
 
 double medianAround(const Mesh& m, VH a, VH b) {
   std::vector<double> lengths;
@@ -86,11 +90,13 @@ double medianAround(const Mesh& m, VH a, VH b) {
 // name the survivor).
 void collapseRecorded(BandMesh& b, HH h) {
   Mesh& m = b.mesh;
-  b.mergedInto[size_t(m.property(b.index, m.from_vertex_handle(h)))] = m.property(b.index, m.to_vertex_handle(h));
+  b.mergedInto[size_t(m.property(b.index, m.from_vertex_handle(h)))] =
+      m.property(b.index, m.to_vertex_handle(h));
   m.collapse(h);
 }
 
-// A polygon's corner (h's from-vertex) moved onto the curve vertex h points to, a polygon corner from then on.
+// A polygon's corner (h's from-vertex) moved onto the curve vertex h points to, a polygon corner from then
+// on.
 void snapInto(BandMesh& b, HH h) {
   const VH to = b.mesh.to_vertex_handle(h);
   collapseRecorded(b, h);
@@ -105,7 +111,8 @@ int collapseShortCurveEdges(BandMesh& b) {
     for (const EH e : m.edges()) {
       if (m.status(e).deleted() || !m.property(b.curve, e)) continue;
       const HH h0 = m.halfedge_handle(e, 0);
-      if (m.calc_edge_length(e) >= kShortCurveEdge * medianAround(m, m.from_vertex_handle(h0), m.to_vertex_handle(h0)))
+      if (m.calc_edge_length(e) >=
+          kShortCurveEdge * medianAround(m, m.from_vertex_handle(h0), m.to_vertex_handle(h0)))
         continue;
       for (const HH h : {h0, m.halfedge_handle(e, 1)}) {  // remove h's from-vertex into its to-vertex
         const VH from = m.from_vertex_handle(h), to = m.to_vertex_handle(h);
@@ -117,10 +124,12 @@ int collapseShortCurveEdges(BandMesh& b) {
             ++curveEdges;
             if (m.to_vertex_handle(out) != to) other = m.to_vertex_handle(out);
           }
-        if (curveEdges != 2 || !other.is_valid() || !m.is_collapse_ok(h) || !collapseKeepsOrientation(m, from, to))
+        if (curveEdges != 2 || !other.is_valid() || !m.is_collapse_ok(h) ||
+            !collapseKeepsOrientation(m, from, to))
           continue;
         // Only where the curve runs on nearly straight: a corner of it (two boxes meeting) is its shape.
-        const Eigen::Vector3d in = (at(m, from) - at(m, other)).normalized(), out = (at(m, to) - at(m, from)).normalized();
+        const Eigen::Vector3d in = (at(m, from) - at(m, other)).normalized(),
+                              out = (at(m, to) - at(m, from)).normalized();
         if (in.dot(out) < std::cos(kStraightCurve * M_PI / 180)) continue;
         collapseRecorded(b, h);
         const HH joined = m.find_halfedge(to, other);  // the curve goes on from `to`
@@ -154,7 +163,8 @@ int snapCornersOntoCurves(BandMesh& b) {
           m.property(b.frozen, to) || !onCurve(b, to))
         continue;
       const FH left = m.face_handle(h), right = m.face_handle(m.opposite_halfedge_handle(h));
-      if (!left.is_valid() || !right.is_valid() || m.property(b.polygon, left) >= 0 || m.property(b.polygon, right) >= 0)
+      if (!left.is_valid() || !right.is_valid() || m.property(b.polygon, left) >= 0 ||
+          m.property(b.polygon, right) >= 0)
         continue;
       if (m.calc_edge_length(e) >= kSnapCorner * medianAround(m, from, to) || !m.is_collapse_ok(h) ||
           !collapseKeepsOrientation(m, from, to))
@@ -190,9 +200,11 @@ int snapCornersOntoCurveEdges(BandMesh& b) {
       const double t = (p - a).dot(d) / d.squaredNorm();
       if (t < 0.2 || t > 0.8) continue;  // near an end the other snap applies
       const Eigen::Vector3d foot = a + t * d;
-      if ((p - foot).norm() >= kSnapCorner * medianAround(m, c1, c2) || !moveKeepsOrientation(m, corner, foot, c1))
+      if ((p - foot).norm() >= kSnapCorner * medianAround(m, c1, c2) ||
+          !moveKeepsOrientation(m, corner, foot, c1))
         continue;
-      // The faces around the corner that touch c1 or c2 stay with it (the corner moves along); check them too.
+      // The faces around the corner that touch c1 or c2 stay with it (the corner moves along); check them
+      // too.
       if (!moveKeepsOrientation(m, corner, foot, c2)) continue;
       const VH w = m.add_vertex(Mesh::Point(foot.x(), foot.y(), foot.z()));
       m.property(b.index, w) = int(b.points.size());
@@ -263,10 +275,13 @@ int delaunayFlips(BandMesh& b) {
       const int ph = m.property(b.polygon, m.face_handle(h)), pg = m.property(b.polygon, m.face_handle(g));
       // An edge of a whole polygon flips only to remove a sliver beside it (a curve vertex that comes
       // near the polygon's side): the polygon then becomes cut triangles.
-      if ((ph >= 0 && pg >= 0) || ((ph >= 0 || pg >= 0) && !isSliver(m, m.face_handle(ph >= 0 ? g : h)))) continue;
+      if ((ph >= 0 && pg >= 0) || ((ph >= 0 || pg >= 0) && !isSliver(m, m.face_handle(ph >= 0 ? g : h))))
+        continue;
       const VH a = m.from_vertex_handle(h), c = m.to_vertex_handle(h);
-      const VH p = m.to_vertex_handle(m.next_halfedge_handle(h)), q = m.to_vertex_handle(m.next_halfedge_handle(g));
-      if (m.property(b.frozen, a) || m.property(b.frozen, c) || m.property(b.frozen, p) || m.property(b.frozen, q))
+      const VH p = m.to_vertex_handle(m.next_halfedge_handle(h)),
+               q = m.to_vertex_handle(m.next_halfedge_handle(g));
+      if (m.property(b.frozen, a) || m.property(b.frozen, c) || m.property(b.frozen, p) ||
+          m.property(b.frozen, q))
         continue;
       const Eigen::Vector3d A = at(m, a), C = at(m, c), P = at(m, p), Q = at(m, q);
       if (angleAt(P, A, C) + angleAt(Q, A, C) <= M_PI + 1e-9 || !m.is_flip_ok(e)) continue;
@@ -318,7 +333,8 @@ std::vector<std::vector<int>> fansAtCorners(const SqmMesh& mesh) {
 
 int countSlivers(const SqmMesh& mesh, const std::vector<char>& band) {
   int slivers = 0;
-  for (size_t f = 0; f < mesh.faces.size(); ++f) slivers += band[f] && smallestAngle(mesh, f) < kSliverDegrees;
+  for (size_t f = 0; f < mesh.faces.size(); ++f)
+    slivers += band[f] && smallestAngle(mesh, f) < kSliverDegrees;
   return slivers;
 }
 
@@ -328,8 +344,9 @@ double smallestAngle(const SqmMesh& mesh, size_t face) {
   const auto& f = mesh.faces[face];
   double smallest = M_PI;
   for (size_t k = 0; k < f.size(); ++k)
-    smallest = std::min(smallest, angleAt(mesh.vertices[size_t(f[k])], mesh.vertices[size_t(f[(k + 1) % f.size()])],
-                                          mesh.vertices[size_t(f[(k + f.size() - 1) % f.size()])]));
+    smallest =
+        std::min(smallest, angleAt(mesh.vertices[size_t(f[k])], mesh.vertices[size_t(f[(k + 1) % f.size()])],
+                                   mesh.vertices[size_t(f[(k + f.size() - 1) % f.size()])]));
   return smallest * 180 / M_PI;
 }
 

@@ -18,8 +18,8 @@
 namespace medial {
 
 struct CurveCleanup {
-  int collapsed = 0, flipped = 0;          // curve vertices removed, edges flipped
-  int snapped = 0;                         // polygon corners moved onto a curve vertex beside them
+  int collapsed = 0, flipped = 0;           // curve vertices removed, edges flipped
+  int snapped = 0;                          // polygon corners moved onto a curve vertex beside them
   int sliversBefore = 0, sliversAfter = 0;  // cut triangles with an angle below kSliverDegrees
   bool applied = false;                     // false: not a manifold OpenMesh takes, the mesh is unchanged
 };
@@ -34,7 +34,7 @@ double smallestAngle(const SqmMesh& mesh, size_t face);
 /// flagged in `frozen` (may be empty) are neither removed nor is an edge flipped next to them. `original`,
 /// when given, receives the input index of each vertex of the cleaned mesh.
 CurveCleanup cleanCurveBands(SqmMesh& mesh, const std::vector<char>& band,
-                             const std::vector<std::pair<int, int>>& curves, const std::vector<char>& frozen = {},
-                             std::vector<int>* original = nullptr);
+                             const std::vector<std::pair<int, int>>& curves,
+                             const std::vector<char>& frozen = {}, std::vector<int>* original = nullptr);
 
 }  // namespace medial

@@ -1,6 +1,7 @@
-// FoldPairs: which skeleton nodes are near each other, and which pairs of refined faces that cut each other are folds the refinement's fold repair
-// should undo (SqmRefinement), and which are tubes of other parts of the skeleton overlapping, which no
-// move back towards the base mesh can undo (they are SqmUnion's work, or a note to the user).
+// FoldPairs: which skeleton nodes are near each other, and which pairs of refined faces that cut each other
+// are folds the refinement's fold repair should undo (SqmRefinement), and which are tubes of other parts of
+// the skeleton overlapping, which no move back towards the base mesh can undo (they are SqmUnion's work, or a
+// note to the user).
 //
 // A pair is a fold when the base faces it was refined from belong to skeleton nodes at most kFoldHops
 // edges apart (a bend, a branch node's crowded arms) and the base mesh's faces of those two nodes did not

@@ -129,9 +129,12 @@ std::string prepare(const Skeleton& input, const SqmParameters& p, PreparedSkele
     const auto first = std::find(merged.begin(), merged.end(), true);
     if (first != merged.end())
       return "node " + std::to_string(first - merged.begin()) +
-             " lies inside the sphere of a neighbouring branch node (or two neighbouring branch nodes' spheres "
-             "overlap by more than half the smaller radius): the tube between them would run backwards out of "
-             "the branch node's polyhedron and fold the surface. Let SQM merge such nodes (drop --no-merge) or "
+             " lies inside the sphere of a neighbouring branch node (or two neighbouring branch nodes' "
+             "spheres "
+             "overlap by more than half the smaller radius): the tube between them would run backwards out "
+             "of "
+             "the branch node's polyhedron and fold the surface. Let SQM merge such nodes (drop --no-merge) "
+             "or "
              "move them apart";
     out.merged.assign(s.nodes.size(), false);
   }
@@ -573,7 +576,8 @@ int SqmMesh::quadCount() const {
 int SqmMesh::faceNode(size_t f) const {
   std::map<int, int> votes;
   for (const int v : faces[f]) ++votes[vertexNode[size_t(v)]];
-  return std::max_element(votes.begin(), votes.end(), [](const auto& a, const auto& b) { return a.second < b.second; })
+  return std::max_element(votes.begin(), votes.end(),
+                          [](const auto& a, const auto& b) { return a.second < b.second; })
       ->first;
 }
 

@@ -81,10 +81,10 @@ struct SqmResult {
   int mergedNodes = 0;      // nodes inside a neighbouring branch node's sphere, merged into it (a repair)
   int pairedTriangles = 0;  // quads made of two fan or band triangles (SqmParameters::pairTriangles)
   int foldRepairedVertices = 0;  // refined vertices moved off their cones by the fold repair
-  int irregularVertices = 0;      // vertices of the output where other than four edges meet
-  SqmOverlaps overlaps;           // with countOverlaps or unite: the faces cutting each other (before the union)
-  SqmUnionResult unionResult;     // with unite: what the union cut and removed
-  double unionSeconds = 0;        // counting the overlaps and the union
+  int irregularVertices = 0;     // vertices of the output where other than four edges meet
+  SqmOverlaps overlaps;        // with countOverlaps or unite: the faces cutting each other (before the union)
+  SqmUnionResult unionResult;  // with unite: what the union cut and removed
+  double unionSeconds = 0;     // counting the overlaps and the union
   // The paper's Table 1 stages: straightening, BNP generation and refinement, joining, skinning
   // (placement), subdivision, and Medial's repairs (orientation, triangle pairing).
   double straighteningSeconds = 0, generationSeconds = 0, refinementSeconds = 0, joiningSeconds = 0,

@@ -41,9 +41,9 @@ constexpr int kCreaseIterations = 2;
 // gap) / (kSurfaceBlend r)), r the nearest surface's radius: a rounded crease where two tubes meet. On the
 // outer side of a bend (the projection outside the other volume) nothing is blended: a chord there would
 // groove the tube at every node.
-SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres, const std::vector<int>& edges,
-                          Eigen::Vector3d& placed, bool* blended = nullptr, int* edge = nullptr,
-                          int* partner = nullptr) {
+SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres,
+                          const std::vector<int>& edges, Eigen::Vector3d& placed, bool* blended = nullptr,
+                          int* edge = nullptr, int* partner = nullptr) {
   static thread_local std::vector<SweptPoint> projections;  // reused: this runs for every refined vertex
   projections.clear();
   size_t nearest = 0;
@@ -58,7 +58,8 @@ SweptPoint nearestSurface(const Eigen::Vector3d& p, const SweptSpheres& spheres,
   }
   auto candidate = [&](const SweptPoint& c) { return c.found && (!inside || c.signedDistance() < 0); };
   for (size_t k = 0; k < projections.size(); ++k)
-    if (candidate(projections[k]) && (!candidate(projections[nearest]) || gap(projections[k]) < gap(projections[nearest])))
+    if (candidate(projections[k]) &&
+        (!candidate(projections[nearest]) || gap(projections[k]) < gap(projections[nearest])))
       nearest = k;
   if (projections.empty() || !candidate(projections[nearest])) return {};
   const SweptPoint& best = projections[nearest];
@@ -169,7 +170,8 @@ class FoldFinder {
  public:
   using IsFold = std::function<bool(int, int)>;  // of two faces that cut each other
   // `candidates`: the faces that can fold at all (FoldCandidates); the full test covers these.
-  FoldFinder(const std::vector<std::vector<int>>& faces, size_t vertices, IsFold isFold, std::vector<int> candidates)
+  FoldFinder(const std::vector<std::vector<int>>& faces, size_t vertices, IsFold isFold,
+             std::vector<int> candidates)
       : faces_(faces), vertices_(vertices), isFold_(std::move(isFold)), everyFace_(std::move(candidates)) {}
   // Every vertex of a candidate face that folds over another (empty when none does).
   std::vector<bool> all(const std::vector<Eigen::Vector3d>& points) {
@@ -257,10 +259,12 @@ bool gentleBend(const Skeleton& skeleton, int e, int g) {
 // swept surface, along its normal, from a base mesh that does not cut itself: nothing there can cut
 // anything. (The octopus refined four times: 10 % of its faces are tested.) Once folds are found, the
 // tests cover every face (FoldFinder::testEveryFace).
-std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& flat,
-                                const std::vector<Eigen::Vector3d>& projected, const std::vector<int>& chosenEdge,
-                                const std::vector<char>& blended, const std::vector<int>& baseFace,
-                                const std::vector<char>& crowded, const Skeleton& skeleton) {
+std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces,
+                                const std::vector<Eigen::Vector3d>& flat,
+                                const std::vector<Eigen::Vector3d>& projected,
+                                const std::vector<int>& chosenEdge, const std::vector<char>& blended,
+                                const std::vector<int>& baseFace, const std::vector<char>& crowded,
+                                const Skeleton& skeleton) {
   // Two edges' surfaces meet smoothly where the edges share a node (both hold its sphere).
   auto joined = [&](int a, int b) {
     if (a == b) return true;
@@ -269,13 +273,15 @@ std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces, cons
     return e[0] == g[0] || e[0] == g[1] || e[1] == g[0] || e[1] == g[1];
   };
   auto normal = [](const std::vector<Eigen::Vector3d>& points, const std::vector<int>& f) {
-    return (points[size_t(f[2])] - points[size_t(f[0])]).cross(points[size_t(f[3 % f.size()])] - points[size_t(f[1])]);
+    return (points[size_t(f[2])] - points[size_t(f[0])])
+        .cross(points[size_t(f[3 % f.size()])] - points[size_t(f[1])]);
   };
   std::vector<char> marked(flat.size(), 0);
   for (size_t f = 0; f < faces.size(); ++f) {
     const auto& face = faces[f];
     bool risky = crowded[size_t(baseFace[f])] || normal(projected, face).dot(normal(flat, face)) <= 0;
-    for (int v : face) risky = risky || blended[size_t(v)] || !joined(chosenEdge[size_t(v)], chosenEdge[size_t(face[0])]);
+    for (int v : face)
+      risky = risky || blended[size_t(v)] || !joined(chosenEdge[size_t(v)], chosenEdge[size_t(face[0])]);
     if (risky)
       for (int v : face) marked[size_t(v)] = 1;
   }
@@ -288,15 +294,16 @@ std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces, cons
   }
   std::vector<int> candidates;
   for (size_t f = 0; f < faces.size(); ++f)
-    if (std::any_of(faces[f].begin(), faces[f].end(), [&](int v) { return marked[size_t(v)]; })) candidates.push_back(int(f));
+    if (std::any_of(faces[f].begin(), faces[f].end(), [&](int v) { return marked[size_t(v)]; }))
+      candidates.push_back(int(f));
   return candidates;
 }
 
 // Returns the vertices moved; *settled tells whether no face folds over another any more, and then
 // *overlaps has the pairs of faces that cut each other without being folds (the last test was a full one).
 int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& flat,
-                std::vector<Eigen::Vector3d>& points, const FoldFinder::IsFold& isFold, std::vector<int> candidates,
-                bool* settled, std::vector<std::pair<int, int>>* overlaps) {
+                std::vector<Eigen::Vector3d>& points, const FoldFinder::IsFold& isFold,
+                std::vector<int> candidates, bool* settled, std::vector<std::pair<int, int>>* overlaps) {
   const std::vector<Eigen::Vector3d> projected = points;
   std::vector<double> weight(points.size(), 1.0);  // 1: projected, 0: on the base mesh
   int moved = 0;
@@ -315,7 +322,8 @@ int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Ei
   // A fold of the base mesh itself (two faces almost coplanar across a sharp vertex, once on the hand
   // sample) shows once its quads are split: the vertices still folded move to the centroid of their
   // neighbours, at most kFoldSmoothingSteps times.
-  const auto neighbours = folded.empty() ? std::vector<std::vector<int>>{} : vertexNeighbours(faces, points.size());
+  const auto neighbours =
+      folded.empty() ? std::vector<std::vector<int>>{} : vertexNeighbours(faces, points.size());
   for (int step = 0; step < kFoldSmoothingSteps && !folded.empty(); ++step) {
     const std::vector<Eigen::Vector3d> before = points;
     for (size_t v = 0; v < points.size(); ++v) {
@@ -420,7 +428,8 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
       return std::find(nearEdges.back().begin(), nearEdges.back().end(), e) == nearEdges.back().end();
     });
   }
-  const std::vector<Eigen::Vector3d> sharp = scaling.enabled ? sharpVertices(mesh) : std::vector<Eigen::Vector3d>{};
+  const std::vector<Eigen::Vector3d> sharp =
+      scaling.enabled ? sharpVertices(mesh) : std::vector<Eigen::Vector3d>{};
 
   // The fold repair runs on the last level only (each level projects every vertex again), unless folds are
   // left there: then everything again with the repair at every level, so that none piles up (the fish and
@@ -463,9 +472,10 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
           nearestSurface(from, spheres, edges, q, &inCrease);
         }
         if (surface.found && !sharp.empty())  // the paper's scaling, on the nearest surface
-          q = surface.centre + surface.radius *
-                                   sharpScaleFactor(distanceToNearest(p, sharp) / surface.radius, scaling.minimumScale) *
-                                   surface.direction;
+          q = surface.centre +
+              surface.radius *
+                  sharpScaleFactor(distanceToNearest(p, sharp) / surface.radius, scaling.minimumScale) *
+                  surface.direction;
         flat[v] = nextOnBase[v].p;
         projected[v] = q;
       });
@@ -474,10 +484,10 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
           return folds.isFold(nextBaseFace[size_t(f)], nextBaseFace[size_t(g)]);
         };
         auto faces = levelFaces(topology);
-        const int moved = repairFolds(faces, flat, projected, isFold,
-                                      foldCandidates(faces, flat, projected, chosenEdge, blended, nextBaseFace,
-                                                     crowded, skeleton),
-                                      &settled, &report->overlappingFaces);
+        const int moved = repairFolds(
+            faces, flat, projected, isFold,
+            foldCandidates(faces, flat, projected, chosenEdge, blended, nextBaseFace, crowded, skeleton),
+            &settled, &report->overlappingFaces);
         if (level == levels) {
           report->repairedVertices = moved;
           report->overlapsKnown = settled;

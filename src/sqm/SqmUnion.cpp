@@ -52,8 +52,8 @@ struct CutTracker : PMP::Corefinement::Default_visitor<Surface> {
 // Drops the closed components that enclose no volume (two sheets kept where tubes just touch) or less
 // than `smallestPart`, a cavity or a bubble (pockets left where three tubes meet: 6 cavities of 1e-5 or
 // less on the dense tree refined twice, 4 bubbles of 1e-9 from folds refined three times); returns how many.
-int dropPockets(std::vector<std::vector<int>>& faces, std::vector<char>& band, const std::vector<Eigen::Vector3d>& points,
-                double smallestPart) {
+int dropPockets(std::vector<std::vector<int>>& faces, std::vector<char>& band,
+                const std::vector<Eigen::Vector3d>& points, double smallestPart) {
   UnionFind components(points.size());
   for (const auto& f : faces)
     for (size_t k = 1; k < f.size(); ++k) components.join(f[k], f[0]);
@@ -61,7 +61,8 @@ int dropPockets(std::vector<std::vector<int>>& faces, std::vector<char>& band, c
   for (const auto& f : faces) {
     auto& [volume, area] = volumeAndArea[components.find(f[0])];
     for (size_t k = 1; k + 1 < f.size(); ++k) {
-      const Eigen::Vector3d &a = points[size_t(f[0])], &b = points[size_t(f[k])], &c = points[size_t(f[k + 1])];
+      const Eigen::Vector3d &a = points[size_t(f[0])], &b = points[size_t(f[k])],
+                            &c = points[size_t(f[k + 1])];
       volume += a.dot(b.cross(c)) / 6;
       area += (b - a).cross(c - a).norm() / 2;
     }
@@ -98,8 +99,10 @@ void closeOpenEdges(const std::vector<std::array<int, 3>>& triangles, const std:
   std::map<int, std::vector<size_t>> dropped;
   for (size_t t = 0; t < triangles.size(); ++t) {
     const int side = sideOf[patch[t]];
-    if (side != 0) edgesOf(t, side, kept);
-    else dropped[patch[t]].push_back(t);
+    if (side != 0)
+      edgesOf(t, side, kept);
+    else
+      dropped[patch[t]].push_back(t);
   }
   std::sort(kept.begin(), kept.end());
   std::map<uint64_t, int> open;  // edge -> net direction of the kept triangles, where it is not 0
@@ -179,7 +182,7 @@ bool buildSurface(const SqmMesh& mesh, ExactSurface& exact, std::string& error) 
 // triangles. (Indices of their own: the surface may hold removed elements.)
 struct RoundedSurface {
   std::vector<Eigen::Vector3d> points;
-  std::vector<int> node;                        // per point; -1 a capsule node
+  std::vector<int> node;  // per point; -1 a capsule node
   std::vector<std::array<int, 3>> triangles;
   std::vector<Face> faceOf;                     // per triangle
   std::vector<int> vertexIndex, triangleIndex;  // by the surface's vertex and face index
@@ -216,12 +219,15 @@ RoundedSurface roundedSurface(const ExactSurface& exact, const SqmMesh& mesh) {
   std::map<std::array<double, 3>, int> atPoint;
   std::vector<int> merged(r.points.size());
   for (size_t v = 0; v < r.points.size(); ++v)
-    merged[v] = atPoint.emplace(std::array<double, 3>{r.points[v].x(), r.points[v].y(), r.points[v].z()}, int(v))
-                    .first->second;
-  for (const Vertex v : surface.vertices()) r.vertexIndex[size_t(v)] = merged[size_t(r.vertexIndex[size_t(v)])];
+    merged[v] =
+        atPoint.emplace(std::array<double, 3>{r.points[v].x(), r.points[v].y(), r.points[v].z()}, int(v))
+            .first->second;
+  for (const Vertex v : surface.vertices())
+    r.vertexIndex[size_t(v)] = merged[size_t(r.vertexIndex[size_t(v)])];
   for (const auto e : surface.edges())
     if (exact.curve[e])
-      r.curves.emplace_back(r.vertexIndex[size_t(surface.vertex(e, 0))], r.vertexIndex[size_t(surface.vertex(e, 1))]);
+      r.curves.emplace_back(r.vertexIndex[size_t(surface.vertex(e, 0))],
+                            r.vertexIndex[size_t(surface.vertex(e, 1))]);
   for (const Face f : surface.faces()) {
     r.triangleIndex[size_t(f)] = int(r.triangles.size());
     r.faceOf.push_back(f);
@@ -271,22 +277,28 @@ std::vector<int> triangleSides(const ExactSurface& exact, const RoundedSurface& 
   for (size_t t = 0; t < triangles.size(); ++t)
     refined.faces.row(Eigen::Index(t)) << triangles[t][0], triangles[t][1], triangles[t][2];
   const InsideTest winding(refined);
-  inParallel(patches.size(), [&](size_t k) {  // each patch: six rays through the whole mesh
-    std::map<int, int> votes;
-    for (const int sample : patches[k].second) {
-      const size_t t = size_t(sample);
-      if (!(area[t] > 0)) continue;
-      const Eigen::Vector3d centre = (points[size_t(triangles[t][0])] + points[size_t(triangles[t][1])] +
-                                      points[size_t(triangles[t][2])]) / 3;
-      const Eigen::Vector3d offset = 1e-3 * std::sqrt(area[t]) * normal[t].normalized();
-      const bool solidBehind = winding.wrapped(centre - offset), solidInFront = winding.wrapped(centre + offset);
-      ++votes[solidBehind == solidInFront ? 0 : solidBehind ? 1 : -1];
-    }
-    side[k] = votes.empty() ? 0
-                            : std::max_element(votes.begin(), votes.end(), [](const auto& x, const auto& y) {
-                                return x.second < y.second;
-                              })->first;
-  }, 2);
+  inParallel(
+      patches.size(),
+      [&](size_t k) {  // each patch: six rays through the whole mesh
+        std::map<int, int> votes;
+        for (const int sample : patches[k].second) {
+          const size_t t = size_t(sample);
+          if (!(area[t] > 0)) continue;
+          const Eigen::Vector3d centre = (points[size_t(triangles[t][0])] + points[size_t(triangles[t][1])] +
+                                          points[size_t(triangles[t][2])]) /
+                                         3;
+          const Eigen::Vector3d offset = 1e-3 * std::sqrt(area[t]) * normal[t].normalized();
+          const bool solidBehind = winding.wrapped(centre - offset),
+                     solidInFront = winding.wrapped(centre + offset);
+          ++votes[solidBehind == solidInFront ? 0 : solidBehind ? 1 : -1];
+        }
+        side[k] = votes.empty()
+                      ? 0
+                      : std::max_element(votes.begin(), votes.end(), [](const auto& x, const auto& y) {
+                          return x.second < y.second;
+                        })->first;
+      },
+      2);
   std::map<int, int> sideOf;
   for (size_t k = 0; k < patches.size(); ++k) sideOf[patches[k].first] = side[k];
   std::vector<int> patch(triangles.size());
@@ -308,8 +320,10 @@ SqmMesh keptPolygons(const SqmMesh& mesh, const ExactSurface& exact, const Round
   for (size_t t = 0; t < r.triangles.size(); ++t) {
     const Face f = r.faceOf[t];
     const size_t p = size_t(tracker.polygon[f]);
-    if (tracker.cut[f]) polygonCut[p] = true;
-    else if (triangleSide[t] != 0) ++(triangleSide[t] > 0 ? keptTriangles[p] : turnedTriangles[p]);
+    if (tracker.cut[f])
+      polygonCut[p] = true;
+    else if (triangleSide[t] != 0)
+      ++(triangleSide[t] > 0 ? keptTriangles[p] : turnedTriangles[p]);
   }
   const auto whole = [&](size_t p) {
     const int needed = int(mesh.faces[p].size()) - 2;
@@ -336,8 +350,10 @@ SqmMesh keptPolygons(const SqmMesh& mesh, const ExactSurface& exact, const Round
     united.faces.push_back(polygon);
   }
   for (size_t p = 0; p < mesh.faces.size(); ++p) {
-    if (polygonCut[p]) ++result.cutPolygons;
-    else if (keptTriangles[p] + turnedTriangles[p] == 0) ++result.removedPolygons;
+    if (polygonCut[p])
+      ++result.cutPolygons;
+    else if (keptTriangles[p] + turnedTriangles[p] == 0)
+      ++result.removedPolygons;
     if (!polygonCut[p] && turnedTriangles[p] > 0) ++result.turnedPolygons;
   }
   return united;
@@ -375,8 +391,8 @@ SqmMesh withoutUnusedVertices(SqmMesh united, std::vector<int>& used) {
 // kCleanupRounds times. The mesh before is tested only when the cleaned one cuts itself at all.
 constexpr int kCleanupRounds = 4;
 
-void cleanAlongCurves(SqmMesh& mesh, const std::vector<char>& band, const std::vector<std::pair<int, int>>& curves,
-                      SqmUnionResult& result) {
+void cleanAlongCurves(SqmMesh& mesh, const std::vector<char>& band,
+                      const std::vector<std::pair<int, int>>& curves, SqmUnionResult& result) {
   int pairsBefore = -1;  // the uncleaned mesh's, counted when needed
   const auto uncleanedPairs = [&] {
     if (pairsBefore < 0) pairsBefore = int(selfIntersectingFaces(mesh.vertices, mesh.faces).size());
@@ -412,7 +428,9 @@ void cleanAlongCurves(SqmMesh& mesh, const std::vector<char>& band, const std::v
 
 }  // namespace
 
-SqmOverlaps sqmOverlaps(const SqmMesh& mesh) { return sqmOverlaps(mesh, selfIntersectingFaces(mesh.vertices, mesh.faces)); }
+SqmOverlaps sqmOverlaps(const SqmMesh& mesh) {
+  return sqmOverlaps(mesh, selfIntersectingFaces(mesh.vertices, mesh.faces));
+}
 
 SqmOverlaps sqmOverlaps(const SqmMesh& mesh, const std::vector<std::pair<int, int>>& facePairs) {
   SqmOverlaps overlaps;
@@ -435,8 +453,8 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
   if (!buildSurface(mesh, exact, result.error)) return result;
   // Stage 2: every intersection curve becomes edges (marked), no two triangles cut each other any more.
   Stopwatch clock;
-  PMP::experimental::autorefine(exact.surface,
-                                CGAL::parameters::visitor(exact.tracker).edge_is_constrained_map(exact.curve));
+  PMP::experimental::autorefine(
+      exact.surface, CGAL::parameters::visitor(exact.tracker).edge_is_constrained_map(exact.curve));
   result.autorefineSeconds = clock.seconds();
   const RoundedSurface rounded = roundedSurface(exact, mesh);
   const std::vector<int> sides = triangleSides(exact, rounded);
@@ -449,8 +467,9 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
   SqmMesh compact = withoutUnusedVertices(std::move(united), used);
   const MeshTopology topology = topologyOf(compact);
   if (!topology.isClosedManifold()) {
-    result.error = "the union is not a closed manifold (" + std::to_string(topology.borderEdges) + " border and " +
-                   std::to_string(topology.nonManifoldEdges) + " non-manifold edges): no union";
+    result.error = "the union is not a closed manifold (" + std::to_string(topology.borderEdges) +
+                   " border and " + std::to_string(topology.nonManifoldEdges) +
+                   " non-manifold edges): no union";
     return result;
   }
   std::vector<std::pair<int, int>> curves;

@@ -40,15 +40,15 @@ SqmOverlaps sqmOverlaps(const SqmMesh& mesh);
 SqmOverlaps sqmOverlaps(const SqmMesh& mesh, const std::vector<std::pair<int, int>>& facePairs);
 
 struct SqmUnionResult {
-  SqmOverlaps before;          // what the mesh had
-  int cutPolygons = 0;         // polygons cut along an intersection curve or removed in part
-  int removedPolygons = 0;     // polygons wholly inside the volume, removed
-  int turnedPolygons = 0;      // polygons turned over (the solid lay in front of them)
-  int droppedPockets = 0;      // closed components enclosing no volume or less than the smallest part, dropped
+  SqmOverlaps before;       // what the mesh had
+  int cutPolygons = 0;      // polygons cut along an intersection curve or removed in part
+  int removedPolygons = 0;  // polygons wholly inside the volume, removed
+  int turnedPolygons = 0;   // polygons turned over (the solid lay in front of them)
+  int droppedPockets = 0;   // closed components enclosing no volume or less than the smallest part, dropped
   double autorefineSeconds = 0, selectionSeconds = 0;  // CGAL's cutting; the winding numbers
-  CurveCleanup cleanup;  // the cut triangles along the curves (CurveCleanup)
-  int intersectingAfter = 0;   // face pairs still cutting each other after rounding (0 expected)
-  std::string error;           // when the union is not a closed manifold (tubes touching along a line)
+  CurveCleanup cleanup;                                // the cut triangles along the curves (CurveCleanup)
+  int intersectingAfter = 0;  // face pairs still cutting each other after rounding (0 expected)
+  std::string error;          // when the union is not a closed manifold (tubes touching along a line)
   bool ok() const { return error.empty(); }
 };
 

@@ -90,7 +90,8 @@ std::vector<int> SweptSpheres::edgesNear(const Eigen::Vector3d& low, const Eigen
                                          double margin) const {
   std::vector<int> edges;
   for (size_t e = 0; e < low_.size(); ++e)
-    if (((low_[e].array() - margin) <= high.array()).all() && ((high_[e].array() + margin) >= low.array()).all())
+    if (((low_[e].array() - margin) <= high.array()).all() &&
+        ((high_[e].array() + margin) >= low.array()).all())
       edges.push_back(int(e));
   return edges;
 }

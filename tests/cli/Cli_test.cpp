@@ -238,8 +238,8 @@ TEST(Cli, SqmWritesItsStagesAndRefusesAnUnmakeableDirectory) {
 TEST(Cli, CenterlineWritesThePapersStages) {
   const std::string dir = scratchDir("cli-centerline-stages");
   const std::string volume = dataPath("volumes/tubes/u.nii.gz");
-  auto r = runCommand(medialCommand("centerline " + volume + " -o " + dir + "/u.vtp --label 1 --stages " + dir +
-                                    "/stages --quiet"));
+  auto r = runCommand(medialCommand("centerline " + volume + " -o " + dir + "/u.vtp --label 1 --stages " +
+                                    dir + "/stages --quiet"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (const char* name : {"voxels.vtp", "labels.vti", "primitive.vtp", "tsk-model.vtp", "tsk-fits.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/stages/" + name)) << name;
@@ -247,7 +247,8 @@ TEST(Cli, CenterlineWritesThePapersStages) {
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header, "t,x_mm,y_mm,z_mm");
-  auto usage = runCommand(medialCommand("centerline " + volume + " -o " + dir + "/x.vtp --branches --stages " + dir));
+  auto usage =
+      runCommand(medialCommand("centerline " + volume + " -o " + dir + "/x.vtp --branches --stages " + dir));
   EXPECT_EQ(usage.exitCode, 2) << usage.err;
 }
 
@@ -314,12 +315,13 @@ TEST(Cli, SkeletonWritesRigsAsGlbAndFbx) {
 // skeleton it was made from.
 TEST(Cli, RigBindsSketchAndSqmMeshesToTheirSkeletons) {
   const std::string dir = scratchDir("cli-rig-any");
-  ASSERT_EQ(runCommand(medialCommand("sketch " + dataPath("sketches/star.txt") + " -o " + dir + "/star.vtp --mesh " +
-                                     dir + "/star-mesh.vtp --quiet"))
+  ASSERT_EQ(runCommand(medialCommand("sketch " + dataPath("sketches/star.txt") + " -o " + dir +
+                                     "/star.vtp --mesh " + dir + "/star-mesh.vtp --quiet"))
                 .exitCode,
             0);
-  auto sketch = runCommand(medialCommand("rig " + dir + "/star.vtp " + dir + "/star-mesh.vtp -o " + dir +
-                                         "/star.fbx --weights " + dir + "/star-weights.vtp --quiet --timings"));
+  auto sketch =
+      runCommand(medialCommand("rig " + dir + "/star.vtp " + dir + "/star-mesh.vtp -o " + dir +
+                               "/star.fbx --weights " + dir + "/star-weights.vtp --quiet --timings"));
   ASSERT_EQ(sketch.exitCode, 0) << sketch.err;
   EXPECT_NE(sketch.out.find("\"weights\""), std::string::npos) << sketch.out;
   EXPECT_TRUE(std::filesystem::exists(dir + "/star.fbx"));
@@ -336,10 +338,10 @@ TEST(Cli, RigBindsSketchAndSqmMeshesToTheirSkeletons) {
 TEST(Cli, RigErrorsAreOneLineAndLeaveNoFile) {
   const std::string dir = scratchDir("cli-rig-errors");
   const std::string skeleton = dataPath("skeletons/sqm/fish.vtp"), torus = dataPath("meshes/torus.off");
-  for (const std::string& args : {"rig " + skeleton, "rig " + skeleton + " " + torus,
-                                  "rig " + skeleton + " " + torus + " -o rig.obj",
-                                  "rig " + skeleton + " " + torus + " -o rig.glb --max-influences 0",
-                                  "rig " + skeleton + " " + torus + " -o rig.glb --root -2"}) {
+  for (const std::string& args :
+       {"rig " + skeleton, "rig " + skeleton + " " + torus, "rig " + skeleton + " " + torus + " -o rig.obj",
+        "rig " + skeleton + " " + torus + " -o rig.glb --max-influences 0",
+        "rig " + skeleton + " " + torus + " -o rig.glb --root -2"}) {
     auto r = runCommand(medialCommand(args));
     EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
   }
@@ -366,19 +368,21 @@ TEST(Cli, SqmNotesOverlapsAndUnitesThem) {
   const std::string crossing = dataPath("skeletons/overlapping/crossing.vtp");
   auto plain = runCommand(medialCommand("sqm " + crossing + " -o " + dir + "/plain.vtp --quiet --timings"));
   ASSERT_EQ(plain.exitCode, 0) << plain.err;
-  EXPECT_NE(plain.err.find("tubes overlap at 6 pairs of nodes (32 pairs of faces cut each other)"), std::string::npos)
+  EXPECT_NE(plain.err.find("tubes overlap at 6 pairs of nodes (32 pairs of faces cut each other)"),
+            std::string::npos)
       << plain.err;
   EXPECT_NE(plain.err.find("--union makes it one closed surface"), std::string::npos) << plain.err;
   EXPECT_NE(plain.out.find("\"sqm.overlapping_face_pairs\": 32"), std::string::npos) << plain.out;
-  auto united = runCommand(medialCommand("sqm " + crossing + " -o " + dir + "/united.obj --quiet --union --timings"));
+  auto united =
+      runCommand(medialCommand("sqm " + crossing + " -o " + dir + "/united.obj --quiet --union --timings"));
   ASSERT_EQ(united.exitCode, 0) << united.err;
   EXPECT_NE(united.err.find("the union cut"), std::string::npos) << united.err;
   EXPECT_EQ(united.err.find("--union makes"), std::string::npos) << united.err;
   EXPECT_NE(united.out.find("\"sqm.union\""), std::string::npos) << united.out;
   EXPECT_TRUE(std::filesystem::exists(dir + "/united.obj"));
   // A skeleton without overlaps: no note.
-  auto worm = runCommand(
-      medialCommand("sqm " + dataPath("skeletons/sqm/worm.vtp") + " -o " + dir + "/worm.vtp --quiet --union"));
+  auto worm = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/worm.vtp") + " -o " + dir +
+                                       "/worm.vtp --quiet --union"));
   ASSERT_EQ(worm.exitCode, 0) << worm.err;
   EXPECT_EQ(worm.err.find("overlap"), std::string::npos) << worm.err;
 }
@@ -432,8 +436,9 @@ TEST(Cli, SqmWritesAQuadMeshAndFailsClearly) {
   auto table = runCommand(medialCommand("sqm " + dataPath("skeletons/sqm/quadruped.vtp") + " -o " + dir +
                                         "/q2.vtp --quiet --timings"));
   ASSERT_EQ(table.exitCode, 0) << table.err;
-  for (const char* key : {"sqm.straightening", "sqm.generation", "sqm.refinement", "sqm.joining", "sqm.skinning",
-                          "sqm.subdivision", "sqm.repairs", "sqm.branch_nodes", "sqm.irregular_vertices"})
+  for (const char* key :
+       {"sqm.straightening", "sqm.generation", "sqm.refinement", "sqm.joining", "sqm.skinning",
+        "sqm.subdivision", "sqm.repairs", "sqm.branch_nodes", "sqm.irregular_vertices"})
     EXPECT_NE(table.out.find(std::string("\"") + key + "\""), std::string::npos) << key << ": " << table.out;
   EXPECT_NE(table.out.find("\"sqm.merged_nodes\": 25"), std::string::npos) << table.out;
   auto hand = runCommand(medialCommand("sqm " + dataPath("skeletons/hand.swc") + " -o " + dir +
@@ -619,7 +624,8 @@ TEST(Cli, RenderWritesTheImportanceMap) {
     }
   EXPECT_GT(white, 0.02 * 200 * 150);
   EXPECT_GT(black, 0.3 * 200 * 150);
-  auto usage = runCommand(medialCommand("render " + skeleton + " -o " + dir + "/x.png --importance-map " + map));
+  auto usage =
+      runCommand(medialCommand("render " + skeleton + " -o " + dir + "/x.png --importance-map " + map));
   EXPECT_EQ(usage.exitCode, 2) << "needs --ghost";
 }
 

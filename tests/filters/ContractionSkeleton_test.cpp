@@ -268,8 +268,11 @@ TEST(ContractionSkeleton, RecordedStagesShowTheMeshContractingOntoTheSkeleton) {
   for (const char* name : {"ContractionWeight", "Iteration", "AreaRatio", "VolumeRatio"})
     EXPECT_TRUE(last->GetFieldData()->GetArray(name)) << name;
   // W_L grows by s_L each iteration until its cap; the area shrinks to a sliver.
-  const auto field = [](vtkPolyData* mesh, const char* name) { return mesh->GetFieldData()->GetArray(name)->GetComponent(0, 0); };
-  EXPECT_GT(field(filter->GetContractionStep(2), "ContractionWeight"), field(filter->GetContractionStep(1), "ContractionWeight"));
+  const auto field = [](vtkPolyData* mesh, const char* name) {
+    return mesh->GetFieldData()->GetArray(name)->GetComponent(0, 0);
+  };
+  EXPECT_GT(field(filter->GetContractionStep(2), "ContractionWeight"),
+            field(filter->GetContractionStep(1), "ContractionWeight"));
   EXPECT_LT(field(last, "AreaRatio"), 0.05);
 
   // The last step lies on the skeleton the surgery made of it: every vertex near one of its edges.

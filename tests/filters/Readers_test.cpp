@@ -322,8 +322,8 @@ TEST(Readers, TruncatedOffFailsAtOnce) {
 TEST(Readers, FuzzCorpusGivesAResultOrAnError) {
   const std::string dir = scratchDir("fuzz-corpus");
   int files = 0;
-  for (const auto& [kind, extension] : {std::make_pair("off", ".off"), std::make_pair("swc", ".swc"),
-                                        std::make_pair("sketch", ".txt")}) {
+  for (const auto& [kind, extension] :
+       {std::make_pair("off", ".off"), std::make_pair("swc", ".swc"), std::make_pair("sketch", ".txt")}) {
     const std::filesystem::path corpus = medial::test::sourceDir() + "/tests/fuzz/corpus/" + kind;
     for (const auto& entry : std::filesystem::directory_iterator(corpus)) {
       const std::string copy = dir + "/" + entry.path().stem().string() + extension;
@@ -338,7 +338,8 @@ TEST(Readers, FuzzCorpusGivesAResultOrAnError) {
   }
   EXPECT_GE(files, 7);
   // The .inv3 corpus holds main.plist files: each is packed as InVesalius does, with a 4x4x4 int16 matrix.
-  for (const auto& entry : std::filesystem::directory_iterator(medial::test::sourceDir() + "/tests/fuzz/corpus/inv3")) {
+  for (const auto& entry :
+       std::filesystem::directory_iterator(medial::test::sourceDir() + "/tests/fuzz/corpus/inv3")) {
     const std::string project = dir + "/project";
     std::filesystem::remove_all(project);
     std::filesystem::create_directories(project);
@@ -360,7 +361,8 @@ TEST(Readers, FuzzCorpusGivesAResultOrAnError) {
 TEST(Readers, VolumeHeadersClaimingTooManyVoxelsAreRefused) {
   const std::string dir = scratchDir("huge-volumes");
   const std::string header = "ObjectType = Image\nNDims = 3\nElementType = MET_UCHAR\n";
-  writeText(dir + "/4gb.mha", header + "DimSize = 2000 2000 1000\nElementDataFile = LOCAL\n" + std::string(100, '\1'));
+  writeText(dir + "/4gb.mha",
+            header + "DimSize = 2000 2000 1000\nElementDataFile = LOCAL\n" + std::string(100, '\1'));
   writeText(dir + "/petabyte.mha", header + "DimSize = 100000 100000 100000\nElementDataFile = LOCAL\n");
   // The peak resident size, not a time, shows nothing was allocated: a time limit failed on a loaded CI
   // machine (3.2 s under AddressSanitizer beside another test, 9 ms alone).
@@ -394,11 +396,12 @@ TEST(Readers, ClearErrorsOnBadFiles) {
        {Case{dir + "/missing.off", "no such file"}, Case{dir + "/notes.docx", "unsupported file type"},
         Case{dir + "/notes.txt", "notes.txt:1: expected 'x y'"}, Case{dir + "/garbage.vtp", ""},
         Case{dir + "/garbage.off", "the file ends early (3 vertices and 1 faces announced"},
-                        Case{dir + "/truncated.off", "the file ends early (10000000 vertices and 1 faces announced"},
-                        Case{dir + "/huge.off", "huge.off:4: the number 1e300 is not finite or too large"},
-                        Case{dir + "/negative.off", "announces -3 vertices"},
-        Case{dir + "/bad-index.off", "bad-index.off:6: face 0 refers to vertex 7, which does not exist"}, Case{dir + "/empty.obj", "holds no mesh"},
-        Case{dir + "/garbage.nii", ""}, Case{dir + "/garbage.inv3", "not an InVesalius project"}}) {
+        Case{dir + "/truncated.off", "the file ends early (10000000 vertices and 1 faces announced"},
+        Case{dir + "/huge.off", "huge.off:4: the number 1e300 is not finite or too large"},
+        Case{dir + "/negative.off", "announces -3 vertices"},
+        Case{dir + "/bad-index.off", "bad-index.off:6: face 0 refers to vertex 7, which does not exist"},
+        Case{dir + "/empty.obj", "holds no mesh"}, Case{dir + "/garbage.nii", ""},
+        Case{dir + "/garbage.inv3", "not an InVesalius project"}}) {
     const ReadResult r = readFile(c.path);
     EXPECT_FALSE(r.error.empty()) << c.path;
     EXPECT_NE(r.error.find(c.path), std::string::npos) << r.error;

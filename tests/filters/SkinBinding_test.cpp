@@ -94,7 +94,8 @@ TEST(SkinBinding, BadInputsAreErrorsWithEmptyOutputs) {
   // away from a mesh in millimetres.
   EXPECT_NE(run(humanoid, humanoid).find("has no polygons"), std::string::npos);
   EXPECT_NE(run(sphere->GetOutput(), sphere->GetOutput()).find("the skeleton: "), std::string::npos);
-  EXPECT_NE(run(sphere->GetOutput(), humanoid, 100000).find("is not a node of the skeleton"), std::string::npos);
+  EXPECT_NE(run(sphere->GetOutput(), humanoid, 100000).find("is not a node of the skeleton"),
+            std::string::npos);
   auto far = vtkSmartPointer<vtkSphereSource>::New();
   far->SetCenter(1000, 0, 0);
   far->Update();

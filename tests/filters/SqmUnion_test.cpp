@@ -36,7 +36,7 @@ struct OverlapCase {
   const char* name;
   std::string path;  // a skeleton file, or a sketch (.txt) whose skeleton is meshed
   int levels;
-  bool capsules;  // the swept spheres' union has round ends: compare volumes with capsules only
+  bool capsules;             // the swept spheres' union has round ends: compare volumes with capsules only
   double sliverShare = 0.2;  // at most this share of the triangles are slivers (without the cleanup: 42-78 %)
 };
 
@@ -69,7 +69,8 @@ double sweptVolume(const medial::Skeleton& s) {
   const int samples = 200000;
   int inside = 0;
   for (int k = 0; k < samples; ++k) {
-    const Eigen::Vector3d p = low + (high - low).cwiseProduct(Eigen::Vector3d(unit(random), unit(random), unit(random)));
+    const Eigen::Vector3d p =
+        low + (high - low).cwiseProduct(Eigen::Vector3d(unit(random), unit(random), unit(random)));
     inside += swept.signedDistance(p) < 0;
   }
   return (high - low).prod() * inside / samples;
@@ -114,13 +115,15 @@ TEST_P(SqmUnion, OverlapsBecomeOneClosedSurfaceAroundTheSkeleton) {
   const auto points = medial::pointsOf(mesh);
   const auto faces = medial::polygonsOf(mesh);
   const medial::MeshTopology topology = medial::computeMeshTopology(mesh->GetNumberOfPoints(), faces);
-  EXPECT_TRUE(topology.isClosedManifold()) << topology.borderEdges << " border, " << topology.nonManifoldEdges << " non-manifold";
+  EXPECT_TRUE(topology.isClosedManifold())
+      << topology.borderEdges << " border, " << topology.nonManifoldEdges << " non-manifold";
   EXPECT_EQ(topology.components, 1);
   check->SetInputData(mesh);  // CGAL's exact test (one run: the dense tree under the sanitizers is slow)
   check->Update();
   EXPECT_EQ(check->GetNumberOfIntersectingFacePairs(), 0);
   // Quads stay quads away from the intersection curves (refined: the base mesh's cut quads are most of it).
-  const double quads = double(std::count_if(faces.begin(), faces.end(), [](const auto& f) { return f.size() == 4; }));
+  const double quads =
+      double(std::count_if(faces.begin(), faces.end(), [](const auto& f) { return f.size() == 4; }));
   if (c.levels > 0) {
     EXPECT_GE(quads / double(faces.size()), 0.4);
   }
@@ -156,10 +159,11 @@ TEST_P(SqmUnion, OverlapsBecomeOneClosedSurfaceAroundTheSkeleton) {
   EXPECT_LE(slivers, c.sliverShare * triangleCount);
   const double volume = medial::enclosedVolume(triangles.vertices, triangles.faces);
   const double swept = sweptVolume(skeleton);
-  std::printf("%s: %d overlapping face pairs, %d cut polygons; %zu faces, %.0f %% quads, volume %.4g = %.3f of "
-              "the swept spheres' union (sampled), %.2f s\n",
-              c.name, overlapping, sqm->GetUnionCutPolygons(), faces.size(), 100 * quads / double(faces.size()),
-              volume, volume / swept, sqm->GetStageSeconds("union"));
+  std::printf(
+      "%s: %d overlapping face pairs, %d cut polygons; %zu faces, %.0f %% quads, volume %.4g = %.3f of "
+      "the swept spheres' union (sampled), %.2f s\n",
+      c.name, overlapping, sqm->GetUnionCutPolygons(), faces.size(), 100 * quads / double(faces.size()),
+      volume, volume / swept, sqm->GetStageSeconds("union"));
   if (c.capsules) {
     EXPECT_NEAR(volume / swept, 1.0, 0.05);
   }
@@ -167,12 +171,13 @@ TEST_P(SqmUnion, OverlapsBecomeOneClosedSurfaceAroundTheSkeleton) {
 
 INSTANTIATE_TEST_SUITE_P(
     Overlapping, SqmUnion,
-    ::testing::Values(OverlapCase{"crossing tubes", "skeletons/overlapping/crossing.vtp", 0, false},
-                      OverlapCase{"crossing tubes refined twice", "skeletons/overlapping/crossing.vtp", 2, true},
-                      OverlapCase{"crossing tubes refined three times", "skeletons/overlapping/crossing.vtp", 3, true},
-                      OverlapCase{"dense tree refined twice", "skeletons/overlapping/dense-tree.vtp", 2, true},
-                      OverlapCase{"hand sketch", "sketches/hand.txt", 0, false, 0.25},
-                      OverlapCase{"hand sketch refined twice", "sketches/hand.txt", 2, true, 1.0}),
+    ::testing::Values(
+        OverlapCase{"crossing tubes", "skeletons/overlapping/crossing.vtp", 0, false},
+        OverlapCase{"crossing tubes refined twice", "skeletons/overlapping/crossing.vtp", 2, true},
+        OverlapCase{"crossing tubes refined three times", "skeletons/overlapping/crossing.vtp", 3, true},
+        OverlapCase{"dense tree refined twice", "skeletons/overlapping/dense-tree.vtp", 2, true},
+        OverlapCase{"hand sketch", "sketches/hand.txt", 0, false, 0.25},
+        OverlapCase{"hand sketch refined twice", "sketches/hand.txt", 2, true, 1.0}),
     [](const ::testing::TestParamInfo<OverlapCase>& info) {
       std::string name = info.param.name;
       std::replace(name.begin(), name.end(), ' ', '_');

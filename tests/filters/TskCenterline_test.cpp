@@ -462,7 +462,9 @@ TEST(TskCenterlineFilter, RecordedStagesAreThePapersIntermediates) {
     primitive->GetPoint(k, p);
     image->TransformPhysicalPointToContinuousIndex(p, index);
     EXPECT_EQ(image->GetScalarComponentAsDouble(int(std::lround(index[0])), int(std::lround(index[1])),
-                                                int(std::lround(index[2])), 0), 1.0) << k;
+                                                int(std::lround(index[2])), 0),
+              1.0)
+        << k;
   }
   // The layers and clusters as label volumes (for the slice views): as many labelled voxels as the
   // structure has, layer 0 at P0.
@@ -477,9 +479,11 @@ TEST(TskCenterlineFilter, RecordedStagesAreThePapersIntermediates) {
   primitive->GetPoint(0, p0);
   labels->TransformPhysicalPointToContinuousIndex(p0, p0Index);
   EXPECT_EQ(labels->GetScalarComponentAsDouble(int(std::lround(p0Index[0])), int(std::lround(p0Index[1])),
-                                               int(std::lround(p0Index[2])), 0), 0.0);
+                                               int(std::lround(p0Index[2])), 0),
+            0.0);
   vtkDataArray* t = model->GetPointData()->GetArray("T");
-  for (vtkIdType k = 1; k < model->GetNumberOfPoints(); ++k) EXPECT_GT(t->GetComponent(k, 0), t->GetComponent(k - 1, 0));
+  for (vtkIdType k = 1; k < model->GetNumberOfPoints(); ++k)
+    EXPECT_GT(t->GetComponent(k, 0), t->GetComponent(k - 1, 0));
   // The paper's curve (before centring) against the output (centred), both measured against the true axis.
   const auto meanError = [&](vtkPolyData* line) {
     double sum = 0;

@@ -1,5 +1,5 @@
-// Fuzz target: vtkMedialOFFReader on any bytes. It must report an error or give a polydata, never crash, hang or
-// allocate without bound.
+// Fuzz target: vtkMedialOFFReader on any bytes. It must report an error or give a polydata, never crash, hang
+// or allocate without bound.
 #include "FuzzFile.h"
 #include "vtkMedialOFFReader.h"
 

@@ -36,7 +36,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   auto lines = vtkSmartPointer<vtkCellArray>::New();
   const int edgeCount = in.ConsumeIntegralInRange(0, 16);
   for (int e = 0; e < edgeCount; ++e) {
-    const vtkIdType ids[2] = {in.ConsumeIntegralInRange<vtkIdType>(-1, 13), in.ConsumeIntegralInRange<vtkIdType>(-1, 13)};
+    const vtkIdType ids[2] = {in.ConsumeIntegralInRange<vtkIdType>(-1, 13),
+                              in.ConsumeIntegralInRange<vtkIdType>(-1, 13)};
     lines->InsertNextCell(2, ids);
   }
   skeleton->SetPoints(nodes);
@@ -51,9 +52,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // The mesh: a tetrahedron with SkinWeights of any number of components and any values.
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   auto corners = vtkSmartPointer<vtkPoints>::New();
-  for (const auto& p : {std::array<double, 3>{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}) corners->InsertNextPoint(p.data());
+  for (const auto& p : {std::array<double, 3>{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}})
+    corners->InsertNextPoint(p.data());
   auto faces = vtkSmartPointer<vtkCellArray>::New();
-  for (auto f : {std::array<vtkIdType, 3>{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}) faces->InsertNextCell(3, f.data());
+  for (auto f : {std::array<vtkIdType, 3>{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}})
+    faces->InsertNextCell(3, f.data());
   mesh->SetPoints(corners);
   mesh->SetPolys(faces);
   auto weights = vtkSmartPointer<vtkDoubleArray>::New();
@@ -65,7 +68,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       weights->SetComponent(v, c, in.ConsumeFloatingPoint<double>());
   mesh->GetPointData()->AddArray(weights);
 
-  const std::string path = "/tmp/medial-fuzz-" + std::to_string(::getpid()) + (in.ConsumeBool() ? ".glb" : ".fbx");
+  const std::string path =
+      "/tmp/medial-fuzz-" + std::to_string(::getpid()) + (in.ConsumeBool() ? ".glb" : ".fbx");
   auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
   writer->SetFileName(path.c_str());
   writer->SetInputData(0, mesh);

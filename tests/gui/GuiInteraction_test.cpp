@@ -172,7 +172,8 @@ TEST_F(GuiInteraction, SkeletonEditorDragsANodeAndItsMeshFollows) {
 
   // The wheel over the node grows its radius by 10 % a notch; two notches merge into one undo step.
   const double radius = editor->skeleton().radii[size_t(leaf)];
-  const QPoint there = medial::gui::widgetPosition(renderer, view, editor->skeleton().nodes[size_t(leaf)]).toPoint();
+  const QPoint there =
+      medial::gui::widgetPosition(renderer, view, editor->skeleton().nodes[size_t(leaf)]).toPoint();
   for (int notch = 0; notch < 2; ++notch) {
     QWheelEvent wheel(there, view->mapToGlobal(there), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
                       Qt::NoScrollPhase, false);
@@ -189,9 +190,12 @@ TEST_F(GuiInteraction, SkeletonEditorDragsANodeAndItsMeshFollows) {
   Eigen::Vector3d middle = Eigen::Vector3d::Zero();
   double longest = 0;
   for (const auto& edge : editor->skeleton().edges) {
-    const Eigen::Vector3d a = editor->skeleton().nodes[size_t(edge[0])], b = editor->skeleton().nodes[size_t(edge[1])];
-    const QPointF ends = medial::gui::widgetPosition(renderer, view, a) - medial::gui::widgetPosition(renderer, view, b);
-    if (std::hypot(ends.x(), ends.y()) > longest) longest = std::hypot(ends.x(), ends.y()), middle = 0.5 * (a + b);
+    const Eigen::Vector3d a = editor->skeleton().nodes[size_t(edge[0])],
+                          b = editor->skeleton().nodes[size_t(edge[1])];
+    const QPointF ends =
+        medial::gui::widgetPosition(renderer, view, a) - medial::gui::widgetPosition(renderer, view, b);
+    if (std::hypot(ends.x(), ends.y()) > longest)
+      longest = std::hypot(ends.x(), ends.y()), middle = 0.5 * (a + b);
   }
   ASSERT_GT(longest, 40);
   QTest::mouseClick(view, Qt::LeftButton, Qt::ControlModifier,

@@ -325,7 +325,8 @@ TEST_F(GuiWorkflow, SqmUnitesOverlappingTubes) {
   SqmPanel* sqm = window->sqmPanel();
   sqm->setInput(object("crossing.vtp"));
   ASSERT_TRUE(runThroughUi(sqm)) << errors.join("\n").toStdString();
-  EXPECT_TRUE(window->logText().contains("tubes overlap at 6 pairs of nodes")) << window->logText().toStdString();
+  EXPECT_TRUE(window->logText().contains("tubes overlap at 6 pairs of nodes"))
+      << window->logText().toStdString();
   EXPECT_TRUE(window->logText().contains("Union of overlapping tubes"));
   const vtkIdType before = object("crossing.vtp SQM")->polyData()->GetNumberOfPolys();
   sqm->form()->setValue("Union", 1);
@@ -835,7 +836,8 @@ TEST_F(GuiWorkflow, ShowStepsStepsThroughTheStagesOfOneRun) {
     SceneObject* shown = object("torus.off step");
     ASSERT_NE(shown, nullptr) << step;
     EXPECT_GT(shown->polyData()->GetNumberOfPoints(), 0) << step;
-    if (step == 0) firstPoints = shown->polyData()->GetNumberOfPoints(), firstLength = shown->polyData()->GetLength();
+    if (step == 0)
+      firstPoints = shown->polyData()->GetNumberOfPoints(), firstLength = shown->polyData()->GetLength();
     if (shown->polyData()->GetNumberOfPolys() > 0) lastMeshLength = shown->polyData()->GetLength();
   }
   EXPECT_EQ(firstPoints, object("torus.off")->polyData()->GetNumberOfPoints()) << "step 0 is the mesh itself";

@@ -424,7 +424,7 @@ TEST(GhostView, ImportanceMapCoversExactlyTheObjectOfInterest) {
       double difference = 0;
       for (int c = 0; c < 3; ++c)
         difference = std::max(difference, std::abs(alone->GetScalarComponentAsDouble(x, y, 0, c) -
-                                                    alone->GetScalarComponentAsDouble(0, y, 0, c)));
+                                                   alone->GetScalarComponentAsDouble(0, y, 0, c)));
       const vtkIdType i = vtkIdType(y) * 320 + x;
       const bool inMap = values->GetComponent(i, 2) > 0.5, inSphere = difference > 30;
       both += inMap && inSphere;
@@ -433,7 +433,8 @@ TEST(GhostView, ImportanceMapCoversExactlyTheObjectOfInterest) {
       if (inMap) importance = std::max(importance, values->GetComponent(i, 0));
     }
   ASSERT_GT(both, 1000);
-  EXPECT_GT(double(both) / (both + onlyMap + onlySphere), 0.95) << onlyMap << " map-only, " << onlySphere << " sphere-only";
+  EXPECT_GT(double(both) / (both + onlyMap + onlySphere), 0.95)
+      << onlyMap << " map-only, " << onlySphere << " sphere-only";
   EXPECT_NEAR(importance, 0.8, 1e-3);
 
   // A frame without an object of interest keeps no map.

@@ -9,9 +9,9 @@
 
 using medial::testing::appendMesh;
 using medial::testing::topologyOf;
-using medial::testing::withFin;
 using medial::testing::torusMesh;
 using medial::testing::tubeMesh;
+using medial::testing::withFin;
 
 namespace {
 
@@ -47,7 +47,8 @@ TEST(EdgeCoarsening, FineTorusComesDownToTheCountKeepingGenusAndShape) {
 }
 
 TEST(EdgeCoarsening, ComponentsKeepTheirTopology) {
-  const auto mesh = appendMesh(torusMesh(2, 0.5, 200, 60), tubeMesh(6, 0.8, 200, 40), Eigen::RowVector3d(10, 0, 0));
+  const auto mesh =
+      appendMesh(torusMesh(2, 0.5, 200, 60), tubeMesh(6, 0.8, 200, 40), Eigen::RowVector3d(10, 0, 0));
   const medial::CoarsenedMesh coarse = medial::coarsenEdges(mesh, 1000);
   ASSERT_TRUE(coarse.ok);
   const medial::MeshTopology t = topologyOf(coarse.mesh);

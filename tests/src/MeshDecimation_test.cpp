@@ -6,9 +6,9 @@
 
 using medial::testing::appendMesh;
 using medial::testing::topologyOf;
-using medial::testing::withFin;
 using medial::testing::torusMesh;
 using medial::testing::tubeMesh;
+using medial::testing::withFin;
 
 TEST(MeshDecimation, TorusGoesToTheBudgetKeepingItsGenus) {
   const medial::TriangleMesh torus = torusMesh(2, 0.5, 96, 32);  // 3072 vertices

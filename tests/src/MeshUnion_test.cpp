@@ -26,17 +26,21 @@ medial::TriangleMesh rotatedAboutZ(medial::TriangleMesh mesh, double radians) {
 
 medial::MeshTopology topologyOf(const medial::TriangleMesh& mesh) {
   std::vector<std::vector<int64_t>> faces;
-  for (int f = 0; f < mesh.faces.rows(); ++f) faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
+  for (int f = 0; f < mesh.faces.rows(); ++f)
+    faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
   return medial::computeMeshTopology(mesh.vertices.rows(), faces);
 }
 
-double volumeOf(const medial::TriangleMesh& mesh) { return medial::enclosedVolume(mesh.vertices, mesh.faces); }
+double volumeOf(const medial::TriangleMesh& mesh) {
+  return medial::enclosedVolume(mesh.vertices, mesh.faces);
+}
 
 std::vector<std::pair<int, int>> cuts(const medial::TriangleMesh& mesh) {
   std::vector<Eigen::Vector3d> points(size_t(mesh.vertices.rows()));
   for (size_t v = 0; v < points.size(); ++v) points[v] = mesh.vertices.row(Eigen::Index(v)).transpose();
   std::vector<std::vector<int>> faces;
-  for (int f = 0; f < mesh.faces.rows(); ++f) faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
+  for (int f = 0; f < mesh.faces.rows(); ++f)
+    faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
   return medial::selfIntersectingFaces(points, faces);
 }
 
@@ -96,5 +100,6 @@ TEST(MeshUnion, OpenOrSelfCuttingPartsAreErrorsAndInwardPartsAreTurned) {
   medial::TriangleMesh twisted = tubeMesh(4, 1);
   twisted.vertices.row(sides) << -1.9, -1.5, 0;  // ring 1, from y = 1 to beyond y = -1
   EXPECT_NE(medial::meshUnion({twisted}).error.find("part 1 bounds no volume"), std::string::npos);
-  EXPECT_EQ(medial::meshUnion({tubeMesh(4, 1), tubeMesh(4, 1)}, [](double) { return false; }).error, "aborted");
+  EXPECT_EQ(medial::meshUnion({tubeMesh(4, 1), tubeMesh(4, 1)}, [](double) { return false; }).error,
+            "aborted");
 }

@@ -13,7 +13,8 @@ TEST(NormalMatrix, EqualsTheProductOfTheLaplacianWithItselfPlusTheAttraction) {
   torus.vertices.row(torus.vertices.rows() - 1) << 9, 9, 9;
   const Eigen::Index n = torus.vertices.rows();
   const auto laplacianOf = [&](const medial::Vertices& at) {
-    return medial::laplacianFromCotangents(torus.faces, medial::faceCotangents(at, torus.faces, M_PI / 180), n);
+    return medial::laplacianFromCotangents(torus.faces, medial::faceCotangents(at, torus.faces, M_PI / 180),
+                                           n);
   };
   medial::NormalMatrix normal(laplacianOf(torus.vertices));
   medial::Vertices at = torus.vertices;
@@ -35,7 +36,7 @@ TEST(NormalMatrix, EqualsTheProductOfTheLaplacianWithItselfPlusTheAttraction) {
   // A Laplacian of another pattern is refused rather than written into the wrong entries.
   medial::TriangleMesh other = medial::testing::torusMesh(2, 0.5, 12, 8);
   other.vertices.conservativeResize(n, 3);
-  const Eigen::SparseMatrix<double> wrong =
-      medial::laplacianFromCotangents(other.faces, medial::faceCotangents(other.vertices, other.faces, M_PI / 180), n);
+  const Eigen::SparseMatrix<double> wrong = medial::laplacianFromCotangents(
+      other.faces, medial::faceCotangents(other.vertices, other.faces, M_PI / 180), n);
   EXPECT_THROW(normal.update(wrong, 1, Eigen::VectorXd::Ones(n)), std::logic_error);
 }

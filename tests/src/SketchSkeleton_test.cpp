@@ -55,7 +55,8 @@ std::vector<SketchPart> loadSketch(const std::string& name) {
 
 std::vector<std::vector<int64_t>> faceLists(const medial::TriangleMesh& mesh) {
   std::vector<std::vector<int64_t>> faces;
-  for (int f = 0; f < mesh.faces.rows(); ++f) faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
+  for (int f = 0; f < mesh.faces.rows(); ++f)
+    faces.push_back({mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)});
   return faces;
 }
 
@@ -240,7 +241,8 @@ TEST(SketchSkeleton, InflatedPartsJoinIntoOneWatertightMeshAroundTheSkeleton) {
     for (size_t v = 0; v < points.size(); ++v) points[v] = r.mesh.vertices.row(Eigen::Index(v)).transpose();
     EXPECT_TRUE(medial::selfIntersectingFaces(points, faces).empty());
     const medial::InsideTest inside(r.mesh);
-    for (const Eigen::Vector3d& node : r.graph.skeleton.nodes) EXPECT_TRUE(inside.contains(node)) << node.transpose();
+    for (const Eigen::Vector3d& node : r.graph.skeleton.nodes)
+      EXPECT_TRUE(inside.contains(node)) << node.transpose();
     ASSERT_EQ(r.meshVertexPart.size(), points.size());
     for (int k = 0; k < int(parts.size()); ++k)
       EXPECT_NE(std::find(r.meshVertexPart.begin(), r.meshVertexPart.end(), k), r.meshVertexPart.end()) << k;

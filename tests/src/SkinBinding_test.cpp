@@ -23,7 +23,8 @@ TEST(SkinBinding, CentralNodeIsTheMiddleOfTheLongestPath) {
   // A figure: spine 0-1-2 (pelvis 0, chest 2), legs from 0, arms and head from 2. The longest path runs
   // foot to hand; its middle is on the spine, not at a limb's end.
   medial::Skeleton figure;
-  figure.nodes = {{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {-0.5, 0, -2}, {0.5, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {0, 0, 2.5}};
+  figure.nodes = {{0, 0, 0},    {0, 0, 1},  {0, 0, 2}, {-0.5, 0, -2},
+                  {0.5, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {0, 0, 2.5}};
   figure.edges = {{0, 1}, {1, 2}, {0, 3}, {0, 4}, {2, 5}, {2, 6}, {2, 7}};
   const int centre = medial::centralNode(figure);
   EXPECT_TRUE(centre == 0 || centre == 1 || centre == 2) << centre;
@@ -59,7 +60,8 @@ TEST(SkinBinding, TubeBoundToItsAxisHasWeightsSummingToOneAndTheCentralRoot) {
 
 TEST(SkinBinding, NodesOutsideAreCountedAndBadPairsAreErrors) {
   const medial::TriangleMesh tube = tubeMesh(10, 1);
-  // The axis runs on past the tube's end (its cap reaches x = 6): 2 of its 5 nodes are outside, and it still binds.
+  // The axis runs on past the tube's end (its cap reaches x = 6): 2 of its 5 nodes are outside, and it still
+  // binds.
   const medial::SkinBindingResult longer = medial::bindSkin(tube, pathOf({-4, -2, 2, 6.5, 7}));
   ASSERT_TRUE(longer.ok()) << longer.error;
   EXPECT_EQ(longer.nodesOutside, 2);
@@ -68,5 +70,6 @@ TEST(SkinBinding, NodesOutsideAreCountedAndBadPairsAreErrors) {
   medial::Skeleton far = pathOf({100, 101});
   EXPECT_NE(medial::bindSkin(tube, far).error.find("outside the mesh's bounding box"), std::string::npos);
   EXPECT_NE(medial::bindSkin(tube, pathOf({0})).error.find("no edges"), std::string::npos);
-  EXPECT_NE(medial::bindSkin(medial::TriangleMesh{}, pathOf({0, 1})).error.find("no faces"), std::string::npos);
+  EXPECT_NE(medial::bindSkin(medial::TriangleMesh{}, pathOf({0, 1})).error.find("no faces"),
+            std::string::npos);
 }

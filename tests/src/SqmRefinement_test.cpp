@@ -1,5 +1,6 @@
 // SqmRefinement: the refined mesh keeps its skeleton inside and stays on the swept spheres (issue 27's
-// invariants) on frames, ladders, a cube's edges and a zig-zag, whose corners Catmull-Clark used to pull inward.
+// invariants) on frames, ladders, a cube's edges and a zig-zag, whose corners Catmull-Clark used to pull
+// inward.
 #include "mesh/InsideTest.h"
 #include "mesh/MeshTopology.h"
 #include "mesh/SelfIntersections.h"
@@ -111,11 +112,13 @@ TEST(SqmRefinement, CornersKeepTheirNodesInsideAndTheSurfaceOnTheSweptSpheres) {
       const medial::InsideTest inside(triangles(mesh));
       double worstNode = INFINITY, worstMiddle = INFINITY, worstLeafMiddle = INFINITY;
       for (int n = 0; n < s.nodeCount(); ++n)
-        if (degree[size_t(n)] >= 2) worstNode = std::min(worstNode, depth(inside, s.nodes[size_t(n)]) / s.radii[size_t(n)]);
+        if (degree[size_t(n)] >= 2)
+          worstNode = std::min(worstNode, depth(inside, s.nodes[size_t(n)]) / s.radii[size_t(n)]);
       for (const auto& [a, b] : s.edges) {
         const Eigen::Vector3d middle = 0.5 * (s.nodes[size_t(a)] + s.nodes[size_t(b)]);
         if (degree[size_t(a)] >= 2 && degree[size_t(b)] >= 2)
-          worstMiddle = std::min(worstMiddle, depth(inside, middle) / std::min(s.radii[size_t(a)], s.radii[size_t(b)]));
+          worstMiddle =
+              std::min(worstMiddle, depth(inside, middle) / std::min(s.radii[size_t(a)], s.radii[size_t(b)]));
         else
           worstLeafMiddle = std::min(worstLeafMiddle,
                                      depth(inside, middle) / s.radii[size_t(degree[size_t(a)] >= 2 ? a : b)]);
@@ -123,10 +126,11 @@ TEST(SqmRefinement, CornersKeepTheirNodesInsideAndTheSurfaceOnTheSweptSpheres) {
       std::vector<double> off;  // |distance to the swept-sphere surface| / the vertex's node radius
       for (size_t v = 0; v < mesh.vertices.size(); ++v)
         off.push_back(std::abs(swept.signedDistance(mesh.vertices[v])) / s.radii[size_t(mesh.vertexNode[v])]);
-      std::printf("%s, K=%d: node margin %.2f r, edge middle %.2f r, leaf edge middle %.2f r, off the "
-                  "swept spheres median %.3f r, 95th percentile %.3f r\n",
-                  name.c_str(), levels, worstNode, worstMiddle, worstLeafMiddle, percentile(off, 0.5),
-                  percentile(off, 0.95));
+      std::printf(
+          "%s, K=%d: node margin %.2f r, edge middle %.2f r, leaf edge middle %.2f r, off the "
+          "swept spheres median %.3f r, 95th percentile %.3f r\n",
+          name.c_str(), levels, worstNode, worstMiddle, worstLeafMiddle, percentile(off, 0.5),
+          percentile(off, 0.95));
       EXPECT_GE(worstNode, 0.5);
       EXPECT_GE(worstMiddle, 0.5);
       if (worstLeafMiddle < INFINITY) {

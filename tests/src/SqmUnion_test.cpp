@@ -16,7 +16,8 @@ namespace {
 void addBox(medial::SqmMesh& mesh, const Eigen::Vector3d& low, const Eigen::Vector3d& high, int node) {
   const int first = int(mesh.vertices.size());
   for (int k = 0; k < 8; ++k)
-    mesh.vertices.emplace_back(k & 1 ? high.x() : low.x(), k & 2 ? high.y() : low.y(), k & 4 ? high.z() : low.z());
+    mesh.vertices.emplace_back(k & 1 ? high.x() : low.x(), k & 2 ? high.y() : low.y(),
+                               k & 4 ? high.z() : low.z());
   mesh.vertexNode.insert(mesh.vertexNode.end(), 8, node);
   const std::array<std::array<int, 4>, 6> quads = {
       {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}};
@@ -31,7 +32,8 @@ medial::MeshTopology topologyOf(const medial::SqmMesh& mesh) {
 
 double volumeOf(const medial::SqmMesh& mesh) {
   medial::Vertices vertices(Eigen::Index(mesh.vertices.size()), 3);
-  for (size_t v = 0; v < mesh.vertices.size(); ++v) vertices.row(Eigen::Index(v)) = mesh.vertices[v].transpose();
+  for (size_t v = 0; v < mesh.vertices.size(); ++v)
+    vertices.row(Eigen::Index(v)) = mesh.vertices[v].transpose();
   std::vector<std::array<int, 3>> triangles;
   for (const auto& f : mesh.faces)
     for (size_t k = 1; k + 1 < f.size(); ++k) triangles.push_back({f[0], f[k], f[k + 1]});
@@ -90,8 +92,8 @@ TEST(SqmUnionAlgorithm, BoxesTouchingAlongAnEdgeAreRefused) {
 // Two open squares crossing each other bound no volume: refused, unchanged.
 TEST(SqmUnionAlgorithm, OpenSheetsAreRefused) {
   medial::SqmMesh mesh;
-  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, -0.5}, {0.5, 0.5, 0.5}, {0.5, -0.5, 0.5},
-                   {0.5, -0.5, -0.5}};
+  mesh.vertices = {{0, 0, 0},        {1, 0, 0},       {1, 1, 0},        {0, 1, 0},
+                   {0.5, 0.5, -0.5}, {0.5, 0.5, 0.5}, {0.5, -0.5, 0.5}, {0.5, -0.5, -0.5}};
   mesh.faces = {{0, 1, 2, 3}, {4, 5, 6, 7}};
   mesh.vertexNode = {0, 0, 0, 0, 1, 1, 1, 1};
   const medial::SqmMesh before = mesh;
