@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
       medial::SketchResult result;
       const double medial = medianSeconds(repeat, [&] { result = medial::sketchSkeleton({part}, p); });
       if (!result.ok()) {
-        std::fprintf(stderr, "%s part %zu: %s\n", name.c_str(), k + 1, result.error.c_str());
+        std::fprintf(stderr, "%s part %zu: %s\n", name.c_str(), k + 1, result.error.message().c_str());
         return 1;
       }
       medialTimes.push_back(medial);

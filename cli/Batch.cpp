@@ -1,7 +1,7 @@
 // `medial batch ...`: the batch runner is Python (medial/batch.py on Dask); this hands the arguments to
 // Debian's interpreter with the package of this installation (or build) on its path and this executable
 // as the `medial` the tasks run. The script runs as a file, not as `-m medial.batch`: importing the
-// package `medial` would load VTK and our filters (0.26 s) into a driver that only starts processes.
+// package `medial` would load VTK and our filters into a driver that only starts processes.
 #include "CommandLine.h"
 #include "Commands.h"
 

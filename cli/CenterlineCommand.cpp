@@ -1,7 +1,9 @@
 // `medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] [--fill-holes]
 //  [--max-gap MM] [--min-part-volume MM3]
 //  [--profile PROFILE.csv] [--terrain TERRAIN.png] [--section-spacing K] [--section-rays N] [--stages DIR]`
+#include "CommandRun.h"
 #include "Commands.h"
+#include "HelpText.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
 #include "Progress.h"
@@ -62,12 +64,91 @@ void writeStages(vtkMedialTskCenterline* filter, const std::string& dir) {
 
 }  // namespace
 
+// The options of `medial centerline`: those that take a value, and the flags (medial centerline
+// --list-options).
+const OptionSpec& centerlineOptions() {
+  static const OptionSpec spec = {
+      {"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain", "--section-spacing",
+       "--section-rays", "--antecedent-width", "--centering", "--max-gap", "--min-part-volume", "--stages"},
+      {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}};
+  return spec;
+}
+
+// The --help text of `medial centerline`, built once; its defaults and names are a fresh filter's.
+const std::string& centerlineUsage() {
+  static const std::string text = [] {
+    const auto tsk = vtkSmartPointer<vtkMedialTskCenterline>::New();
+    return std::string() +
+           "usage: medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed "
+           "X,Y,Z]\n"
+           "                         [--fill-holes] [--keep-border-parts] [--max-gap MM] [--min-part-volume "
+           "MM3]\n"
+           "                         [--branches] [--antecedent-width W] [--centering N]\n"
+           "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] "
+           "[--section-rays "
+           "N]\n"
+           "                         [--stages DIR] [--quiet] [--timings]\n\n"
+           "Follows a tube (colon, vessel) in VOLUME (.nii .nii.gz .mha .mhd .nrrd .inr .vti or a DICOM "
+           "folder) "
+           "by\n"
+           "the TSK method (WSCG 2008): layers and cylindrical clusters from P0, then three "
+           "Takagi-Sugeno-Kang\n"
+           "models. The structure: voxels equal to L, or within LO..HI (parts touching the volume's border "
+           "are\n"
+           "dropped: the air outside the body), else the non-zero voxels. A structure in several parts (a "
+           "colon\n"
+           "split by collapsed or fluid-filled segments) is followed part by part and chained from the "
+           "lowest\n"
+           "end across each gap by the least-cost path through the volume (point data Bridged = 1 there).\n"
+           "  -o, --output CENTERLINE   one polyline in mm with Radius and ArcLength (.vtp .vtk ...)\n"
+           "  --label L                 the structure is the voxels of label L\n"
+           "  --threshold LO:HI         the structure is the voxels in LO..HI (e.g. -1024:-600 for colon "
+           "air)\n"
+           "  --seed X,Y,Z              P0 in mm (default: the lowest end of the structure)\n"
+           "  --fill-holes              fill cavities of the structure first\n"
+           "  --keep-border-parts       keep thresholded parts that touch the volume's border\n"
+           "  --max-gap MM              longest gap bridged between parts (default " +
+           number(tsk->GetMaxGap()) +
+           "; a longer one starts another\n"
+           "                            polyline, with a note; 0 = the largest part only)\n"
+           "  --min-part-volume MM3     smaller parts are left out (default " +
+           number(tsk->GetMinimumPartVolume()) +
+           ")\n"
+           "  --antecedent-width W      TSK Gaussian width relative to a cluster (default " +
+           number(tsk->GetAntecedentWidth()) +
+           ")\n"
+           "  --branches                a branching structure (vessels, airways): one polyline per branch,\n"
+           "                            cell data Branch and ParentBranch (sections follow the first one)\n"
+           "  --centering N             passes moving the axis to the centre of its sections (the paper's\n"
+           "                            centricity criterion; default " +
+           number(tsk->GetCenteringIterations()) +
+           ", 0 = the TSK curve as is)\n"
+           "  --profile PROFILE.csv     perpendicular sections every K mm: arc length, min/max diameter,\n"
+           "                            perimeter (mm) and area (mm2) per row (paper section 4, Fig. 14)\n"
+           "  --terrain TERRAIN.png     the unfolded wall: distance from the axis over angle (x) and arc\n"
+           "                            length (y, from the top), white = far (Fig. 15)\n"
+           "  --section-spacing K       mm between sections (default " +
+           number(tsk->GetSectionSpacing()) +
+           ")\n"
+           "  --section-rays N          angles per section (default " +
+           number(tsk->GetSectionRays()) +
+           ")\n"
+           "  --stages DIR              the paper's intermediate results in DIR: voxels.vtp (the "
+           "structure's\n"
+           "                            voxels with Layer, Cluster and the order T: Figs. 3, 7-8), "
+           "labels.vti\n"
+           "                            (the same as label volumes),\n"
+           "                            primitive.vtp (the primitive centerline, Figs. 4-6), tsk-model.vtp\n"
+           "                            (the curve before centring) and tsk-fits.csv (x, y, z over t, Figs.\n"
+           "                            9-10)\n"
+           "  --quiet                   no progress line\n"
+           "  --timings                 print stage times as JSON on stdout\n";
+  }();
+  return text;
+}
+
 int runCenterline(const std::vector<std::string>& args) {
-  const ParsedArgs parsed = parseArgs(
-      args,
-      {{"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain", "--section-spacing",
-        "--section-rays", "--antecedent-width", "--centering", "--max-gap", "--min-part-volume", "--stages"},
-       {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}});
+  const ParsedArgs parsed = parseArgs(args, centerlineOptions());
   if (parsed.positional.size() != 1)
     throw UsageError("centerline needs exactly one VOLUME (file or DICOM folder)");
   const std::string input = parsed.positional[0];
@@ -111,36 +192,25 @@ int runCenterline(const std::vector<std::string>& args) {
   if (!profile.empty() || !terrain.empty()) filter->ComputeSectionsOn();
   MEDIAL_OPTION(parsed, "--section-spacing", filter, SectionSpacing);
   MEDIAL_OPTION(parsed, "--section-rays", filter, SectionRays);
-  const std::string stages = parsed.value("--stages");
-  if (parsed.has("--stages")) {
-    if (parsed.has("--branches")) throw UsageError("--stages follows one tube: not with --branches");
-    makeOutputDirectory(stages, "--stages");
-    filter->RecordStagesOn();
-  }
-
-  Timings timings;
-  ProgressLine progress(parsed.has("--quiet"));
-  timings.start("read");
-  const vtkSmartPointer<vtkDataObject> data = readInput(input, progress);
-  vtkImageData* image = vtkImageData::SafeDownCast(data);
+  if (parsed.has("--stages") && parsed.has("--branches"))
+    throw UsageError("--stages follows one tube: not with --branches");
+  CommandRun command(parsed);
+  const std::string stages = command.stagesFolder(filter.Get());
+  const vtkSmartPointer<vtkImageData> image = vtkImageData::SafeDownCast(command.read(input));
   if (!image) throw Failure(input + ": not a volume");
-
-  timings.start("centerline");
-  runFilter(filter, image, input, "centerline of " + input, progress);
+  command.run(filter, image, input, "centerline", "centerline of " + input);
 
   for (int i = 0; i < filter->GetNumberOfNotes(); ++i) std::fprintf(stderr, "note: %s\n", filter->GetNote(i));
 
-  timings.start("write");
+  command.timings().start("write");
   writePolyData(filter->GetOutput(), output);
   if (!profile.empty()) writeProfileCsv(vtkTable::SafeDownCast(filter->GetOutputDataObject(1)), profile);
   if (!terrain.empty()) writeTerrainPng(vtkImageData::SafeDownCast(filter->GetOutputDataObject(2)), terrain);
   if (!stages.empty()) writeStages(filter, stages);
-  timings.stop();
   for (const std::string& stage : vtkMedialTskCenterline::GetStageNames())
     if (filter->GetStageSeconds(stage) > 0)
-      timings.detail("centerline", stage, filter->GetStageSeconds(stage));
-  if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
-  return kSuccess;
+      command.timings().detail("centerline", stage, filter->GetStageSeconds(stage));
+  return command.finish();
 }
 
 }  // namespace medial::cli

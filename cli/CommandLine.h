@@ -9,7 +9,8 @@
 
 namespace medial::cli {
 
-enum ExitCode { kSuccess = 0, kFailure = 1, kUsageError = 2 };
+// kCancelled: stopped by Ctrl-C (SIGINT) or SIGTERM before it finished, as shells report 128 + SIGINT.
+enum ExitCode { kSuccess = 0, kFailure = 1, kUsageError = 2, kCancelled = 130 };
 
 // A usage mistake: reported with the command's usage line, exit code 2.
 struct UsageError : std::runtime_error {
@@ -19,6 +20,11 @@ struct UsageError : std::runtime_error {
 // A failure on valid usage (unreadable file, failed filter): one line on stderr, exit code 1.
 struct Failure : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// The command stopped at the user's request (Interrupt.h): "cancelled" on stderr, exit code kCancelled.
+struct Cancelled : std::runtime_error {
+  Cancelled() : std::runtime_error("cancelled") {}
 };
 
 struct OptionSpec {

@@ -2,6 +2,8 @@
 // Failure.
 #pragma once
 
+#include "CommandLine.h"
+
 #include <string>
 #include <vector>
 
@@ -10,11 +12,27 @@ namespace medial::cli {
 struct Command {
   const char* name;
   const char* summary;
-  std::string usage;  // the full --help text
+  const std::string& (*usage)();   // the full --help text
+  const OptionSpec& (*options)();  // what parseArgs takes: the options with a value, and the flags
   int (*run)(const std::vector<std::string>& args);
 };
 
 const std::vector<Command>& commands();
+
+// Each command's --help text, built once from a fresh filter's defaults (in the command's own file).
+const std::string& skeletonUsage();
+const std::string& centerlineUsage();
+const std::string& sqmUsage();
+const std::string& sketchUsage();
+const std::string& rigUsage();
+const std::string& renderUsage();
+// Each command's options, in the command's own file: the one table its parsing and `--list-options` use.
+const OptionSpec& skeletonOptions();
+const OptionSpec& centerlineOptions();
+const OptionSpec& sqmOptions();
+const OptionSpec& sketchOptions();
+const OptionSpec& rigOptions();
+const OptionSpec& renderOptions();
 
 int runRender(const std::vector<std::string>& args);
 int runSkeleton(const std::vector<std::string>& args);

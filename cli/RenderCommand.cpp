@@ -2,6 +2,7 @@
 //                [--mesh-opacity A] [--ghost INPUT]... [--cutaway] [--ghost-opacity A]
 //                [--ghost-importance I,...] [--ghost-conflict gradual|depth] [--ghost-map-scale S]
 //                [--ghost-layers] [--importance-map MAP.png] [--volume-rendering STYLE]`
+#include "CommandRun.h"
 #include "Commands.h"
 #include "CommandLine.h"
 #include "PrivateDisplay.h"
@@ -113,12 +114,69 @@ void writeImportanceMap(vtkImageData* map, const std::string& path) {
 
 }  // namespace
 
+// The options of `medial render`: those that take a value, and the flags (medial render --list-options).
+const OptionSpec& renderOptions() {
+  static const OptionSpec spec = {
+      {"-o", "--output", "--size", "--camera", "--skeleton-scale", "--mesh-opacity", "--ghost",
+       "--ghost-opacity", "--ghost-importance", "--ghost-conflict", "--ghost-map-scale", "--importance-map",
+       "--volume-rendering"},
+      {"--quiet", "--timings", "--cutaway", "--ghost-layers"}};
+  return spec;
+}
+
+// The --help text of `medial render`, built once; its defaults and names are a fresh filter's.
+const std::string& renderUsage() {
+  static const std::string text = [] {
+    return std::string() +
+           "usage: medial render INPUT... -o IMAGE.png [--size WxH] [--camera AZIMUTH,ELEVATION]\n"
+           "                     [--skeleton-scale S] [--mesh-opacity A]\n"
+           "                     [--ghost INPUT]... [--cutaway] [--ghost-opacity A] [--ghost-importance "
+           "I,...]\n"
+           "                     [--ghost-conflict gradual|depth] [--ghost-map-scale S] [--ghost-layers]\n"
+           "                     [--importance-map MAP.png]\n"
+           "                     [--volume-rendering STYLE] [--quiet] [--timings]\n"
+           "\n"
+           "Renders every INPUT (meshes: .vtp .vtk .vtu .obj .ply .stl .off; skeletons: .vtp .swc, drawn as\n"
+           "tubes from their Radius; volumes: .nii .nii.gz .mha .mhd .nrrd .inr .inr.gz .vti .inv3 or a "
+           "DICOM\n"
+           "directory, drawn as three orthogonal slices) into one PNG.\n"
+           "  -o, --output IMAGE.png   the image to write (written atomically)\n"
+           "  --size WxH               image size in pixels (default 1024x768)\n"
+           "  --camera AZ,EL           degrees around the front view (default 30,20)\n"
+           "  --skeleton-scale S       scale of skeleton tube radii (default 1)\n"
+           "  --mesh-opacity A         opacity of meshes in [0, 1] (default 1); below 1 shows skeletons "
+           "inside\n"
+           "  --ghost INPUT            an object of interest, kept visible through what hides it (ghost "
+           "view,\n"
+           "                           Hoffmann et al. 2008); repeat for several; an INPUT already listed "
+           "is\n"
+           "                           marked, another file is added\n"
+           "  --cutaway                remove the occluders over the objects of interest instead of "
+           "ghosting\n"
+           "  --ghost-opacity A        opacity of a ghosted occluder, 0..1 (default 0.25)\n"
+           "  --ghost-importance I,... importance of each --ghost object in order, (0, 1] (default all 1)\n"
+           "  --ghost-conflict C       gradual: the more important object shows through the less (default);\n"
+           "                           depth: the nearer object of interest wins\n"
+           "  --ghost-map-scale S      importance-map resolution as a fraction of the image's (default 0.5)\n"
+           "  --ghost-layers           every occluding layer in front of an object of interest shows, not\n"
+           "                           only the one drawn last (slower: about 0.2 of a frame in software "
+           "GL)\n"
+           "  --importance-map MAP.png the ghost view's importance map as a grey image at the map's "
+           "resolution\n"
+           "                           (importance x coverage: where the objects of interest project)\n"
+           "  --volume-rendering STYLE volumes as a ray-cast rendering instead of three slices: ct-bone,\n"
+           "                           ct-soft-tissue or full-range (transfer-function presets); ghosted "
+           "like\n"
+           "                           any occluder in front of --ghost objects\n"
+           "  --quiet                  no progress line\n"
+           "  --timings                print stage times as JSON on stdout\n"
+           "Without an X display, a private Xvfb is started (package xvfb).\n";
+  }();
+  return text;
+}
+
 int runRender(const std::vector<std::string>& args) {
-  const ParsedArgs parsed =
-      parseArgs(args, {{"-o", "--output", "--size", "--camera", "--skeleton-scale", "--mesh-opacity",
-                        "--ghost", "--ghost-opacity", "--ghost-importance", "--ghost-conflict",
-                        "--ghost-map-scale", "--importance-map", "--volume-rendering"},
-                       {"--quiet", "--timings", "--cutaway", "--ghost-layers"}});
+  const ParsedArgs parsed = parseArgs(args, renderOptions());
   if (parsed.positional.empty()) throw UsageError("render needs at least one INPUT file");
   std::string output = parsed.value("-o", parsed.value("--output"));
   if (output.empty()) throw UsageError("render needs -o IMAGE.png");
@@ -140,17 +198,15 @@ int runRender(const std::vector<std::string>& args) {
     throw UsageError("--volume-rendering must be slices, ct-bone, ct-soft-tissue or full-range, got '" +
                      parsed.value("--volume-rendering") + "'");
 
-  Timings timings;
-  ProgressLine progress(parsed.has("--quiet"));
+  CommandRun command(parsed);
   auto scene = vtkSmartPointer<vtkMedialScene>::New();
   scene->SetSkeletonRadiusScale(skeletonScale);
   scene->SetMeshOpacity(meshOpacity);
   scene->SetVolumeStyle(static_cast<int>(volumeStyle));
   std::map<std::string, vtkProp3D*> propOfFile;
   auto addFile = [&](const std::string& input) {
-    timings.start("read");
-    const vtkSmartPointer<vtkDataObject> data = readInput(input, progress);
-    timings.start("scene");
+    const vtkSmartPointer<vtkDataObject> data = command.read(input);
+    command.timings().start("scene");
     auto sceneErrors = medial::ErrorCollector::Watch(scene);
     vtkProp3D* prop = scene->AddData(data);
     if (!prop) throw Failure(input + ": " + sceneErrors->Joined());
@@ -174,23 +230,21 @@ int runRender(const std::vector<std::string>& args) {
     pass->SetKeepImportanceMap(!ghost.importanceMap.empty());
   }
 
-  timings.start("display");
+  command.timings().start("display");
   PrivateDisplay display;
   std::string error;
   if (!display.ensure(error)) throw Failure(error);
   scene->SetDisplayId(display.displayId());
 
-  timings.start("render");
-  progress.show("rendering " + output, 0.0);
+  command.timings().start("render");
+  command.progress().show("rendering " + output, 0.0);
   scene->ResetCamera(static_cast<double>(width) / height, camera[0], camera[1]);
   auto renderErrors = medial::ErrorCollector::Watch(scene);
   if (!scene->RenderToImage(output.c_str(), width, height)) throw Failure(renderErrors->Joined());
   if (!ghost.importanceMap.empty())
     writeImportanceMap(scene->GetGhostPass()->GetImportanceMap(), ghost.importanceMap);
-  progress.finish();
-  timings.stop();
-  if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
-  return kSuccess;
+  command.progress().finish();
+  return command.finish();
 }
 
 }  // namespace medial::cli

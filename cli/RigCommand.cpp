@@ -1,7 +1,9 @@
 // `medial rig SKELETON MESH -o RIG.glb|RIG.fbx [--weights MESH_OUT] [--root N] [--heat C]
 //              [--max-influences N] [--quiet] [--timings]`: binds any mesh to any skeleton with the
 // heat-diffusion weights (vtkMedialSkinBinding) and writes the rig (vtkMedialRigWriter).
+#include "CommandRun.h"
 #include "Commands.h"
+#include "HelpText.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
 #include "Progress.h"
@@ -20,10 +22,48 @@
 
 namespace medial::cli {
 
+// The options of `medial rig`: those that take a value, and the flags (medial rig --list-options).
+const OptionSpec& rigOptions() {
+  static const OptionSpec spec = {{"-o", "--output", "--weights", "--root", "--heat", "--max-influences"},
+                                  {"--quiet", "--timings"}};
+  return spec;
+}
+
+// The --help text of `medial rig`, built once; its defaults and names are a fresh filter's.
+const std::string& rigUsage() {
+  static const std::string text = [] {
+    const auto binding = vtkSmartPointer<vtkMedialSkinBinding>::New();
+    const auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
+    return std::string() +
+           "usage: medial rig SKELETON MESH -o RIG.glb|RIG.fbx [--weights MESH_OUT] [--root N] [--heat C]\n"
+           "                  [--max-influences N] [--quiet] [--timings]\n\n"
+           "Binds MESH (.off .obj .ply .stl .vtp .vtk) to SKELETON (.vtp .swc ...) with heat-diffusion "
+           "skinning\n"
+           "weights (Baran and Popovic 2007, as the contraction paper's III.E) and writes the rig (III.F): "
+           "one\n"
+           "bone per skeleton edge, at most four per vertex. For a sketch (medial sketch --mesh), an SQM "
+           "mesh\n"
+           "and the skeleton it was made from, or a mesh and a skeleton drawn for it.\n"
+           "  -o, --output RIG          the rig as glTF 2.0 (.glb) or FBX (.fbx)\n"
+           "  --weights MESH_OUT        also the mesh with point data SkinWeights (a component per bone) "
+           "and\n"
+           "                            Bone (the strongest)\n"
+           "  --root N                  the root node (default: the skeleton's Root, else its central node,\n"
+           "                            the middle of its longest path)\n"
+           "  --heat C                  c of the heat weights' H = c / d^2 (default " +
+           number(binding->GetHeatConstant()) +
+           ")\n"
+           "  --max-influences N        most bones per vertex (default " +
+           number(writer->GetMaxInfluences()) +
+           ")\n"
+           "  --quiet                   no progress line\n"
+           "  --timings                 print stage times as JSON on stdout\n";
+  }();
+  return text;
+}
+
 int runRig(const std::vector<std::string>& args) {
-  const ParsedArgs parsed = parseArgs(
-      args,
-      {{"-o", "--output", "--weights", "--root", "--heat", "--max-influences"}, {"--quiet", "--timings"}});
+  const ParsedArgs parsed = parseArgs(args, rigOptions());
   if (parsed.positional.size() != 2) throw UsageError("rig needs a SKELETON file and a MESH file");
   const std::string skeletonFile = parsed.positional[0], meshFile = parsed.positional[1];
   const std::string output = parsed.value("-o", parsed.value("--output"));
@@ -40,32 +80,23 @@ int runRig(const std::vector<std::string>& args) {
   MEDIAL_OPTION(parsed, "--heat", binding, HeatConstant);
   MEDIAL_OPTION(parsed, "--max-influences", writer, MaxInfluences);
 
-  Timings timings;
-  ProgressLine progress(parsed.has("--quiet"));
-  timings.start("read");
-  const vtkSmartPointer<vtkDataObject> skeletonData = readInput(skeletonFile, progress);
-  vtkPolyData* skeleton = vtkPolyData::SafeDownCast(skeletonData);
+  CommandRun command(parsed);
+  const vtkSmartPointer<vtkPolyData> skeleton = vtkPolyData::SafeDownCast(command.read(skeletonFile));
   if (!skeleton || skeleton->GetNumberOfLines() == 0)
     throw Failure(skeletonFile + ": not a skeleton (no edges)");
-  const vtkSmartPointer<vtkDataObject> meshData = readInput(meshFile, progress);
-  vtkPolyData* mesh = vtkPolyData::SafeDownCast(meshData);
-  if (!mesh || mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
-    throw Failure(meshFile + ": not a surface mesh (no polygons)");
-
-  timings.start("weights");
+  const vtkSmartPointer<vtkPolyData> mesh = command.readSurface(meshFile);
   binding->SetSkeletonData(skeleton);
-  runFilter(binding, mesh, meshFile + " with " + skeletonFile, "skinning weights of " + meshFile, progress);
+  command.run(binding, mesh, meshFile + " with " + skeletonFile, "weights",
+              "skinning weights of " + meshFile);
   if (binding->GetNodesOutside() > 0)
     std::fprintf(stderr,
                  "medial rig: note: %d skeleton node%s outside the mesh (weighted by diffusion alone)\n",
                  binding->GetNodesOutside(), binding->GetNodesOutside() == 1 ? " lies" : "s lie");
 
-  timings.start("write");
+  command.timings().start("write");
   if (!weights.empty()) writePolyData(binding->GetOutput(0), weights);
   writeRig(writer, binding->GetOutput(0), binding->GetOutput(1), output);
-  timings.stop();
-  if (parsed.has("--timings")) std::printf("%s\n", timings.json().c_str());
-  return kSuccess;
+  return command.finish();
 }
 
 }  // namespace medial::cli

@@ -1,6 +1,7 @@
 #include "RunFilter.h"
 
 #include "CommandLine.h"
+#include "Interrupt.h"
 
 #include "MedialErrorCollector.h"
 
@@ -14,8 +15,10 @@ void runFilter(vtkAlgorithm* filter, vtkDataObject* data, const std::string& inp
   auto errors = medial::ErrorCollector::Watch(filter);
   filter->SetInputDataObject(data);
   progress.watch(filter, label);
+  abortOnInterrupt(filter);
   filter->Update();
   progress.finish();
+  if (filter->GetAbortExecute()) throw Cancelled();
   if (errors->HasErrors()) throw Failure(inputName + ": " + errors->Joined());
 }
 

@@ -22,8 +22,7 @@ const char* const kImplementationTag = "//MEDIAL::Ghost::Impl";
 
 std::string fragmentImplementation(bool withSilhouette, bool writesDepth, bool interest) {
   // Written without branches on per-fragment values: Mesa's llvmpipe runs both sides of such a branch
-  // under a mask anyway and pays for the masking on top (medial_bench_ghost: 1.37x a plain frame with
-  // the branches, 1.22x without).
+  // under a mask anyway and pays for the masking on top (medial_bench_ghost measures it).
   std::string code = R"(
   float medialDepth = gl_FragCoord.z;
 )";

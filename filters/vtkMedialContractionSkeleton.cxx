@@ -1,5 +1,6 @@
 #include "vtkMedialContractionSkeleton.h"
 
+#include "MedialProgress.h"
 #include "MedialMeshData.h"
 #include "MedialSkeletonData.h"
 #include "common/NameList.h"
@@ -43,7 +44,7 @@ vtkMedialContractionSkeleton::vtkMedialContractionSkeleton() {
   this->InitialAttractionWeight = defaults.contraction.initialAttraction;
   this->RefineEmbedding = defaults.refineEmbedding;
   this->RestoreCycles = defaults.restoreCycles;
-  this->CentreNodes = defaults.centreNodes;
+  this->CenterNodes = defaults.centerNodes;
   this->ComputeWeights = defaults.computeWeights;
   this->HeatConstant = defaults.weights.heatConstant;
   this->Solver = medial::sparseSolverName(defaults.contraction.solver);
@@ -65,7 +66,7 @@ medial::SkeletonByContractionParameters vtkMedialContractionSkeleton::MakeParame
   p.contraction.initialAttraction = this->InitialAttractionWeight;
   p.refineEmbedding = this->RefineEmbedding;
   p.restoreCycles = this->RestoreCycles;
-  p.centreNodes = this->CentreNodes;
+  p.centerNodes = this->CenterNodes;
   p.computeWeights = this->ComputeWeights;
   p.weights.heatConstant = this->HeatConstant;
   medial::parseSparseSolverKind(this->Solver, p.contraction.solver);  // SetSolver accepts known names only
@@ -116,7 +117,7 @@ void vtkMedialContractionSkeleton::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "InitialAttractionWeight: " << this->InitialAttractionWeight << "\n";
   os << indent << "RefineEmbedding: " << this->RefineEmbedding << "\n";
   os << indent << "RestoreCycles: " << this->RestoreCycles << "\n";
-  os << indent << "CentreNodes: " << this->CentreNodes << "\n";
+  os << indent << "CenterNodes: " << this->CenterNodes << "\n";
   os << indent << "ComputeWeights: " << this->ComputeWeights << "\n";
   os << indent << "HeatConstant: " << this->HeatConstant << "\n";
   os << indent << "Solver: " << this->Solver << "\n";
@@ -166,10 +167,7 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   const medial::SkeletonByContractionParameters p = this->MakeParameters();
   this->Steps.clear();
   this->SurgerySkeleton = this->UnselectedSkeleton = nullptr;
-  const medial::SkeletonByContractionResult result = medial::skeletonByContraction(mesh, p, [this](double f) {
-    this->UpdateProgress(f);
-    return !this->GetAbortExecute();
-  });
+  const medial::SkeletonByContractionResult result = medial::skeletonByContraction(mesh, p, medial::progressOf(this));
   this->ContractionIterations = result.contractionIterations;
   this->CurveSkeletonNodes = result.curveSkeletonNodes;
   this->ContractedVertices = result.contractedVertices;
@@ -181,7 +179,7 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
                                        result.radiiSeconds,         result.weightsSeconds};
   std::copy(seconds, seconds + kStageCount, this->Seconds);
   if (!result.ok()) {
-    vtkErrorMacro(<< result.error);
+    medial::reportError(this, result.error);
     return 0;
   }
 

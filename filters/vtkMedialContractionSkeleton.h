@@ -36,6 +36,10 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   static vtkMedialContractionSkeleton* New();
   vtkTypeMacro(vtkMedialContractionSkeleton, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+#ifndef __VTK_WRAP__
+  /// The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
+  medial::SkeletonByContractionParameters MakeParameters() const;
+#endif
 
   /// Number of skeleton nodes the selection stage aims at (default 30; 0 keeps the full curve skeleton).
   vtkSetClampMacro(TargetNodes, int, 0, VTK_INT_MAX);
@@ -87,9 +91,14 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   vtkBooleanMacro(RestoreCycles, bool);
   /// Move nodes of one or two edges to the centroid of the mesh's cross-section through them: the selected
   /// ones, or every node without a selection (default on; src/contraction/NodeCentring.h).
-  vtkSetMacro(CentreNodes, bool);
-  vtkGetMacro(CentreNodes, bool);
-  vtkBooleanMacro(CentreNodes, bool);
+  vtkSetMacro(CenterNodes, bool);
+  vtkGetMacro(CenterNodes, bool);
+  vtkBooleanMacro(CenterNodes, bool);
+  /// Deprecated, removed in the next release: the British spelling of SetCenterNodes and its kin.
+  void SetCentreNodes(bool on) { this->SetCenterNodes(on); }
+  bool GetCentreNodes() { return this->GetCenterNodes(); }
+  void CentreNodesOn() { this->CenterNodesOn(); }
+  void CentreNodesOff() { this->CenterNodesOff(); }
   /// Compute the skinning weights of section III.E (default off: they cost one more factorization).
   vtkSetMacro(ComputeWeights, bool);
   vtkGetMacro(ComputeWeights, bool);
@@ -148,8 +157,6 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
  private:
   vtkMedialContractionSkeleton(const vtkMedialContractionSkeleton&) = delete;
   void operator=(const vtkMedialContractionSkeleton&) = delete;
-  // The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
-  medial::SkeletonByContractionParameters MakeParameters() const;
   // Keeps the recorded intermediate results as polydata (RecordStages).
   void KeepStages(const medial::SkeletonByContractionResult& result);
 
@@ -168,7 +175,7 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   double InitialAttractionWeight;
   bool RefineEmbedding;
   bool RestoreCycles;
-  bool CentreNodes;
+  bool CenterNodes;
   bool ComputeWeights;
   double HeatConstant;
   std::string Solver;

@@ -37,16 +37,82 @@
 
 #include <sys/stat.h>
 
-#include <set>
+#include <string>
 
 vtkStandardNewMacro(vtkMedialReader);
 
 namespace {
 
-const std::set<std::string> kMeshExtensions = {".vtp", ".vtk", ".vtu",  ".obj", ".ply", ".stl", ".off",
-                                               ".g",   ".byu", ".gltf", ".glb", ".fbx", ".swc", ".txt"};
-const std::set<std::string> kVolumeExtensions = {".nii",  ".nii.gz", ".mha", ".mhd",    ".nrrd", ".nhdr",
-                                                 ".gipl", ".dcm",    ".inr", ".inr.gz", ".vti",  ".inv3"};
+// A reader of one file type, given the file's path.
+using ReaderFactory = vtkSmartPointer<vtkAlgorithm> (*)(const std::string& path);
+
+template <class Reader>
+vtkSmartPointer<vtkAlgorithm> fileReader(const std::string& path) {
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(path.c_str());
+  return reader;
+}
+
+vtkSmartPointer<vtkAlgorithm> byuReader(const std::string& path) {
+  auto reader = vtkSmartPointer<vtkBYUReader>::New();
+  reader->SetGeometryFileName(path.c_str());
+  return reader;
+}
+
+// A glTF scene (e.g. a rig exported by Medial or Blender): its meshes, node transforms applied, merged.
+vtkSmartPointer<vtkAlgorithm> gltfReader(const std::string& path) {
+  auto merge = vtkSmartPointer<vtkCompositeDataGeometryFilter>::New();
+  merge->SetInputConnection(fileReader<vtkGLTFReader>(path)->GetOutputPort());
+  return merge;
+}
+
+struct FileType {
+  const char* extension;
+  ReaderFactory reader;  // null: read as a rig (ReadRig)
+};
+
+// Meshes and skeletons; a legacy .vtk file is a volume instead when its header says it holds an image.
+const FileType kMeshTypes[] = {
+    {".vtp", fileReader<vtkXMLPolyDataReader>},
+    {".vtk", fileReader<vtkGenericDataObjectReader>},
+    {".vtu", fileReader<vtkXMLUnstructuredGridReader>},
+    {".obj", fileReader<vtkOBJReader>},
+    {".ply", fileReader<vtkPLYReader>},
+    {".stl", fileReader<vtkSTLReader>},
+    {".off", fileReader<vtkMedialOFFReader>},
+    {".g", byuReader},
+    {".byu", byuReader},
+    {".gltf", gltfReader},  // with RigSkeleton: a rig
+    {".glb", gltfReader},   // with RigSkeleton: a rig
+    {".fbx", nullptr},
+    {".swc", fileReader<vtkMedialSWCReader>},
+};
+const FileType kSketchTypes[] = {{".txt", fileReader<vtkMedialSketchReader>}};  // strokes with placements
+const FileType kVolumeTypes[] = {
+    {".nii", fileReader<vtkMedialITKImageReader>},    {".nii.gz", fileReader<vtkMedialITKImageReader>},
+    {".mha", fileReader<vtkMedialITKImageReader>},    {".mhd", fileReader<vtkMedialITKImageReader>},
+    {".nrrd", fileReader<vtkMedialITKImageReader>},   {".nhdr", fileReader<vtkMedialITKImageReader>},
+    {".gipl", fileReader<vtkMedialITKImageReader>},   {".dcm", fileReader<vtkMedialITKImageReader>},
+    {".inr", fileReader<vtkMedialINRReader>},         {".inr.gz", fileReader<vtkMedialINRReader>},
+    {".vti", fileReader<vtkXMLImageDataReader>},      {".inv3", fileReader<vtkMedialInVesaliusReader>},
+    {".vtk", fileReader<vtkGenericDataObjectReader>},  // when its header says it holds an image
+};
+
+template <size_t N>
+const FileType* findType(const FileType (&types)[N], const std::string& extension) {
+  for (const FileType& type : types)
+    if (extension == type.extension) return &type;
+  return nullptr;
+}
+
+// "*.a *.b ..." of a table, without `skip`.
+template <size_t N>
+std::string patterns(const FileType (&types)[N], const std::string& skip = "") {
+  std::string text;
+  for (const FileType& type : types)
+    if (type.extension != skip) text += std::string(text.empty() ? "" : " ") + "*" + type.extension;
+  return text;
+}
 
 bool isDirectory(const std::string& path) {
   struct stat status;
@@ -94,23 +160,29 @@ bool vtkMedialReader::IsVolumeFile(const char* fileName) {
   if (!fileName) return false;
   const std::string extension = medial::fileExtension(fileName);
   if (extension == ".vtk") return legacyFileIsImage(fileName);
-  return kVolumeExtensions.count(extension) > 0 || isDirectory(fileName);
+  return findType(kVolumeTypes, extension) || isDirectory(fileName);
 }
 
 bool vtkMedialReader::CanReadFile(const char* fileName) {
   if (!fileName) return false;
   const std::string extension = medial::fileExtension(fileName);
-  return kMeshExtensions.count(extension) || kVolumeExtensions.count(extension) || isDirectory(fileName);
+  return findType(kMeshTypes, extension) || findType(kSketchTypes, extension) ||
+         findType(kVolumeTypes, extension) || isDirectory(fileName);
 }
 
 const char* vtkMedialReader::GetMeshExtensions() {
-  return "*.vtp *.vtk *.vtu *.obj *.ply *.stl *.off *.g *.byu *.gltf *.glb *.fbx *.swc";
+  static const std::string text = patterns(kMeshTypes);
+  return text.c_str();
 }
 
-const char* vtkMedialReader::GetSketchExtensions() { return "*.txt"; }
+const char* vtkMedialReader::GetSketchExtensions() {
+  static const std::string text = patterns(kSketchTypes);
+  return text.c_str();
+}
 
 const char* vtkMedialReader::GetVolumeExtensions() {
-  return "*.nii *.nii.gz *.mha *.mhd *.nrrd *.nhdr *.gipl *.dcm *.inr *.inr.gz *.vti *.inv3";
+  static const std::string text = patterns(kVolumeTypes, ".vtk");  // .vtk is listed with the meshes
+  return text.c_str();
 }
 
 int vtkMedialReader::FillOutputPortInformation(int, vtkInformation* info) {
@@ -217,58 +289,15 @@ vtkSmartPointer<vtkDataObject> vtkMedialReader::ReadRig() {
 
 vtkSmartPointer<vtkDataObject> vtkMedialReader::ReadPolyData(const std::string& extension) {
   const std::string& path = this->FileName;
-  if (extension == ".fbx" || (this->RigSkeleton && (extension == ".glb" || extension == ".gltf")))
-    return this->ReadRig();
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (extension == ".vtp") {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".vtk") {
-    auto r = vtkSmartPointer<vtkGenericDataObjectReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".vtu") {
-    auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".obj") {
-    auto r = vtkSmartPointer<vtkOBJReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".ply") {
-    auto r = vtkSmartPointer<vtkPLYReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".stl") {
-    auto r = vtkSmartPointer<vtkSTLReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".off") {
-    auto r = vtkSmartPointer<vtkMedialOFFReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".g" || extension == ".byu") {
-    auto r = vtkSmartPointer<vtkBYUReader>::New();
-    r->SetGeometryFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".gltf" || extension == ".glb") {
-    // A glTF scene (e.g. a rig exported by Medial or Blender): its meshes, node transforms applied, merged.
-    auto r = vtkSmartPointer<vtkGLTFReader>::New();
-    r->SetFileName(path.c_str());
-    auto merge = vtkSmartPointer<vtkCompositeDataGeometryFilter>::New();
-    merge->SetInputConnection(r->GetOutputPort());
-    reader = merge;
-  } else if (extension == ".txt") {  // a sketch: strokes with placements
-    auto r = vtkSmartPointer<vtkMedialSketchReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else {  // .swc
-    auto r = vtkSmartPointer<vtkMedialSWCReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+  const FileType* type = findType(kMeshTypes, extension);
+  if (!type) type = findType(kSketchTypes, extension);
+  if (!type) {  // CanReadFile lets no other type through
+    this->ErrorMessage = path + ": not a mesh, skeleton or sketch file";
+    return nullptr;
   }
-
+  if (!type->reader || (this->RigSkeleton && (extension == ".glb" || extension == ".gltf")))
+    return this->ReadRig();
+  vtkSmartPointer<vtkAlgorithm> reader = type->reader(path);
   std::string error;
   vtkSmartPointer<vtkDataObject> data = runReader(reader, error);
   if (!data) {
@@ -308,28 +337,10 @@ vtkSmartPointer<vtkDataObject> vtkMedialReader::ReadPolyData(const std::string& 
 
 vtkSmartPointer<vtkDataObject> vtkMedialReader::ReadVolume(const std::string& extension) {
   const std::string& path = this->FileName;
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (extension == ".inr" || extension == ".inr.gz") {
-    auto r = vtkSmartPointer<vtkMedialINRReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".inv3") {
-    auto r = vtkSmartPointer<vtkMedialInVesaliusReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".vti") {
-    auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else if (extension == ".vtk") {
-    auto r = vtkSmartPointer<vtkGenericDataObjectReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  } else {
-    auto r = vtkSmartPointer<vtkMedialITKImageReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
+  const FileType* type = findType(kVolumeTypes, extension);
+  // A DICOM series directory (no extension) goes to ITK.
+  vtkSmartPointer<vtkAlgorithm> reader =
+      type ? type->reader(path) : fileReader<vtkMedialITKImageReader>(path);
   std::string error;
   vtkSmartPointer<vtkDataObject> data = runReader(reader, error);
   auto* image = vtkImageData::SafeDownCast(data);

@@ -1,5 +1,6 @@
 #include "vtkMedialSQM.h"
 
+#include "MedialProgress.h"
 #include "MedialSkeletonData.h"
 #include "MedialMeshData.h"
 #include "common/NameList.h"
@@ -23,6 +24,7 @@ void vtkMedialSQM::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Pairing: " << this->Pairing << "\n";
   os << indent << "LinearRingVertices: " << this->LinearRingVertices << "\n";
   os << indent << "Capsules: " << this->Capsules << "\n";
+  os << indent << "CapsuleSteps: " << this->CapsuleSteps << "\n";
   os << indent << "PairTriangles: " << this->PairTriangles << "\n";
   os << indent << "SubdivisionLevels: " << this->SubdivisionLevels << "\n";
   os << indent << "SharpScaling: " << this->SharpScaling << "\n";
@@ -40,6 +42,7 @@ vtkMedialSQM::vtkMedialSQM() {
   this->Pairing = medial::ringPairingName(defaults.pairing);
   this->LinearRingVertices = defaults.linearRingVertices;
   this->Capsules = defaults.capsules;
+  this->CapsuleSteps = defaults.capsuleSteps;
   this->PairTriangles = defaults.pairTriangles;
   this->SubdivisionLevels = defaults.subdivisionLevels;
   this->SharpScaling = defaults.sharpScaling.enabled;
@@ -70,6 +73,7 @@ medial::SqmParameters vtkMedialSQM::MakeParameters() const {
   medial::parseRingPairing(this->Pairing, p.pairing);
   p.linearRingVertices = this->LinearRingVertices;
   p.capsules = this->Capsules;
+  p.capsuleSteps = this->CapsuleSteps;
   p.pairTriangles = this->PairTriangles;
   p.subdivisionLevels = this->SubdivisionLevels;
   p.sharpScaling.enabled = this->SharpScaling;
@@ -126,14 +130,12 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
       this->UnionRemovedPolygons = 0;
   this->Seconds.assign(GetStageNames().size(), 0.0);
   this->Stages.clear();
-  const medial::SqmResult result = medial::sqmMesh(skeleton, this->MakeParameters(), [this](double f) {
-    this->UpdateProgress(f);
-    return !this->GetAbortExecute();
-  });
+  const medial::SqmResult result =
+      medial::sqmMesh(skeleton, this->MakeParameters(), medial::progressOf(this));
   this->OverlappingFacePairs = result.overlaps.facePairs;
   this->OverlappingNodePairs = result.overlaps.nodePairs;
   if (!result.ok()) {
-    vtkErrorMacro(<< result.error);
+    medial::reportError(this, result.error);
     return 0;
   }
   this->UnionCutPolygons = result.unionResult.cutPolygons;

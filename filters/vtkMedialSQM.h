@@ -35,6 +35,10 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   static vtkMedialSQM* New();
   vtkTypeMacro(vtkMedialSQM, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+#ifndef __VTK_WRAP__
+  /// The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
+  medial::SqmParameters MakeParameters() const;
+#endif
 
   /// LIE smoothing after each split, one of GetSmoothingNames(): quaternion (default), averaging,
   /// area-laplacian, valency-laplacian. An unknown name is an error and leaves the smoothing as it was.
@@ -58,6 +62,9 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkSetMacro(Capsules, bool);
   vtkGetMacro(Capsules, bool);
   vtkBooleanMacro(Capsules, bool);
+  /// With capsules: the rings added beyond each leaf to close it (default 4; CESCG 2014, Capsule Ending).
+  vtkSetClampMacro(CapsuleSteps, int, 1, 64);
+  vtkGetMacro(CapsuleSteps, int);
   /// Tessellation levels (bilinear, OpenSubdiv), each followed by projection onto the spheres swept along
   /// the skeleton's edges (default 0).
   vtkSetClampMacro(SubdivisionLevels, int, 0, 6);
@@ -141,14 +148,13 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
  private:
   vtkMedialSQM(const vtkMedialSQM&) = delete;
   void operator=(const vtkMedialSQM&) = delete;
-  // The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
-  medial::SqmParameters MakeParameters() const;
 
   // Parameters: defaults from medial::SqmParameters (the constructor).
   std::string Smoothing;
   std::string Pairing;
   int LinearRingVertices;
   bool Capsules;
+  int CapsuleSteps;
   bool PairTriangles;
   int SubdivisionLevels;
   bool SharpScaling;

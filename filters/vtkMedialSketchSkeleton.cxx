@@ -1,5 +1,6 @@
 #include "vtkMedialSketchSkeleton.h"
 
+#include "MedialProgress.h"
 #include "MedialMeshData.h"
 #include "MedialSkeletonData.h"
 #include "sketch/SketchSkeleton.h"
@@ -158,12 +159,9 @@ int vtkMedialSketchSkeleton::RequestData(vtkInformation*, vtkInformationVector**
   for (const auto& [key, value] : this->BranchThresholds)
     if (key.first >= 0 && key.first < int(parts.size()))
       parts[key.first].branchSimplification[key.second] = value;
-  const medial::SketchResult result = medial::sketchSkeleton(parts, this->MakeParameters(), [this](double f) {
-    this->UpdateProgress(f);
-    return !this->GetAbortExecute();
-  });
+  const medial::SketchResult result = medial::sketchSkeleton(parts, this->MakeParameters(), medial::progressOf(this));
   if (!result.ok()) {
-    vtkErrorMacro(<< result.error);
+    medial::reportError(this, result.error);
     return 0;
   }
   skeletonOutput->ShallowCopy(polyDataFromGraph(result.graph));

@@ -38,6 +38,10 @@ class MEDIALFILTERS_EXPORT vtkMedialSketchSkeleton : public vtkPolyDataAlgorithm
   static vtkMedialSketchSkeleton* New();
   vtkTypeMacro(vtkMedialSketchSkeleton, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+#ifndef __VTK_WRAP__
+  /// The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
+  medial::SketchParameters MakeParameters() const;
+#endif
 
   /// Global thresholds of §3.3 in sketch pixels: branch simplification epsilon_s (5), joint merging
   /// epsilon_m (30), branch pruning epsilon_t (30), edge collapsing epsilon_c (10).
@@ -102,8 +106,6 @@ class MEDIALFILTERS_EXPORT vtkMedialSketchSkeleton : public vtkPolyDataAlgorithm
  private:
   vtkMedialSketchSkeleton(const vtkMedialSketchSkeleton&) = delete;
   void operator=(const vtkMedialSketchSkeleton&) = delete;
-  // The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
-  medial::SketchParameters MakeParameters() const;
 
   // Parameters: defaults from medial::SketchParameters (the constructor).
   double SimplificationThreshold;

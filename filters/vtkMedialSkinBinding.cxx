@@ -1,5 +1,6 @@
 #include "vtkMedialSkinBinding.h"
 
+#include "MedialProgress.h"
 #include "MedialMeshData.h"
 #include "MedialSkeletonData.h"
 #include "rig/SkinBinding.h"
@@ -75,12 +76,9 @@ int vtkMedialSkinBinding::RequestData(vtkInformation*, vtkInformationVector** in
   const medial::TriangleMesh mesh = medial::toTriangleMesh(medial::triangulated(input));
   medial::HeatWeightParameters parameters;
   parameters.heatConstant = this->HeatConstant;
-  const medial::SkinBindingResult result = medial::bindSkin(mesh, skeleton, parameters, [this](double f) {
-    this->UpdateProgress(f);
-    return !this->GetAbortExecute();
-  });
+  const medial::SkinBindingResult result = medial::bindSkin(mesh, skeleton, parameters, medial::progressOf(this));
   if (!result.ok()) {
-    vtkErrorMacro(<< result.error);
+    medial::reportError(this, result.error);
     return 0;
   }
   this->ChosenRoot = result.root;

@@ -1,5 +1,6 @@
 #include "vtkMedialTskCenterline.h"
 
+#include "MedialProgress.h"
 #include "MedialMeshData.h"
 #include "MedialVolumeData.h"
 #include "centerline/TskCenterline.h"
@@ -246,10 +247,7 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   const medial::TskCenterlineParameters p = this->MakeParameters();
   this->Stages.clear();
   this->StageLabels = nullptr;
-  const medial::TskCenterlineResult result = medial::tskCenterline(volume, p, [this](double f) {
-    this->UpdateProgress(f);
-    return !this->GetAbortExecute();
-  });
+  const medial::TskCenterlineResult result = medial::tskCenterline(volume, p, medial::progressOf(this));
   this->StructureVoxels = result.structureVoxels;
   this->PrimitiveCenterlinePoints = result.primitiveCenterlinePoints;
   this->StageSeconds = result.stageSeconds;
@@ -257,7 +255,7 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   this->BridgedGaps = result.bridgedGaps;
   this->Notes = result.notes;
   if (!result.ok()) {
-    vtkErrorMacro(<< result.error);
+    medial::reportError(this, result.error);
     return 0;
   }
   writePolylines(result, p.detectBranches, vtkPolyData::GetData(outputVector, 0));

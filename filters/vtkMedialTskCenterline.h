@@ -43,6 +43,10 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   static vtkMedialTskCenterline* New();
   vtkTypeMacro(vtkMedialTskCenterline, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+#ifndef __VTK_WRAP__
+  /// The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
+  medial::TskCenterlineParameters MakeParameters() const;
+#endif
 
   /// Select the voxels equal to a label (disables the threshold).
   void SetLabel(int label);
@@ -158,8 +162,6 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
  private:
   vtkMedialTskCenterline(const vtkMedialTskCenterline&) = delete;
   void operator=(const vtkMedialTskCenterline&) = delete;
-  // The properties as the algorithm's parameters (the constructor does the reverse with the defaults).
-  medial::TskCenterlineParameters MakeParameters() const;
   // Keeps the recorded intermediate results as polydata (RecordStages).
   void KeepStages(const medial::TskStages& stages);
 

@@ -71,7 +71,7 @@ std::vector<Parameter> centerlineParameters() {
           "Vessels, airways: one centerline per branch, joined at the junctions (beyond the paper)"),
       MEDIAL_INTEGER_PARAMETER(
           f, CenteringIterations, "Centering passes",
-          "Moves the TSK curve to the centre of its perpendicular sections (centricity, §2); "
+          "Moves the TSK curve to the center of its perpendicular sections (centricity, §2); "
           "0: the paper's curve"),
       MEDIAL_REAL_PARAMETER(f, SampleSpacing, "Output spacing (mm)", 2,
                             "Distance between output points; 0: smallest voxel"),
@@ -95,7 +95,7 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
   extraLayout()->addLayout(seedRow);
   enableSteps(
       "Keep the structure's voxels (Manhattan layers, clusters), the primitive centerline and the "
-      "TSK curve before centring (the paper's Figs. 3-10)");
+      "TSK curve before centering (the paper's Figs. 3-10)");
   clearSeed();
 
   minDiameter_ = new QLineSeries;
@@ -205,7 +205,7 @@ vtkSmartPointer<vtkAlgorithm> CenterlinePanel::makeFilter(SceneObject* input, QS
 FilterPanel::Steps CenterlinePanel::steps(vtkAlgorithm* filter) {
   auto* tsk = static_cast<vtkMedialTskCenterline*>(filter);
   const QStringList names = {"structure voxels (layers, clusters)", "primitive centerline",
-                             "TSK curve before centring"};
+                             "TSK curve before centering"};
   Steps steps;
   for (size_t k = 0; k < vtkMedialTskCenterline::GetStageDataNames().size(); ++k)
     if (vtkPolyData* stage = tsk->GetStageData(vtkMedialTskCenterline::GetStageDataNames()[k]))
@@ -219,8 +219,8 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
   line->ShallowCopy(tsk->GetOutput());
   const QString name = input->name + " centerline";
   if (SceneObject* previous = objects()->findByName(name)) objects()->remove(previous);
-  // A plain line, not tubes and balls: the fly-through's camera stands on it, and the tubes of a
-  // 1,500-point colon took 140 ms on the UI thread to build.
+  // A plain line, not tubes and balls: the fly-through's camera stands on it, and the tubes of a long
+  // colon take long to build on the UI thread.
   SceneObject* result = objects()->addLine(name, line, {0.1, 0.8, 0.2}, 3);
   if (!result) return;
   showBridges(result, line);
@@ -242,14 +242,14 @@ void CenterlinePanel::showBridges(SceneObject* object, vtkPolyData* line) {
   vtkDataArray* bridged = line->GetPointData()->GetArray("Bridged");
   auto* actor = vtkActor::SafeDownCast(object->prop);
   if (!bridged || !actor || bridged->GetRange(0)[1] < 1) return;
-  auto colours = vtkSmartPointer<vtkLookupTable>::New();
-  colours->SetNumberOfTableValues(2);
-  colours->SetTableValue(0, 0.1, 0.8, 0.2);
-  colours->SetTableValue(1, medial::kBridgedRgb[0] / 255.0, medial::kBridgedRgb[1] / 255.0,
+  auto colors = vtkSmartPointer<vtkLookupTable>::New();
+  colors->SetNumberOfTableValues(2);
+  colors->SetTableValue(0, 0.1, 0.8, 0.2);
+  colors->SetTableValue(1, medial::kBridgedRgb[0] / 255.0, medial::kBridgedRgb[1] / 255.0,
                          medial::kBridgedRgb[2] / 255.0);
-  colours->SetTableRange(0, 1);
+  colors->SetTableRange(0, 1);
   vtkMapper* mapper = actor->GetMapper();
-  mapper->SetLookupTable(colours);
+  mapper->SetLookupTable(colors);
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SelectColorArray("Bridged");
   mapper->SetScalarRange(0, 1);

@@ -1,6 +1,6 @@
 #include "FilterPanel.h"
 
-#include "NodeColours.h"
+#include "NodeColors.h"
 #include "ObjectList.h"
 
 #include <QCheckBox>
@@ -200,11 +200,11 @@ bool FilterPanel::showStep(int index) {
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->ShallowCopy(recorded_[size_t(index)].second);
   SceneObject* shown = objects_->add(name, data, QString(), kComputedRadiusScale);
-  // A stage labelled per point (SQM's polyhedra by node, the TSK voxels by cluster) in a colour per label.
+  // A stage labelled per point (SQM's polyhedra by node, the TSK voxels by cluster) in a color per label.
   for (const char* label : {"SkeletonNode", "Cluster"})
     if (vtkDataArray* ids = data->GetPointData()->GetArray(label);
         ids && shown && data->GetNumberOfPolys() + data->GetNumberOfVerts() > 0) {
-      colourByLabel(vtkActor::SafeDownCast(shown->prop), label, int(ids->GetRange()[1]) + 1);
+      colorByLabel(vtkActor::SafeDownCast(shown->prop), label, int(ids->GetRange()[1]) + 1);
       break;
     }
   stepLabel_->setText(QString("%1 of %2: %3").arg(index + 1).arg(stepCount()).arg(stepName(index)));

@@ -528,7 +528,7 @@ void MainWindow::onWindowLevelChanged(double window, double level) {
 }
 
 void MainWindow::onViewClicked(const QPointF& position, Qt::KeyboardModifiers modifiers) {
-  // A click selects the object under the pointer; on a skeleton with skinning weights it colours the mesh
+  // A click selects the object under the pointer; on a skeleton with skinning weights it colors the mesh
   // by the nearest bone's weight; Shift+click toggles the object of interest (ghost view). Skeletons are
   // tried first: they usually lie inside the mesh that a plain pick would return.
   const qreal ratio = view_->devicePixelRatioF();

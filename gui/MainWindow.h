@@ -141,7 +141,7 @@ class MainWindow : public QMainWindow {
   vtkSmartPointer<vtkMedialScene> scene_;
   SceneObject* shownVolume_ = nullptr;
   vtkSmartPointer<vtkVolume> volumeRendering_;  // of shownVolume_
-  vtkSmartPointer<vtkScalarBarActor> legend_;   // the colour scale of a mesh coloured by bone weights
+  vtkSmartPointer<vtkScalarBarActor> legend_;   // the color scale of a mesh colored by bone weights
   QActionGroup* volumeRenderingActions_ = nullptr;
   bool shownOnce_ = false;
   bool reading_ = false;  // a file is being read (openFile waits for it with the event loop running)

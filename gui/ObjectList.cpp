@@ -75,7 +75,7 @@ ObjectList::ObjectList(vtkMedialScene* scene, QWidget* parent) : QWidget(parent)
   tree_->setContextMenuPolicy(Qt::CustomContextMenu);
   tree_->setToolTip(
       "Tick: visible. Interest: stays visible through other objects in the ghost view.\n"
-      "Right-click for colour, save as, rig export and delete.");
+      "Right-click for color, save as, rig export and delete.");
   connect(tree_, &QTreeWidget::itemChanged, this, &ObjectList::onItemChanged);
   connect(tree_, &QTreeWidget::customContextMenuRequested, this, &ObjectList::showMenu);
   connect(tree_, &QTreeWidget::currentItemChanged, this, [this] {
@@ -364,7 +364,7 @@ void ObjectList::showMenu(const QPoint& position) {
   tree_->setCurrentItem(item);
   SceneObject* object = current();
   QMenu menu(this);
-  QAction* color = menu.addAction("Colour...", this, &ObjectList::chooseColor);
+  QAction* color = menu.addAction("Color...", this, &ObjectList::chooseColor);
   color->setEnabled(object->kind != SceneObject::Kind::Volume);
   menu.addAction("Save As...", this, &ObjectList::saveDialog);
   QAction* rig = menu.addAction("Export Rig...", this, &ObjectList::rigDialog);
@@ -381,7 +381,7 @@ void ObjectList::chooseColor() {
   if (!actor) return;
   const double* rgb = actor->GetProperty()->GetColor();
   const QColor chosen =
-      QColorDialog::getColor(QColor::fromRgbF(rgb[0], rgb[1], rgb[2]), this, "Colour of " + object->name);
+      QColorDialog::getColor(QColor::fromRgbF(rgb[0], rgb[1], rgb[2]), this, "Color of " + object->name);
   if (chosen.isValid()) setColor(object, chosen.redF(), chosen.greenF(), chosen.blueF());
 }
 

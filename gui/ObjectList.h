@@ -1,5 +1,5 @@
 // ObjectList: the dock listing every loaded or computed object, with visibility (the check box), object
-// of interest for the ghost view (second column), colour, opacity, save as, rig export and delete.
+// of interest for the ghost view (second column), color, opacity, save as, rig export and delete.
 #pragma once
 
 #include "SceneObject.h"

@@ -1,6 +1,6 @@
 #include "SkeletonPanel.h"
 
-#include "NodeColours.h"
+#include "NodeColors.h"
 
 #include "FilterDefaults.h"
 #include "ObjectList.h"
@@ -58,11 +58,11 @@ std::vector<Parameter> contractionParameters() {
           "Surgery pre-pass: edges shorter than this fraction of the contracted mesh's size "
           "collapse first (§III.B, default 0.001)"),
       MEDIAL_TOGGLE_PARAMETER(f, RefineEmbedding, "Refine embedding",
-                              "Move nodes to the centre of their vertices (§III.C)"),
+                              "Move nodes to the center of their vertices (§III.C)"),
       MEDIAL_TOGGLE_PARAMETER(
           f, RestoreCycles, "Restore cycles",
           "Put back the cycles surgery lost: as many skeleton cycles as the mesh has genus"),
-      MEDIAL_TOGGLE_PARAMETER(f, CentreNodes, "Centre nodes",
+      MEDIAL_TOGGLE_PARAMETER(f, CenterNodes, "Center nodes",
                               "Move nodes to the centroid of the mesh's cross-section through them"),
       weights,
       MEDIAL_REAL_PARAMETER(f, HeatConstant, "c (heat)", 3,
@@ -72,7 +72,7 @@ std::vector<Parameter> contractionParameters() {
   };
 }
 
-vtkSmartPointer<vtkLookupTable> weightColours() {
+vtkSmartPointer<vtkLookupTable> weightColors() {
   auto table = vtkSmartPointer<vtkLookupTable>::New();
   table->SetHueRange(0.667, 0.0);  // blue (0) to red (1)
   table->SetTableRange(0, 1);
@@ -88,7 +88,7 @@ SkeletonPanel::SkeletonPanel(ObjectList* objects, QWidget* parent)
   bone_->setObjectName("bone");
   bone_->setRange(-1, -1);
   bone_->setSpecialValueText("segments");
-  bone_->setToolTip("Colour the mesh by this bone's skinning weight (or click a bone in the 3-D view)");
+  bone_->setToolTip("Color the mesh by this bone's skinning weight (or click a bone in the 3-D view)");
   auto* row = new QFormLayout;
   row->addRow("Show weights of bone", bone_);
   extraLayout()->addLayout(row);
@@ -124,7 +124,7 @@ vtkSmartPointer<vtkAlgorithm> SkeletonPanel::makeFilter(SceneObject* input, QStr
   filter->SetCollapseLengthFraction(f->value("CollapseLengthFraction"));
   filter->SetRefineEmbedding(f->isOn("RefineEmbedding"));
   filter->SetRestoreCycles(f->isOn("RestoreCycles"));
-  filter->SetCentreNodes(f->isOn("CentreNodes"));
+  filter->SetCenterNodes(f->isOn("CenterNodes"));
   filter->SetComputeWeights(f->isOn("ComputeWeights"));
   filter->SetHeatConstant(f->value("HeatConstant"));
   filter->SetSolver(f->choice("Solver").toStdString());
@@ -196,9 +196,9 @@ bool SkeletonPanel::selectBone(SceneObject* skeleton, int bone) {
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SetColorModeToMapScalars();
   if (bone < 0) {
-    colourByLabel(actor, "SkeletonNode", static_cast<int>(skeleton->polyData()->GetNumberOfPoints()));
+    colorByLabel(actor, "SkeletonNode", static_cast<int>(skeleton->polyData()->GetNumberOfPoints()));
   } else {
-    mapper->SetLookupTable(weightColours());
+    mapper->SetLookupTable(weightColors());
     mapper->ColorByArrayComponent("SkinWeights", bone);
     mapper->SetScalarRange(0, 1);
   }
@@ -206,8 +206,8 @@ bool SkeletonPanel::selectBone(SceneObject* skeleton, int bone) {
     const QSignalBlocker block(bone_);
     bone_->setValue(bone);
   }
-  emit message(bone < 0 ? QString("Mesh coloured by SkeletonNode")
-                        : QString("Mesh coloured by the weight of bone %1").arg(bone));
+  emit message(bone < 0 ? QString("Mesh colored by SkeletonNode")
+                        : QString("Mesh colored by the weight of bone %1").arg(bone));
   emit legendChanged(bone < 0 ? nullptr : mapper->GetLookupTable(), QString("bone %1").arg(bone));
   emit sceneChanged();
   return true;

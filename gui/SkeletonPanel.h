@@ -1,5 +1,5 @@
 // SkeletonPanel: skeleton by mesh contraction (vtkMedialContractionSkeleton) from a mesh. The result is
-// the skeleton and the mesh coloured by `SkeletonNode` (the segmentation); selectBone() colours that mesh
+// the skeleton and the mesh colored by `SkeletonNode` (the segmentation); selectBone() colors that mesh
 // by one bone's skinning weight instead; the skeleton's context menu exports the rig.
 #pragma once
 
@@ -16,7 +16,7 @@ class SkeletonPanel : public FilterPanel {
  public:
   SkeletonPanel(ObjectList* objects, QWidget* parent = nullptr);
 
-  // Colours the segmentation mesh of `skeleton` by the weight of bone `bone` (its line cell), or by
+  // Colors the segmentation mesh of `skeleton` by the weight of bone `bone` (its line cell), or by
   // SkeletonNode when bone < 0. False when the skeleton has no such mesh or bone.
   bool selectBone(SceneObject* skeleton, int bone);
   // The bone (line cell) of `skeleton` nearest to a world point, or -1.
@@ -26,7 +26,7 @@ class SkeletonPanel : public FilterPanel {
 
  signals:
   void sceneChanged();
-  // The mesh is coloured by a bone's weight with `table` (a legend is due), or by segments (table null).
+  // The mesh is colored by a bone's weight with `table` (a legend is due), or by segments (table null).
   void legendChanged(vtkScalarsToColors* table, const QString& title);
 
  protected:

@@ -120,9 +120,9 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
   tool("→", "Move the part right in its plane", 0, 1, [this](int k) { movePart(k, 1, 0); });
   tool("↑", "Move the part up in its plane", 0, 2, [this](int k) { movePart(k, 0, 1); });
   tool("↓", "Move the part down in its plane", 0, 3, [this](int k) { movePart(k, 0, -1); });
-  tool("⟲ 15°", "Turn the part about its centre", 1, 0, [this](int k) { turnPart(k, 1); });
+  tool("⟲ 15°", "Turn the part about its center", 1, 0, [this](int k) { turnPart(k, 1); });
   tool("⟳ 15°", "Turn the part the other way", 1, 1, [this](int k) { turnPart(k, -1); });
-  tool("+10 %", "Grow the part about its centre", 1, 2, [this](int k) { scalePart(k, 1); });
+  tool("+10 %", "Grow the part about its center", 1, 2, [this](int k) { scalePart(k, 1); });
   tool("−10 %", "Shrink the part", 1, 3, [this](int k) { scalePart(k, -1); });
   tool("Mirror", "Add the part mirrored across part 1's drawing plane (draw one half, get both)", 2, 0,
        [this](int k) { mirrorPart(k); });

@@ -29,6 +29,8 @@ std::vector<Parameter> sqmParameters() {
                                "skeletons)"),
       MEDIAL_TOGGLE_PARAMETER(f, Capsules, "Capsule leaves",
                               "Close leaves with hemispheres (CESCG 2014, Capsule Ending)"),
+      MEDIAL_INTEGER_PARAMETER(f, CapsuleSteps, "Capsule rings",
+                               "With capsule leaves: rings added beyond each leaf to close it"),
       MEDIAL_TOGGLE_PARAMETER(f, PairTriangles, "Quads at leaf tips",
                               "Join the triangles of leaf fans and cycle bands into quads (off: the paper's "
                               "triangle fans)"),
@@ -76,7 +78,7 @@ SqmPanel::SqmPanel(ObjectList* objects, QWidget* parent)
   extraLayout()->addLayout(rows);
   enableSteps(
       "Keep the branch node polyhedra as generated and after the LIE refinement (bind pose), and the "
-      "joined mesh before subdivision, coloured by node");
+      "joined mesh before subdivision, colored by node");
   connect(subdivision_, &QSlider::valueChanged, this, &SqmPanel::parameterChanged);
   connect(form(), &ParameterForm::valueChanged, this, &SqmPanel::parameterChanged);
 }
@@ -94,6 +96,7 @@ vtkSmartPointer<vtkAlgorithm> SqmPanel::makeFilter(SceneObject* input, QString&)
   filter->SetPairing(form()->choice("Pairing").toStdString());
   filter->SetLinearRingVertices(static_cast<int>(form()->value("LinearRingVertices")));
   filter->SetCapsules(form()->isOn("Capsules"));
+  filter->SetCapsuleSteps(static_cast<int>(form()->value("CapsuleSteps")));
   filter->SetPairTriangles(form()->isOn("PairTriangles"));
   filter->SetSubdivisionLevels(subdivision_->value());
   filter->SetSharpScaling(form()->isOn("SharpScaling"));

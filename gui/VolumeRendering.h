@@ -14,7 +14,7 @@ enum class VolumePreset { CtBone = 0, CtSoftTissue = 1, FullRange = 2 };
 
 QStringList volumePresetNames();  // in VolumePreset order
 
-// A vtkVolume showing `image` with a preset's colour and opacity transfer functions (Hounsfield units for
+// A vtkVolume showing `image` with a preset's color and opacity transfer functions (Hounsfield units for
 // the CT presets; FullRange ramps over the image's own range).
 vtkSmartPointer<vtkVolume> makeVolumeRendering(vtkImageData* image, VolumePreset preset);
 

@@ -1,6 +1,6 @@
 // libMedialITKIO: Medial's volume reading through ITK (NIfTI, MetaImage, NRRD, GIPL, DICOM files and
 // series), a plugin of its own that vtkMedialITKImageReader loads on first use. ITK and GDCM cost every
-// process that loads them 35 ms at start (GDCM fills its dictionaries), which mesh and skeleton commands,
+// process that loads them time at start (GDCM fills its dictionaries), which mesh and skeleton commands,
 // run thousands of times by `medial batch`, never need. The function's contract is MedialITKPlugin.h's.
 #include "MedialFileNames.h"
 #include "MedialITKPlugin.h"

@@ -10,7 +10,6 @@ input only. DIR/manifest.csv gets one row per input as soon as it finishes. From
     import medial.batch
     rows = medial.batch.run("skeleton", ["meshes/*.off"], "out", options=["--nodes", "25"], workers=2)
 """
-import argparse
 import csv
 import glob
 import io
@@ -22,9 +21,51 @@ import socket
 import subprocess
 import sys
 import time
+from dataclasses import dataclass, field, fields
+from typing import Optional
 
 COMMANDS = {"skeleton": ".vtp", "sqm": ".vtp", "centerline": ".vtp", "sketch": ".vtp", "render": ".png"}
-FIELDS = ["input", "output", "status", "exit_code", "seconds", "worker", "message", "timings"]
+
+
+@dataclass
+class Row:
+    """One input's line of the manifest, typed alike whether it ran now or was read back (--resume).
+    `row["status"]` still works as on the dictionaries of earlier releases."""
+    input: str
+    output: str
+    status: str                       # ok | error | crash | timeout
+    exit_code: Optional[int] = None   # None: killed on time-out, or lost on the cluster
+    seconds: Optional[float] = None
+    worker: str = ""
+    message: str = ""                 # the command's last line on stderr
+    timings: dict = field(default_factory=dict)  # the command's --timings (stage: seconds)
+
+    def __getitem__(self, name):
+        return getattr(self, name)
+
+    def csv_values(self):
+        return [self.input, self.output, self.status, "" if self.exit_code is None else str(self.exit_code),
+                "" if self.seconds is None else "%.3f" % self.seconds, self.worker, self.message,
+                json.dumps(self.timings, separators=(",", ":")) if self.timings else ""]
+
+    @classmethod
+    def from_csv(cls, values):
+        """A row of manifest.csv (a csv.DictReader dictionary) as a Row."""
+        def number(text, kind):
+            try:
+                return kind(text) if text not in (None, "") else None
+            except ValueError:
+                return None
+        try:
+            timings = json.loads(values.get("timings") or "{}")
+        except ValueError:
+            timings = {}
+        return cls(values.get("input", ""), values.get("output", ""), values.get("status", ""),
+                   number(values.get("exit_code"), int), number(values.get("seconds"), float),
+                   values.get("worker", ""), values.get("message", ""), timings)
+
+
+FIELDS = [f.name for f in fields(Row)]
 USAGE = """usage: medial batch COMMAND INPUT... --out-dir DIR [COMMAND OPTIONS...]
                     [--scheduler tcp://HOST:PORT | --workers N] [--timeout SECONDS] [--retries K] [--resume]
                     [--output-name PATTERN] [--quiet]"""
@@ -149,12 +190,14 @@ def run_one(medial, command, path, output, options, timeout=None, retries=0):
     message = lines[-1] if lines else ""
     if status == "crash":
         message = "killed by signal %d (%s)%s" % (-code, signal.Signals(-code).name, (": " + message) if message else "")
-    timings = ""
+    timings = {}
     for line in (out or "").splitlines():
         if line.startswith("{"):
-            timings = line.strip()
-    return {"input": path, "output": output, "status": status, "exit_code": "" if code is None else code,
-            "seconds": "%.3f" % seconds, "worker": _worker_name(), "message": message, "timings": timings}
+            try:
+                timings = json.loads(line)
+            except ValueError:
+                pass
+    return Row(path, output, status, code, seconds, _worker_name(), message, timings)
 
 
 # -- the manifest ------------------------------------------------------------------------------------------
@@ -170,13 +213,14 @@ class Manifest:
             with open(path, newline="") as f:
                 text = f.read()
             complete = text[: text.rfind("\n") + 1]  # a line cut by a crash is dropped
-            for row in csv.DictReader(io.StringIO(complete)):
-                self.rows[row["input"]] = row
+            for values in csv.DictReader(io.StringIO(complete)):
+                row = Row.from_csv(values)
+                self.rows[row.input] = row
         self._rewrite()
 
     def _line(self, row):
         out = io.StringIO()
-        csv.writer(out, lineterminator="\n").writerow([row.get(f, "") for f in FIELDS])
+        csv.writer(out, lineterminator="\n").writerow(row.csv_values())
         return out.getvalue()
 
     def _rewrite(self):
@@ -188,11 +232,11 @@ class Manifest:
         os.replace(temporary, self.path)
 
     def add(self, row):
-        if row["input"] in self.rows:  # a retried input: its new row replaces the old one
-            self.rows[row["input"]] = row
+        if row.input in self.rows:  # a retried input: its new row replaces the old one
+            self.rows[row.input] = row
             self._rewrite()
             return
-        self.rows[row["input"]] = row
+        self.rows[row.input] = row
         descriptor = os.open(self.path, os.O_WRONLY | os.O_APPEND)
         try:
             os.write(descriptor, self._line(row).encode())
@@ -214,7 +258,7 @@ class _Progress:
 
     def step(self, row):
         self.done += 1
-        self.failed += row["status"] != "ok"
+        self.failed += row.status != "ok"
         if not self.shown:
             return
         elapsed = time.monotonic() - self.start
@@ -235,7 +279,7 @@ class _Progress:
 def run(command, inputs, out_dir, options=(), scheduler=None, workers=None, timeout=None, retries=0,
         resume=False, output_name=None, quiet=True, medial=None):
     """Runs `medial COMMAND` on every input (files, folders, globs, @lists) and returns the manifest rows,
-    in the inputs' order. See the module's documentation for the options."""
+    in the inputs' order, as Row objects. See the module's documentation for the options."""
     if command not in COMMANDS:
         raise UsageError("COMMAND is one of %s, not %r" % (", ".join(COMMANDS), command))
     paths = [os.path.abspath(p) for p in expand_inputs(list(inputs))]  # workers may run elsewhere
@@ -252,7 +296,7 @@ def run(command, inputs, out_dir, options=(), scheduler=None, workers=None, time
     for path in paths:
         output = os.path.join(out_dir, expand(pattern, path))
         old = manifest.rows.get(path)
-        if resume and old and old["status"] == "ok" and os.path.exists(output):
+        if resume and old and old.status == "ok" and os.path.exists(output):
             continue
         todo.append((path, output))
     todo.sort(key=lambda task: -_size_of(task[0]))
@@ -292,9 +336,7 @@ def _row_of(future, path, output):
     try:
         return future.result()
     except Exception as e:
-        return {"input": path, "output": output, "status": "crash", "exit_code": "", "seconds": "",
-                "worker": "", "message": "the task failed on the cluster: %s: %s" % (type(e).__name__, e),
-                "timings": ""}
+        return Row(path, output, "crash", message="the task failed on the cluster: %s: %s" % (type(e).__name__, e))
 
 
 def _parse(argv):
@@ -327,7 +369,7 @@ def _parse(argv):
                 values[name] = True
         elif arg.startswith("-") and len(arg) > 1:
             passed.append(arg)  # the command's own option, and its value if it takes one
-            if not inline and i + 1 < len(rest) and not _is_flag(command, name):
+            if not inline and i + 1 < len(rest) and name in _options_with_value(command):
                 i += 1
                 passed.append(rest[i])
         else:
@@ -349,31 +391,27 @@ def _parse(argv):
     return command, inputs, passed, values, numbers
 
 
-def _is_flag(command, option):
-    """Whether `option` of `medial COMMAND` takes no value (read from the command's --help)."""
-    if not hasattr(_is_flag, "flags"):
-        _is_flag.flags = {}
-    if command not in _is_flag.flags:
-        text = subprocess.run([_medial_executable(), command, "--help"], capture_output=True, text=True).stdout
-        flags = set()
-        for line in text.splitlines():  # "  --name VALUE  what it does" or "  --flag  what it does"
-            words = line.replace(",", " ").split()
-            options = [w for w in words if w.startswith("-")]
-            if not words or not words[0].startswith("-"):
-                continue
-            after = words[len(options)] if len(words) > len(options) else ""
-            if not after or not (after[0].isupper() or after[0] in "<[{"):
-                flags.update(options)
-        _is_flag.flags[command] = flags
-    return option in _is_flag.flags[command]
+def _options_with_value(command):
+    """The options of `medial COMMAND` that take a value, from the command's own option table (the one
+    its parsing uses: `medial COMMAND --list-options`)."""
+    if command not in _options_with_value.known:
+        text = subprocess.run([_medial_executable(), command, "--list-options"], capture_output=True,
+                              text=True).stdout
+        values = [line.split()[1:] for line in text.splitlines() if line.startswith("values")]
+        if not values:
+            raise UsageError("cannot read the options of 'medial %s' (is %s Medial's command?)"
+                             % (command, _medial_executable()))
+        _options_with_value.known[command] = set(values[0])
+    return _options_with_value.known[command]
+
+
+_options_with_value.known = {}
 
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     try:
         command, inputs, passed, values, numbers = _parse(argv)
-        if command not in COMMANDS:
-            raise UsageError("COMMAND is one of %s, not %r" % (", ".join(COMMANDS), command))
         rows = run(command, inputs, values["--out-dir"], passed, scheduler=values.get("--scheduler"),
                    workers=numbers.get("--workers"), timeout=numbers.get("--timeout"),
                    retries=numbers.get("--retries", 0), resume=bool(values.get("--resume")),
@@ -383,7 +421,7 @@ def main(argv=None):
         return 2
     counts = {}
     for row in rows:
-        counts[row["status"]] = counts.get(row["status"], 0) + 1
+        counts[row.status] = counts.get(row.status, 0) + 1
     failed = len(rows) - counts.get("ok", 0)
     print("medial batch: %d inputs: %s; manifest %s" % (
         len(rows), ", ".join("%d %s" % (n, s) for s, n in sorted(counts.items())) or "none run",

@@ -2,9 +2,9 @@
 // once into runs along x (two threads, one per half of the slices); runs join into 26-connected parts by
 // union-find with the runs of the neighbouring rows; the part to follow (the largest, leaving out parts that
 // touch the volume's border when asked: the air around a body) - or several parts, for a colon split by
-// collapsed segments - is written straight into its bounding box grown by a margin. On a 512 x 512 x 400 CT
-// this replaces a full-size mask, a flood fill of the air outside and a full-size label volume (1.5 s and 0.5
-// GB) by a pass that reads each voxel once.
+// collapsed segments - is written straight into its bounding box grown by a margin. This replaces a
+// full-size mask, a flood fill of the air outside and a full-size label volume by a pass that reads each
+// voxel once.
 #pragma once
 
 #include "centerline/BinaryVolume.h"

@@ -180,7 +180,7 @@ bool followBranches(const BinaryVolume& volume, int64_t seed, const TskParameter
   std::vector<int> index(split.voxels.size(), -1);  // split branch -> output branch
   for (size_t b = 0; b < split.voxels.size(); ++b) {
     if (!progress(double(b) / double(split.voxels.size()))) {
-      result.error = "aborted";
+      result.error = Error::cancelled();
       return false;
     }
     BinaryVolume part = volume;
@@ -283,7 +283,7 @@ bool followParts(const ScalarVolume& input, const TskCenterlineParameters& p, co
         [&](double f) { return progress((double(done) + f * double(voxels)) / double(total)); }, one);
     if (followed && record) result.stages = std::move(one.stages);
     done += voxels;
-    if (!followed && one.error == "aborted") {
+    if (!followed && one.error.isCancelled()) {
       result.error = one.error;
       return false;
     }
@@ -348,6 +348,50 @@ void markBridgedSections(const Centerline& line, TubeSections& sections) {
   }
 }
 
+// The parts kept: the largest one left after the border rule, and with gaps bridged every other one of
+// at least the minimum volume (at most kMostParts, the largest); a note says how many were left out.
+std::vector<int> keptParts(const StructureParts& parts, const TskCenterlineParameters& parameters,
+                           bool dropBorder, double voxelVolume, std::vector<std::string>& notes) {
+  std::vector<int> kept;
+  const bool bridging = !parameters.detectBranches && parameters.maxGap > 0;
+  int smaller = 0;
+  for (size_t k = 0; k < parts.parts.size(); ++k) {
+    const StructureParts::Part& part = parts.parts[k];
+    if (dropBorder && part.border) continue;
+    if (kept.empty() || (bridging && double(part.voxels) * voxelVolume >= parameters.minimumPartVolume))
+      kept.push_back(int(k));
+    else if (bridging)
+      ++smaller;
+  }
+  constexpr size_t kMostParts = 64;  // the largest; more would be noise, not a colon's segments
+  if (kept.size() > kMostParts) {
+    smaller += int(kept.size() - kMostParts);
+    kept.resize(kMostParts);
+  }
+  if (smaller > 0 && kept.size() > 1)
+    notes.push_back(std::to_string(smaller) + " smaller part(s) of the structure were left out (under " +
+                    format(parameters.minimumPartVolume) + " mm^3, or beyond the " +
+                    std::to_string(kMostParts) + " largest)");
+  return kept;
+}
+
+// The given seed as a voxel of the structure's box (`seed`) and of the whole volume (`seedVoxel`); false
+// with `error` set when it lies outside the structure.
+bool placeSeed(const Eigen::Vector3d& s, const BinaryVolume& volume, const BinaryVolume& frame, int64_t& seed,
+               std::array<int, 3>& seedVoxel, Error& error) {
+  const Eigen::Vector3d index = volume.continuousIndex(s);
+  const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
+  if (!volume.contains(i, j, k) || !volume.inside[size_t(volume.index(i, j, k))]) {
+    error = "the seed (" + format(s.x()) + ", " + format(s.y()) + ", " + format(s.z()) +
+            ") mm lies outside the structure";
+    return false;
+  }
+  seed = volume.index(i, j, k);
+  const Eigen::Vector3d whole = frame.continuousIndex(s);
+  seedVoxel = {int(std::lround(whole.x())), int(std::lround(whole.y())), int(std::lround(whole.z()))};
+  return true;
+}
+
 }  // namespace
 
 TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterlineParameters& parameters,
@@ -381,30 +425,7 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
   frame.spacing = input.spacing;
   frame.direction = input.direction;
   const StructureParts parts = labelParts(size, runs);
-  // The parts kept: the largest one left after the border rule, and with gaps bridged every other one of
-  // at least the minimum volume.
-  std::vector<int> kept;
-  const bool bridging = !parameters.detectBranches && parameters.maxGap > 0;
-  const double voxelVolume = frame.spacing.prod();
-  int smaller = 0;
-  for (size_t k = 0; k < parts.parts.size(); ++k) {
-    const StructureParts::Part& part = parts.parts[k];
-    if (dropBorder && part.border) continue;
-    if (kept.empty() || (bridging && double(part.voxels) * voxelVolume >= parameters.minimumPartVolume))
-      kept.push_back(int(k));
-    else if (bridging)
-      ++smaller;
-  }
-  constexpr size_t kMostParts = 64;  // the largest; more would be noise, not a colon's segments
-  if (kept.size() > kMostParts) {
-    smaller += int(kept.size() - kMostParts);
-    kept.resize(kMostParts);
-  }
-  if (smaller > 0 && kept.size() > 1)
-    result.notes.push_back(std::to_string(smaller) +
-                           " smaller part(s) of the structure were left out (under " +
-                           format(parameters.minimumPartVolume) + " mm^3, or beyond the " +
-                           std::to_string(kMostParts) + " largest)");
+  const std::vector<int> kept = keptParts(parts, parameters, dropBorder, frame.spacing.prod(), result.notes);
   BinaryVolume volume = partsInBox(frame, runs, parts, kept, 1);
   result.structureVoxels = 0;
   for (int k : kept) result.structureVoxels += parts.parts[size_t(k)].voxels;
@@ -417,26 +438,14 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
     return result;
   }
   if (!report(0.1)) {
-    result.error = "aborted";
+    result.error = Error::cancelled();
     return result;
   }
 
   int64_t seed = -1;
   std::array<int, 3> seedVoxel{};
-  if (parameters.seed) {
-    const Eigen::Vector3d& s = *parameters.seed;
-    const Eigen::Vector3d index = volume.continuousIndex(s);
-    const int i = int(std::lround(index.x())), j = int(std::lround(index.y())),
-              k = int(std::lround(index.z()));
-    if (!volume.contains(i, j, k) || !volume.inside[size_t(volume.index(i, j, k))]) {
-      result.error = "the seed (" + format(s.x()) + ", " + format(s.y()) + ", " + format(s.z()) +
-                     ") mm lies outside the structure";
-      return result;
-    }
-    seed = volume.index(i, j, k);
-    const Eigen::Vector3d whole = frame.continuousIndex(s);
-    seedVoxel = {int(std::lround(whole.x())), int(std::lround(whole.y())), int(std::lround(whole.z()))};
-  }
+  if (parameters.seed && !placeSeed(*parameters.seed, volume, frame, seed, seedVoxel, result.error))
+    return result;
 
   bool followed = false;
   if (parameters.detectBranches)
@@ -469,7 +478,8 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
     result.sections = tubeSections(volume, result.branches.front().points, parameters.sections,
                                    [&report](double f) { return report(0.9 + 0.1 * f); });
     if (result.sections.arcLength.empty()) {
-      result.error = report(1.0) ? "no section could be computed along the centerline" : "aborted";
+      result.error =
+          report(1.0) ? Error("no section could be computed along the centerline") : Error::cancelled();
       return result;
     }
     markBridgedSections(result.branches.front(), result.sections);

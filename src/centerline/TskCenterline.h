@@ -7,6 +7,7 @@
 // of paper §4 (TubeSections) along the first polyline.
 #pragma once
 
+#include "common/Error.h"
 #include "centerline/TskAxis.h"
 #include "centerline/TubeSections.h"
 
@@ -94,14 +95,14 @@ struct TskCenterlineResult {
   // Seconds of each stage, in order: selection (runs of selected voxels), cleanup (the part to follow in
   // its box, holes), axis (phases I and II, and the branches), sections.
   std::vector<std::pair<std::string, double>> stageSeconds;
-  std::string error;
+  Error error;
   bool ok() const { return error.empty(); }
 };
 
 /// The TSK centerline of the structure in `volume`.
 /// @param volume a 3-D volume, at least 2 voxels along each axis
 /// @param parameters selection, clean-up, seed, the TSK parameters, branches and sections
-/// @param progress called with the fraction done; returning false stops the work (error "aborted")
+/// @param progress called with the fraction done; returning false stops the work (error: Error::cancelled())
 /// @return polylines in physical coordinates (mm) with radii and arc lengths, or an error naming the
 ///         problem: no voxel selected, nothing left after the clean-up, a seed outside the structure
 TskCenterlineResult tskCenterline(const ScalarVolume& volume, const TskCenterlineParameters& parameters = {},

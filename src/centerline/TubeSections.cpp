@@ -179,6 +179,98 @@ TubeSections tubeSections(const BinaryVolume& volume, const std::vector<Eigen::V
   return result;
 }
 
+namespace {
+
+// The area centroid of a section's wall polygon (ray lengths `distances` at equal angles), in the section's
+// (normal, binormal) coordinates, and the median ray length; false for a section that says little about
+// the centre. Where the plane cuts a bend obliquely, or reaches another loop, a few rays run far: rays
+// longer than 1.5 x the median are clipped, and a section with more than a quarter of them clipped is
+// skipped. An elongated section (an oblique cut through a bend, or a polyp reaching in) does not locate
+// the centre either: skipped when the longest ray exceeds the shortest by more than 1.8 times. A section
+// kept whose polygon has no area gives its median but no centroid.
+enum class Section { Skipped, NoArea, Centred };
+
+Section sectionCentroid(const std::vector<double>& distances, int rays, Eigen::Vector2d& centroid,
+                        double& median) {
+  if (std::any_of(distances.begin(), distances.end(), [](double d) { return std::isnan(d); }))
+    return Section::Skipped;
+  std::vector<Eigen::Vector2d> wall;
+  for (int r = 0; r < rays; ++r) {
+    const double angle = 2 * M_PI * r / rays;
+    wall.emplace_back(distances[size_t(r)] * std::cos(angle), distances[size_t(r)] * std::sin(angle));
+  }
+  std::vector<double> lengths;
+  for (const auto& w : wall) lengths.push_back(w.norm());
+  std::nth_element(lengths.begin(), lengths.begin() + rays / 2, lengths.end());
+  median = lengths[size_t(rays / 2)];
+  const double cap = 1.5 * median;
+  int clipped = 0;
+  for (auto& w : wall)
+    if (w.norm() > cap) w *= cap / w.norm(), ++clipped;
+  if (clipped > rays / 4) return Section::Skipped;
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+  for (const auto& w : wall) shortest = std::min(shortest, w.norm()), longest = std::max(longest, w.norm());
+  if (longest > 1.8 * shortest) return Section::Skipped;
+  double area = 0;
+  centroid = Eigen::Vector2d::Zero();
+  for (int r = 0; r < rays; ++r) {
+    const Eigen::Vector2d& a = wall[size_t(r)];
+    const Eigen::Vector2d& b = wall[size_t((r + 1) % rays)];
+    const double cross = a.x() * b.y() - a.y() * b.x();
+    area += cross;
+    centroid += cross * (a + b);
+  }
+  if (std::abs(area) < 1e-12) return Section::NoArea;
+  centroid /= 3 * area;
+  return Section::Centred;
+}
+
+// Skipped sections (oblique cuts at sharp bends) take the move interpolated between their measured
+// neighbours: a zero move among moved neighbours would put a kink in the line.
+void interpolateSkippedMoves(const std::vector<char>& measured, const std::vector<double>& arc,
+                             std::vector<Eigen::Vector3d>& offset) {
+  const size_t n = offset.size();
+  size_t previous = n;  // last measured index
+  for (size_t i = 0; i <= n; ++i) {
+    if (i < n && !measured[i]) continue;
+    const size_t first = previous == n ? 0 : previous + 1;
+    for (size_t k = first; k < i; ++k) {
+      if (previous == n && i == n) break;  // nothing measured at all
+      if (previous == n)
+        offset[k] = offset[i];
+      else if (i == n)
+        offset[k] = offset[previous];
+      else {
+        const double span = arc[i] - arc[previous];
+        const double t = span > 0 ? (arc[k] - arc[previous]) / span : 0.0;
+        offset[k] = (1 - t) * offset[previous] + t * offset[i];
+      }
+    }
+    previous = i;
+  }
+}
+
+// Sections that disagree from one point to the next (a bend cut obliquely) leave sub-voxel wiggles: one
+// moving average of the positions over +-window of arc length smooths them without flattening the bends,
+// symmetric so that the ends stay where they are.
+std::vector<Eigen::Vector3d> symmetricAverage(const std::vector<Eigen::Vector3d>& axis, double window) {
+  const size_t n = axis.size();
+  const std::vector<double> arc = arcLengths(axis);
+  std::vector<Eigen::Vector3d> smooth(axis);
+  size_t lo = 0, hi = 0;
+  for (size_t i = 0; i < n; ++i) {
+    while (arc[i] - arc[lo] > window) ++lo;
+    while (hi + 1 < n && arc[hi + 1] - arc[i] <= window) ++hi;
+    const size_t reach = std::min(i - lo, hi - i);
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (size_t k = i - reach; k <= i + reach; ++k) sum += axis[k];
+    smooth[i] = sum / double(2 * reach + 1);
+  }
+  return smooth;
+}
+
+}  // namespace
+
 std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::vector<Eigen::Vector3d> axis,
                                               int rays, int iterations, double smoothing) {
   const size_t n = axis.size();
@@ -205,71 +297,18 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
     cast(0, n / 2);
     second.join();
     for (size_t i = 0; i < n; ++i) {
-      const Eigen::Vector3d& normal = normals[i];
-      const Eigen::Vector3d& binormal = binormals[i];
-      // The wall polygon in the section's (normal, binormal) coordinates, and its area centroid.
-      const std::vector<double>& distances = walls[i];
-      if (std::any_of(distances.begin(), distances.end(), [](double d) { return std::isnan(d); })) continue;
-      std::vector<Eigen::Vector2d> wall;
-      for (int r = 0; r < rays; ++r) {
-        const double angle = 2 * M_PI * r / rays;
-        wall.emplace_back(distances[size_t(r)] * std::cos(angle), distances[size_t(r)] * std::sin(angle));
-      }
-      // Where the plane cuts a bend obliquely, or reaches another loop, a few rays run far: such a section
-      // says little about the centre. Rays longer than 1.5 x the median are clipped, and a section with
-      // more than a quarter of them clipped is skipped.
-      std::vector<double> lengths;
-      for (const auto& w : wall) lengths.push_back(w.norm());
-      std::nth_element(lengths.begin(), lengths.begin() + rays / 2, lengths.end());
-      const double median = lengths[size_t(rays / 2)], cap = 1.5 * median;
-      int clipped = 0;
-      for (auto& w : wall)
-        if (w.norm() > cap) w *= cap / w.norm(), ++clipped;
-      if (clipped > rays / 4) continue;
-      // An elongated section (an oblique cut through a bend, or a polyp reaching in) does not locate the
-      // centre either: skip it when the longest ray exceeds the shortest by more than 1.8 times.
-      double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-      for (const auto& w : wall)
-        shortest = std::min(shortest, w.norm()), longest = std::max(longest, w.norm());
-      if (longest > 1.8 * shortest) continue;
-      radii.push_back(median);
-      double area = 0;
-      Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-      for (int r = 0; r < rays; ++r) {
-        const Eigen::Vector2d& a = wall[size_t(r)];
-        const Eigen::Vector2d& b = wall[size_t((r + 1) % rays)];
-        const double cross = a.x() * b.y() - a.y() * b.x();
-        area += cross;
-        centroid += cross * (a + b);
-      }
-      if (std::abs(area) < 1e-12) continue;
-      centroid /= 3 * area;
+      Eigen::Vector2d centroid;
+      double median = 0;
+      const Section section = sectionCentroid(walls[i], rays, centroid, median);
+      if (section != Section::Skipped) radii.push_back(median);
+      if (section != Section::Centred) continue;
       if (centroid.norm() > 0.5 * median) centroid *= 0.5 * median / centroid.norm();  // small steps
-      offset[i] = centroid.x() * normal + centroid.y() * binormal;
+      offset[i] = centroid.x() * normals[i] + centroid.y() * binormals[i];
       measured[i] = 1;
     }
     if (radii.empty()) break;
     const std::vector<double> arc = arcLengths(axis);
-    // Skipped sections (oblique cuts at sharp bends) take the move interpolated between their measured
-    // neighbours: a zero move among moved neighbours would put a kink in the line.
-    size_t previous = n;  // last measured index
-    for (size_t i = 0; i <= n; ++i) {
-      if (i < n && !measured[i]) continue;
-      const size_t first = previous == n ? 0 : previous + 1;
-      for (size_t k = first; k < i; ++k) {
-        if (previous == n && i == n) break;  // nothing measured at all
-        if (previous == n)
-          offset[k] = offset[i];
-        else if (i == n)
-          offset[k] = offset[previous];
-        else {
-          const double span = arc[i] - arc[previous];
-          const double t = span > 0 ? (arc[k] - arc[previous]) / span : 0.0;
-          offset[k] = (1 - t) * offset[previous] + t * offset[i];
-        }
-      }
-      previous = i;
-    }
+    interpolateSkippedMoves(measured, arc, offset);
     // Within a radius of either end the sections cut the end caps: the moves fade out towards the ends.
     std::nth_element(radii.begin(), radii.begin() + long(radii.size() / 2), radii.end());
     const double typical = std::max(radii[radii.size() / 2], 1e-9);
@@ -287,21 +326,7 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
     }
     axis = std::move(moved);
   }
-  // Sections that disagree from one point to the next (a bend cut obliquely) leave sub-voxel wiggles:
-  // one moving average of the positions over +-1 voxel smooths them without flattening the bends.
-  const std::vector<double> arc = arcLengths(axis);
-  std::vector<Eigen::Vector3d> smooth(axis);
-  const double window = volume.spacing.maxCoeff();
-  size_t lo = 0, hi = 0;
-  for (size_t i = 0; i < n; ++i) {
-    while (arc[i] - arc[lo] > window) ++lo;
-    while (hi + 1 < n && arc[hi + 1] - arc[i] <= window) ++hi;
-    const size_t reach = std::min(i - lo, hi - i);  // symmetric, so the ends stay where they are
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (size_t k = i - reach; k <= i + reach; ++k) sum += axis[k];
-    smooth[i] = sum / double(2 * reach + 1);
-  }
-  return smooth;
+  return symmetricAverage(axis, volume.spacing.maxCoeff());  // +-1 voxel
 }
 
 }  // namespace medial

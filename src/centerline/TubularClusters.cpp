@@ -10,7 +10,8 @@
 namespace medial {
 
 // Step 2b, computed only for the voxels that are compared (the last layer of each section in step 3,
-// the voxels around the axis for its radius): a pass over the whole box took 1.2 s of a full-size CT's 3.
+// the voxels around the axis for its radius): a pass over the whole box costs a large part of a
+// full-size CT's run.
 float sixDirectionBorderDistance(const BinaryVolume& v, int64_t voxel) {
   const auto c = v.coordinates(voxel);
   const int64_t strides[3] = {1, v.size[0], int64_t(v.size[0]) * v.size[1]};
@@ -162,47 +163,24 @@ int64_t lowestVoxel(const BinaryVolume& v) {
   return best;
 }
 
-TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
-                              const std::function<bool(double)>& progress) {
-  TubularClusters r;
-  auto aborted = [&](double f) {
-    if (progress && !progress(f)) {
-      r.error = "aborted";
-      return true;
-    }
-    return false;
-  };
-  const bool autoSeed = seed < 0;
-  if (autoSeed) seed = lowestVoxel(v);
-  if (seed < 0) {
-    r.error = "the structure is empty (no voxel selected)";
-    return r;
-  }
-  if (seed >= v.voxelCount() || !v.inside[size_t(seed)]) {
-    r.error = "the seed lies outside the structure";
-    return r;
-  }
+namespace {
 
-  // Step 1, beyond the paper: the lowest voxel starts a colon (the rectum), but not a U standing on its
-  // bend. When it is no end of the structure (an end F found from it is farther from the other end G than
-  // it is), the lower of the two ends is taken instead.
-  if (autoSeed) {
-    int fromSeed = 0, acrossEnds = 0;
-    const int64_t f = farEnd(v, seed, fromSeed);
-    const int64_t g = farEnd(v, f, acrossEnds);
-    if (double(fromSeed) < 0.9 * double(acrossEnds)) seed = v.physical(f).z() <= v.physical(g).z() ? f : g;
-  }
+// Step 1, beyond the paper: the lowest voxel starts a colon (the rectum), but not a U standing on its
+// bend. When it is no end of the structure (an end F found from it is farther from the other end G than
+// it is), the lower of the two ends is taken instead.
+int64_t structureEnd(const BinaryVolume& v, int64_t lowest) {
+  int fromSeed = 0, acrossEnds = 0;
+  const int64_t f = farEnd(v, lowest, fromSeed);
+  const int64_t g = farEnd(v, f, acrossEnds);
+  if (double(fromSeed) < 0.9 * double(acrossEnds)) return v.physical(f).z() <= v.physical(g).z() ? f : g;
+  return lowest;
+}
 
-  // Step 2a: Manhattan layers grown inside the structure.
-  std::vector<int> layer;  // per voxel, freed once step 4 has used it (140 MB on a full-size CT)
-  std::vector<std::vector<int64_t>> layers = growLayers(v, seed, layer);
-  int64_t reached = 0;
-  for (const auto& l : layers) reached += int64_t(l.size());
-  for (int64_t i = 0; i < v.voxelCount(); ++i) r.unreachedVoxels += v.inside[size_t(i)] != 0;
-  r.unreachedVoxels -= reached;
-  if (aborted(0.4)) return r;
-
-  // Step 3: the primitive centerline, section by section.
+// Step 3: the primitive centerline, section by section: each section ends at the layer where its height
+// cubed passes 4 / pi times its volume (eq. 1), and its point is the voxel of that layer farthest from the
+// border.
+void choosePrimitivePoints(const BinaryVolume& v, int64_t seed,
+                           const std::vector<std::vector<int64_t>>& layers, TubularClusters& r) {
   r.primitive.push_back(seed);
   r.primitiveLayer.push_back(0);
   r.primitiveBorderDistance.push_back(sixDirectionBorderDistance(v, seed));
@@ -229,32 +207,44 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
     r.primitiveLayer.push_back(last);
     current = last;
   }
-  if (aborted(0.5)) return r;
+}
 
-  // Step 4: clusters by membership mu_ij = Dm_j / D_ij among the vertices around the voxel's section.
-  const int n = int(r.primitive.size());
-  std::vector<Eigen::Vector3d> vertex(static_cast<size_t>(n));
-  std::vector<double> nearest(size_t(n), v.spacing.minCoeff());  // Dm_j
-  for (int j = 0; j < n; ++j) {
-    vertex[size_t(j)] = v.physical(r.primitive[size_t(j)]);
-    const auto c = v.coordinates(r.primitive[size_t(j)]);
+// Dm_j of step 4: each primitive point's distance to its nearest reached neighbour voxel.
+std::vector<double> nearestNeighbourDistances(const BinaryVolume& v,
+                                              const std::vector<Eigen::Vector3d>& vertex,
+                                              const std::vector<int64_t>& primitive,
+                                              const std::vector<int>& layer) {
+  std::vector<double> nearest(primitive.size(), v.spacing.minCoeff());
+  for (size_t j = 0; j < primitive.size(); ++j) {
+    const auto c = v.coordinates(primitive[j]);
     double best = INFINITY;
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           if ((dx | dy | dz) == 0 || !v.contains(c[0] + dx, c[1] + dy, c[2] + dz)) continue;
           const int64_t other = v.index(c[0] + dx, c[1] + dy, c[2] + dz);
-          if (layer[size_t(other)] >= 0)
-            best = std::min(best, (v.physical(other) - vertex[size_t(j)]).norm());
+          if (layer[size_t(other)] >= 0) best = std::min(best, (v.physical(other) - vertex[j]).norm());
         }
-    if (std::isfinite(best)) nearest[size_t(j)] = best;
+    if (std::isfinite(best)) nearest[j] = best;
   }
+  return nearest;
+}
+
+struct Member {  // 16 bytes: a full-size colon has millions
+  int64_t voxel;
+  float relative;
+  int cluster;
+};
+
+// Step 4: clusters by membership mu_ij = Dm_j / D_ij among the vertices around the voxel's section. Frees
+// `layer` and `layers` as soon as they are used (hundreds of MB on a full-size CT).
+std::vector<Member> clusterMembers(const BinaryVolume& v, std::vector<std::vector<int64_t>>& layers,
+                                   std::vector<int>& layer, int64_t reached, const TubularClusters& r) {
+  const int n = int(r.primitive.size());
+  std::vector<Eigen::Vector3d> vertex(static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) vertex[size_t(j)] = v.physical(r.primitive[size_t(j)]);
+  const std::vector<double> nearest = nearestNeighbourDistances(v, vertex, r.primitive, layer);  // Dm_j
   std::vector<int>().swap(layer);
-  struct Member {  // 16 bytes: a full-size colon has millions
-    int64_t voxel;
-    float relative;
-    int cluster;
-  };
   // Each voxel's cluster and position in it, layer by layer; two threads take half of the layers each
   // (by voxel count) and their lists are joined in layer order.
   const auto assign = [&](int fromLayer, int toLayer, std::vector<Member>& out) {
@@ -292,43 +282,83 @@ TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
   members.insert(members.end(), later.begin(), later.end());
   std::vector<Member>().swap(later);  // the lists and layers go before step 5 copies the members
   std::vector<std::vector<int64_t>>().swap(layers);
-  if (aborted(0.8)) return r;
+  return members;
+}
 
-  // Step 5: the total order: by cluster (a counting sort), then by relative position within each, stable
-  // (ties keep the layer order): each cluster sorts 64-bit keys, the position's float bits made
-  // order-preserving above the member's rank in the cluster.
-  {
-    std::vector<size_t> start(size_t(n) + 1, 0);
-    for (const Member& m : members) ++start[size_t(m.cluster) + 1];
-    for (int j = 0; j < n; ++j) start[size_t(j) + 1] += start[size_t(j)];
-    std::vector<uint64_t> keys(members.size());
-    std::vector<int64_t> voxelAt(members.size());  // the voxels of each cluster, in layer order
-    std::vector<size_t> at(start.begin(), start.end() - 1);
-    for (const Member& m : members) {
-      const size_t slot = at[size_t(m.cluster)]++;
-      uint32_t bits;
-      std::memcpy(&bits, &m.relative, sizeof bits);
-      bits = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);  // float order as unsigned order
-      keys[slot] = (uint64_t(bits) << 32) | uint64_t(slot - start[size_t(m.cluster)]);
-      voxelAt[slot] = m.voxel;
-    }
-    const size_t count = members.size();
-    std::vector<Member>().swap(members);
-    const auto sortClusters = [&](int from, int to) {
-      for (int j = from; j < to; ++j)
-        std::sort(keys.begin() + long(start[size_t(j)]), keys.begin() + long(start[size_t(j) + 1]));
-    };
-    std::thread secondHalf(sortClusters, n / 2, n);
-    sortClusters(0, n / 2);
-    secondHalf.join();
-    r.orderedVoxels.resize(count);
-    r.orderedCluster.resize(count);
-    for (int j = 0; j < n; ++j)
-      for (size_t k = start[size_t(j)]; k < start[size_t(j) + 1]; ++k) {
-        r.orderedVoxels[k] = voxelAt[start[size_t(j)] + size_t(keys[k] & 0xffffffffu)];
-        r.orderedCluster[k] = j;
-      }
+// Step 5: the total order: by cluster (a counting sort), then by relative position within each, stable
+// (ties keep the layer order): each cluster sorts 64-bit keys, the position's float bits made
+// order-preserving above the member's rank in the cluster. Frees `members`.
+void orderVoxels(std::vector<Member>& members, int n, TubularClusters& r) {
+  std::vector<size_t> start(size_t(n) + 1, 0);
+  for (const Member& m : members) ++start[size_t(m.cluster) + 1];
+  for (int j = 0; j < n; ++j) start[size_t(j) + 1] += start[size_t(j)];
+  std::vector<uint64_t> keys(members.size());
+  std::vector<int64_t> voxelAt(members.size());  // the voxels of each cluster, in layer order
+  std::vector<size_t> at(start.begin(), start.end() - 1);
+  for (const Member& m : members) {
+    const size_t slot = at[size_t(m.cluster)]++;
+    uint32_t bits;
+    std::memcpy(&bits, &m.relative, sizeof bits);
+    bits = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);  // float order as unsigned order
+    keys[slot] = (uint64_t(bits) << 32) | uint64_t(slot - start[size_t(m.cluster)]);
+    voxelAt[slot] = m.voxel;
   }
+  const size_t count = members.size();
+  std::vector<Member>().swap(members);
+  const auto sortClusters = [&](int from, int to) {
+    for (int j = from; j < to; ++j)
+      std::sort(keys.begin() + long(start[size_t(j)]), keys.begin() + long(start[size_t(j) + 1]));
+  };
+  std::thread secondHalf(sortClusters, n / 2, n);
+  sortClusters(0, n / 2);
+  secondHalf.join();
+  r.orderedVoxels.resize(count);
+  r.orderedCluster.resize(count);
+  for (int j = 0; j < n; ++j)
+    for (size_t k = start[size_t(j)]; k < start[size_t(j) + 1]; ++k) {
+      r.orderedVoxels[k] = voxelAt[start[size_t(j)] + size_t(keys[k] & 0xffffffffu)];
+      r.orderedCluster[k] = j;
+    }
+}
+
+}  // namespace
+
+TubularClusters structureTube(const BinaryVolume& v, int64_t seed,
+                              const std::function<bool(double)>& progress) {
+  TubularClusters r;
+  auto aborted = [&](double f) {
+    if (progress && !progress(f)) {
+      r.error = Error::cancelled();
+      return true;
+    }
+    return false;
+  };
+  const bool autoSeed = seed < 0;
+  if (autoSeed) seed = lowestVoxel(v);
+  if (seed < 0) {
+    r.error = "the structure is empty (no voxel selected)";
+    return r;
+  }
+  if (seed >= v.voxelCount() || !v.inside[size_t(seed)]) {
+    r.error = "the seed lies outside the structure";
+    return r;
+  }
+  if (autoSeed) seed = structureEnd(v, seed);  // step 1
+
+  // Step 2a: Manhattan layers grown inside the structure.
+  std::vector<int> layer;  // per voxel, freed once step 4 has used it
+  std::vector<std::vector<int64_t>> layers = growLayers(v, seed, layer);
+  int64_t reached = 0;
+  for (const auto& l : layers) reached += int64_t(l.size());
+  for (int64_t i = 0; i < v.voxelCount(); ++i) r.unreachedVoxels += v.inside[size_t(i)] != 0;
+  r.unreachedVoxels -= reached;
+  if (aborted(0.4)) return r;
+
+  choosePrimitivePoints(v, seed, layers, r);  // step 3
+  if (aborted(0.5)) return r;
+  std::vector<Member> members = clusterMembers(v, layers, layer, reached, r);  // step 4
+  if (aborted(0.8)) return r;
+  orderVoxels(members, int(r.primitive.size()), r);  // step 5
   aborted(1.0);
   return r;
 }

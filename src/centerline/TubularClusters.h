@@ -21,6 +21,7 @@
 //     (from the previous cluster's side to the next one's).
 #pragma once
 
+#include "common/Error.h"
 #include "centerline/BinaryVolume.h"
 
 #include <functional>
@@ -36,7 +37,7 @@ struct TubularClusters {
   std::vector<int64_t> orderedVoxels;          // every reached voxel, in the total order of step 5
   std::vector<int> orderedCluster;             // the cluster (vertex index) of each ordered voxel
   int64_t unreachedVoxels = 0;                 // structure voxels not 6-connected to P0
-  std::string error;
+  Error error;
   bool ok() const { return error.empty(); }
 };
 

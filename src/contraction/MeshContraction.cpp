@@ -11,6 +11,69 @@
 
 namespace medial {
 
+namespace {
+
+// W_L0 (III.A): the paper's factor times the square root of the mean face area, scaled up above
+// `referenceVertices` (see the header) and never above the cap.
+double firstContractionWeight(const ContractionParameters& p, double area, Eigen::Index faces,
+                              Eigen::Index n) {
+  double weight = p.initialContractionFactor * std::sqrt(area / double(faces));
+  if (p.referenceVertices > 0 && n > p.referenceVertices)
+    weight *= std::pow(double(n) / p.referenceVertices, 1.5);
+  return std::min(weight, p.maxContractionWeight);  // a small reference: capped
+}
+
+// The cotangents at the new positions, but for faces that have collapsed below a fraction of their first
+// area: those keep their last value from then on (see the header).
+void refreshCotangents(const Vertices& positions, const Faces& faces, const ContractionParameters& p,
+                       const Eigen::VectorXd& areas, const Eigen::VectorXd& initialFaceAreas,
+                       Eigen::MatrixX3d& cotangents, std::vector<bool>& frozen) {
+  const Eigen::MatrixX3d current = faceCotangents(positions, faces, p.minAngleDegrees * M_PI / 180.0);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    if (!frozen[size_t(f)] && areas[f] < p.degenerateFaceFraction * initialFaceAreas[f])
+      frozen[size_t(f)] = true;
+    if (!frozen[size_t(f)]) cotangents.row(f) = current.row(f);
+  }
+}
+
+// III.A, step 3: W_H,i = W_H0 sqrt(A_i^0 / A_i^t), capped.
+void updateAttraction(const ContractionParameters& p, const Eigen::VectorXd& initialRingAreas,
+                      const Eigen::VectorXd& ringAreas, Eigen::VectorXd& attraction) {
+  for (Eigen::Index i = 0; i < attraction.size(); ++i) {
+    const double ratio = ringAreas[i] > 0 ? initialRingAreas[i] / ringAreas[i] : INFINITY;
+    attraction[i] = std::min(p.initialAttraction * std::sqrt(ratio), p.maxAttractionWeight);
+  }
+}
+
+enum class Stop { No, Here, KeepPrevious };
+
+// Whether the iterations end after one that left the surface area `area` (the previous one's
+// `previousArea`), and why.
+Stop shouldStop(const ContractionParameters& p, const ContractionResult& result, double area,
+                double previousArea, double initialArea, double initialVolume, double contractionWeight,
+                std::string& reason) {
+  if (result.areaRatio < p.areaRatioStop) {
+    reason = "area ratio below threshold";
+    return Stop::Here;
+  }
+  if (initialVolume > 0 && result.volumeRatio < p.volumeRatioStop) {
+    reason = "volume ratio below threshold";
+    return Stop::Here;
+  }
+  if (area > previousArea * p.areaGrowthGuard) {
+    // The Laplacian of a nearly degenerate mesh grows unreliable: keep the last shrinking iterate.
+    reason = "area grew: kept the previous iterate";
+    return Stop::KeepPrevious;
+  }
+  if (previousArea - area < p.stallFraction * initialArea && contractionWeight >= p.maxContractionWeight) {
+    reason = "converged (area no longer shrinks)";
+    return Stop::Here;
+  }
+  return Stop::No;
+}
+
+}  // namespace
+
 ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParameters& p,
                                const ProgressCallback& progress) {
   ContractionResult result;
@@ -35,10 +98,7 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
   const Eigen::VectorXd initialRingAreas = oneRingAreas(mesh.faces, initialFaceAreas, n);
   const double initialArea = initialFaceAreas.sum();
   const double initialVolume = std::abs(enclosedVolume(positions, mesh.faces));
-  double contractionWeight = p.initialContractionFactor * std::sqrt(initialArea / double(mesh.faces.rows()));
-  if (p.referenceVertices > 0 && n > p.referenceVertices)
-    contractionWeight *= std::pow(double(n) / p.referenceVertices, 1.5);
-  contractionWeight = std::min(contractionWeight, p.maxContractionWeight);  // a small reference: capped
+  double contractionWeight = firstContractionWeight(p, initialArea, mesh.faces.rows(), n);
   Eigen::VectorXd attraction = Eigen::VectorXd::Constant(n, p.initialAttraction);
 
   // Cotangents of faces that have collapsed are frozen at their last value (see the header).
@@ -67,14 +127,8 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
   result.stopReason = "maximum iterations";
   for (int iteration = 0; iteration < p.maxIterations; ++iteration) {
     Stopwatch start;
-    if (iteration > 0) {
-      const Eigen::MatrixX3d current = faceCotangents(positions, mesh.faces, minAngle);
-      for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
-        if (!frozen[size_t(f)] && areas[f] < p.degenerateFaceFraction * initialFaceAreas[f])
-          frozen[size_t(f)] = true;
-        if (!frozen[size_t(f)]) cotangents.row(f) = current.row(f);
-      }
-    }
+    if (iteration > 0)
+      refreshCotangents(positions, mesh.faces, p, areas, initialFaceAreas, cotangents, frozen);
     const Eigen::SparseMatrix<double>& laplacian = assembler.update(cotangents);
     if (p.recordSteps && iteration == 0) record(positions, laplacian, contractionWeight, attraction);
     const double weightUsed = contractionWeight;
@@ -105,11 +159,7 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
     // Weight updates of III.A, steps 2 and 3.
     contractionWeight = std::min(contractionWeight * p.contractionScale, p.maxContractionWeight);
     areas = faceAreas(positions, mesh.faces);
-    const Eigen::VectorXd ringAreas = oneRingAreas(mesh.faces, areas, n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double ratio = ringAreas[i] > 0 ? initialRingAreas[i] / ringAreas[i] : INFINITY;
-      attraction[i] = std::min(p.initialAttraction * std::sqrt(ratio), p.maxAttractionWeight);
-    }
+    updateAttraction(p, initialRingAreas, oneRingAreas(mesh.faces, areas, n), attraction);
 
     const double area = areas.sum();
     result.areaRatio = area / initialArea;
@@ -117,28 +167,16 @@ ContractionResult contractMesh(const TriangleMesh& mesh, const ContractionParame
         initialVolume > 0 ? std::abs(enclosedVolume(positions, mesh.faces)) / initialVolume : 0;
     if (p.recordSteps) record(positions, laplacian, weightUsed, attractionUsed);
     if (progress && !progress(double(result.iterations) / p.maxIterations)) {
-      result.error = "aborted";
+      result.error = Error::cancelled();
       return result;
     }
-    if (result.areaRatio < p.areaRatioStop) {
-      result.stopReason = "area ratio below threshold";
-      break;
-    }
-    if (initialVolume > 0 && result.volumeRatio < p.volumeRatioStop) {
-      result.stopReason = "volume ratio below threshold";
-      break;
-    }
-    if (area > previousArea * p.areaGrowthGuard) {
-      // The Laplacian of a nearly degenerate mesh grows unreliable: keep the last shrinking iterate.
+    const Stop stop = shouldStop(p, result, area, previousArea, initialArea, initialVolume, contractionWeight,
+                                 result.stopReason);
+    if (stop == Stop::KeepPrevious) {
       positions = best;
       result.areaRatio = previousArea / initialArea;
-      result.stopReason = "area grew: kept the previous iterate";
-      break;
     }
-    if (previousArea - area < p.stallFraction * initialArea && contractionWeight >= p.maxContractionWeight) {
-      result.stopReason = "converged (area no longer shrinks)";
-      break;
-    }
+    if (stop != Stop::No) break;
     previousArea = area;
     best = positions;
   }

@@ -18,8 +18,7 @@
 // Resolution: in the normal matrix, W_L^2 L^T L acts on a smooth field like W_L^2 a^2 times its
 // bi-Laplacian (a the mean face area: the cotangent Laplacian's entries have no unit), so the paper's
 // W_L0 ~ sqrt(a) makes each iteration's smoothing step W_L0^2 a^2 ~ a^3: four times the vertices, 64 times
-// smaller a step, three more iterations in which nothing moves (refined_elephant, 44,460 vertices: in its
-// first five iterations 90-100 % of the vertices moved less than 1e-4 of the diagonal). A mesh with more
+// smaller a step, three more iterations in which nothing moves (docs/measurements.md). A mesh with more
 // vertices than `referenceVertices` (the default decimation budget) therefore starts with W_L0 x
 // (n / referenceVertices)^1.5, the step it would have at the reference resolution.
 //
@@ -32,6 +31,7 @@
 // to 137 nodes along the limbs. 0.2 was the best of 1e-3, 1e-2, 0.1, 0.2, 0.3, 0.5.
 #pragma once
 
+#include "common/Error.h"
 #include "mesh/SparseSolver.h"
 #include "mesh/TriangleMesh.h"
 
@@ -91,7 +91,7 @@ struct ContractionResult {
   std::vector<ContractionStep> steps;  // with recordSteps: step 0 (the input), then one per iteration
   // Seconds spent in the stages of the iterations.
   double assembleSeconds = 0, analyzeSeconds = 0, factorizeSeconds = 0, solveSeconds = 0;
-  std::string error;  // non-empty when the contraction failed (solver breakdown, aborted)
+  Error error;  // non-empty when the contraction failed (solver breakdown, cancelled)
   bool ok() const { return error.empty(); }
 };
 

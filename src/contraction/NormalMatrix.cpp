@@ -9,8 +9,8 @@ namespace {
 
 // The pattern of L L, sorted by row in each column, with every diagonal entry (a column of an unused
 // vertex is empty in L: its diagonal takes the attraction). Found column by column, as the product is
-// then filled: Eigen's general product (it sorts through two transposes) took 8 ms of the elephant's
-// 2,775-vertex contraction, three factorizations' worth.
+// then filled: Eigen's general product sorts through two transposes, which cost as much as several
+// factorizations.
 Eigen::SparseMatrix<double> twoRingPattern(const Eigen::SparseMatrix<double>& laplacian) {
   if (!laplacian.isCompressed() || laplacian.rows() != laplacian.cols())
     throw std::logic_error("NormalMatrix: the Laplacian must be square and compressed");

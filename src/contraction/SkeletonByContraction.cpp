@@ -93,6 +93,66 @@ std::string checkContractionInput(const TriangleMesh& mesh) {
   return {};
 }
 
+namespace {
+
+// The coarse mesh's vertex map and contracted positions carried back to the input's vertices: each one
+// goes with the coarse vertex that absorbed it.
+void toInputVertices(const DecimatedMesh& coarse, const Vertices& contracted, CurveSkeleton& curve,
+                     SkeletonByContractionResult& result) {
+  std::vector<int> vertexToNode(coarse.representative.size(), -1);
+  for (size_t v = 0; v < coarse.representative.size(); ++v) {
+    const int r = coarse.representative[v];
+    if (r < 0) continue;
+    vertexToNode[v] = curve.vertexToNode[size_t(r)];
+    result.contracted.row(Eigen::Index(v)) = contracted.row(r);
+  }
+  curve.vertexToNode = std::move(vertexToNode);
+}
+
+// III.C refinement (with the cycles surgery lost put back before edges leaving the mesh are split) and,
+// without a selection, the centring of every node; returns the cross-sections the centring uses (none
+// without it).
+std::unique_ptr<CrossSections> refineCurve(const TriangleMesh& mesh, const DecimatedMesh& coarse,
+                                           const InsideTest& inside, const SkeletonByContractionParameters& p,
+                                           CurveSkeleton& curve, SkeletonByContractionResult& result) {
+  if (p.refineEmbedding) {
+    result.refinedNodes = refineEmbedding(curve, mesh.vertices, inside);
+    result.pushedNodes = pushNodesInside(curve, inside);
+  }
+  if (p.restoreCycles) result.cycleRepair = restoreMissingCycles(curve, mesh, inside);
+  if (p.refineEmbedding) result.splitEdges = splitEdgesLeavingTheMesh(curve, mesh.vertices, inside);
+  if (!p.centerNodes) return nullptr;
+  // Above 64,000 vertices the sections are cut from the decimation's 40,000-vertex first pass: centroids
+  // within a small fraction of a radius of the input's, at a fraction of the cost.
+  auto sections =
+      std::make_unique<CrossSections>(coarse.coarsened.faces.rows() > 0 ? coarse.coarsened : mesh);
+  // With a selection only the selected nodes are centred (selectCurve): as centred, at a fifth of the
+  // cost. Without one, edges still off-centre after the centring are split at their sections' centroids
+  // and the new nodes centred in turn. (Branch nodes of the whole curve skeleton stay: moved, those of
+  // small side branches - the cow's udder - tangled the skeleton.)
+  if (p.targetNodes <= 0) {
+    result.centredNodes = centreNodes(curve, *sections, inside);
+    result.centringSplits = splitOffCentreEdges(curve, mesh.vertices, *sections, inside);
+    result.centredNodes += centreNodes(curve, *sections, inside);
+  }
+  return sections;
+}
+
+// III.D selection. The selected nodes are centred across the unselected skeleton's direction where they
+// came from: their own edges are chords of bent parts, and a cut across a chord is oblique to the part (a
+// node centred in it lands off the axis; docs/measurements.md).
+void selectCurve(const InsideTest& inside, const CrossSections* sections, int targetNodes,
+                 CurveSkeleton& curve, SkeletonByContractionResult& result) {
+  const std::vector<Eigen::Vector3d> unselectedDirections = nodeDirections(curve);
+  selectNodes(curve, targetNodes, &inside, &result.selectedFrom);
+  std::vector<Eigen::Vector3d> directions;
+  for (int from : result.selectedFrom) directions.push_back(unselectedDirections[size_t(from)]);
+  if (sections)
+    result.centredNodes += centreNodes(curve, *sections, inside, /*branchNodes=*/true, 2, &directions);
+}
+
+}  // namespace
+
 SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
                                                   const SkeletonByContractionParameters& p,
                                                   const std::function<bool(double)>& progress) {
@@ -109,7 +169,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   result.decimationSeconds = start.seconds();
   result.contractedVertices = int(coarse.mesh.vertices.rows());
   if (progress && !progress(0.02)) {
-    result.error = "aborted";
+    result.error = Error::cancelled();
     return result;
   }
 
@@ -126,7 +186,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   result.contractionVolumeRatio = contraction.volumeRatio;
   result.contractionStop = contraction.stopReason;
   if (!contraction.ok()) {
-    result.error = "contraction failed: " + contraction.error;
+    result.error = contraction.error.within("contraction failed");
     return result;
   }
 
@@ -136,7 +196,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
                                                 report(contractionEnd, surgeryEnd));
   result.surgerySeconds = start.seconds();
   if (curve.nodes.rows() == 0) {
-    result.error = "aborted";
+    result.error = Error::cancelled();
     return result;
   }
   result.curveSkeletonNodes = int(curve.nodes.rows());
@@ -146,57 +206,17 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
     result.surgerySkeleton = skeletonOf(curve);
     result.collapseOrder = curve.collapseOrder;
   }
-  // Back to the input's vertices: each one goes with the coarse vertex that absorbed it.
   result.contracted = mesh.vertices;
-  std::vector<int> vertexToNode(coarse.representative.size(), -1);
-  for (size_t v = 0; v < coarse.representative.size(); ++v) {
-    const int r = coarse.representative[v];
-    if (r < 0) continue;
-    vertexToNode[v] = curve.vertexToNode[size_t(r)];
-    result.contracted.row(Eigen::Index(v)) = contraction.contracted.row(r);
-  }
-  curve.vertexToNode = std::move(vertexToNode);
+  toInputVertices(coarse, contraction.contracted, curve, result);
 
-  // III.C refinement (with the cycles surgery lost put back before edges leaving the mesh are split), III.D
-  // selection, radii.
   start.restart();
   const InsideTest inside(mesh);
-  if (p.refineEmbedding) {
-    result.refinedNodes = refineEmbedding(curve, mesh.vertices, inside);
-    result.pushedNodes = pushNodesInside(curve, inside);
-  }
-  if (p.restoreCycles) result.cycleRepair = restoreMissingCycles(curve, mesh, inside);
-  if (p.refineEmbedding) result.splitEdges = splitEdgesLeavingTheMesh(curve, mesh.vertices, inside);
-  std::unique_ptr<CrossSections> sections;
-  if (p.centreNodes) {
-    // Above 64,000 vertices the sections are cut from the decimation's 40,000-vertex first pass: centroids
-    // within a small fraction of a radius of the input's, and 6 s less at 1.66M vertices.
-    sections = std::make_unique<CrossSections>(coarse.coarsened.faces.rows() > 0 ? coarse.coarsened : mesh);
-    // With a selection only the selected nodes are centred (below): as centred, at a fifth of the cost.
-    // Without one, edges still off-centre after the centring are split at their sections' centroids and
-    // the new nodes centred in turn. (Branch nodes of the whole curve skeleton stay: moved, those of small
-    // side branches - the cow's udder - tangled the skeleton.)
-    if (p.targetNodes <= 0) {
-      result.centredNodes = centreNodes(curve, *sections, inside);
-      result.centringSplits = splitOffCentreEdges(curve, mesh.vertices, *sections, inside);
-      result.centredNodes += centreNodes(curve, *sections, inside);
-    }
-  }
+  const std::unique_ptr<CrossSections> sections =
+      refineCurve(mesh, coarse, inside, p, curve, result);  // III.C
   result.refinementSeconds = start.seconds();
   start.restart();
   if (p.recordStages) result.unselectedSkeleton = skeletonOf(curve);
-  if (p.targetNodes > 0) {
-    // The selected nodes are centred across the unselected skeleton's direction where they came from: their
-    // own edges are chords of bent parts, and a cut across a chord is oblique to the part (a node centred
-    // in it lands off the axis: 68 of 395 selected nodes over 14 meshes ended more than 0.1 further off
-    // than their sources, 12 now).
-    const std::vector<Eigen::Vector3d> unselectedDirections = nodeDirections(curve);
-    selectNodes(curve, p.targetNodes, &inside, &result.selectedFrom);
-    std::vector<Eigen::Vector3d> directions;
-    for (int from : result.selectedFrom) directions.push_back(unselectedDirections[size_t(from)]);
-    if (sections)
-      result.centredNodes += centreNodes(curve, *sections, inside, /*branchNodes=*/true, 2, &directions);
-  }
+  if (p.targetNodes > 0) selectCurve(inside, sections.get(), p.targetNodes, curve, result);  // III.D
   result.selectionSeconds = start.seconds();
   start.restart();
   result.skeleton.radii = nodeRadii(curve, mesh.vertices, inside);
@@ -214,13 +234,13 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
     HeatWeightResult weights = heatWeights(mesh, result.skeleton, inside, p.weights, report(0.8, 0.99));
     result.weightsSeconds = start.seconds();
     if (!weights.ok()) {
-      result.error = weights.error == "aborted" ? weights.error : "skinning weights: " + weights.error;
+      result.error = weights.error.within("skinning weights");
       return result;
     }
     result.weights = std::move(weights.weights);
     result.invisibleVertices = weights.invisibleVertices;
   }
-  if (progress && !progress(1.0)) result.error = "aborted";
+  if (progress && !progress(1.0)) result.error = Error::cancelled();
   return result;
 }
 

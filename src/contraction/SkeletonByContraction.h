@@ -5,6 +5,7 @@
 // (docs/ARCHITECTURE.md §4) with radii and a root, and the skeleton-mesh mapping (vertex -> node).
 #pragma once
 
+#include "common/Error.h"
 #include "contraction/ConnectivitySurgery.h"
 #include "contraction/CrossSections.h"
 #include "contraction/CycleRepair.h"
@@ -31,7 +32,7 @@ struct SkeletonByContractionParameters {
   // across the unselected skeleton's direction where each came from, or
   // without a selection every node of one or two edges after the refinement, and edges whose middle is
   // still off-centre are split at their sections' centroids.
-  bool centreNodes = true;
+  bool centerNodes = true;
   // Beyond the paper: put back the cycles surgery lost, so that the skeleton has as many independent
   // cycles as the closed mesh has genus (src/contraction/CycleRepair.h).
   bool restoreCycles = true;
@@ -58,7 +59,7 @@ struct SkeletonByContractionResult {
   int pushedNodes = 0;            // nodes moved from outside into the mesh (pushNodesInside)
   CycleRepairResult cycleRepair;  // genus, cycles after surgery, cycles restored
   int splitEdges = 0;             // nodes added inside edges that left the mesh (splitEdgesLeavingTheMesh)
-  int centredNodes = 0;           // node moves to their cross-section's centroid (centreNodes)
+  int centredNodes = 0;           // node moves to their cross-section's centroid (centerNodes)
   int centringSplits = 0;         // nodes added in off-centre edges (splitOffCentreEdges, without selection)
   // With recordStages: the contraction's steps on the contracted mesh (its faces: contractedFaces), the
   // curve skeleton after the surgery (III.B, unrefined) and before the selection (after III.C).
@@ -71,7 +72,7 @@ struct SkeletonByContractionResult {
   // Seconds per stage, and the share of the contraction spent factorizing.
   double decimationSeconds = 0, contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0,
          refinementSeconds = 0, selectionSeconds = 0, radiiSeconds = 0, weightsSeconds = 0;
-  std::string error;
+  Error error;
   bool ok() const { return error.empty(); }
 };
 
@@ -83,7 +84,7 @@ CurveSkeleton curveSkeletonOf(const Skeleton& skeleton);
 
 // Issue 26's goal for the selection: every selected node as centred as the node it came from. Each node
 // of a run's selected skeleton (recordStages: unselectedSkeleton and selectedFrom) is compared with its
-// source in the unselected skeleton, that one centred as the unselected path centres it (centreNodes,
+// source in the unselected skeleton, that one centred as the unselected path centres it (centerNodes,
 // without the splits): the off-centre ratio at the node itself (nodeOffCentre).
 // Empty without recordStages.
 struct SelectionCentring {
@@ -101,7 +102,7 @@ std::string checkContractionInput(const TriangleMesh& mesh);
 /// radii, and on request the heat-diffusion skinning weights (§III.E).
 /// @param mesh a triangle mesh: any number of components, open or closed
 /// @param parameters the paper's defaults (SkeletonByContractionParameters)
-/// @param progress called with the fraction done; returning false stops the work (error "aborted")
+/// @param progress called with the fraction done; returning false stops the work (error: Error::cancelled())
 /// @return the skeleton, the vertex-to-node map, the weights and the stage figures, or an error naming
 ///         the problem (checkContractionInput's, a failed factorization)
 SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,

@@ -11,13 +11,11 @@
 // CGAL refuses collapses that break the link condition, so the topology (components, genus, boundaries)
 // is kept. Above 16 x the budget, a linear first pass (EdgeCoarsening: short edges collapsed to their
 // midpoints in sweeps, link condition kept) brings the mesh to 10 x the budget and CGAL goes on from
-// there: the 1.66M-vertex armadillo's decimation to 4,000 vertices went from 75 s to 7-11 s, the 416k one
-// from 26 s to 3 s. CGAL was chosen over OpenMesh's Decimater (ModQuadric): twice as fast here (armadillo,
-// 26k -> 4k vertices: 0.31 s vs 0.88 s with a normal-flip module; a bounded-normal-change placement added 30
-// % and changed no skeleton for the better). A mesh a halfedge structure cannot hold (faces oriented against
-// their neighbours, non-manifold edges or vertices) is decimated from a copy that CGAL's soup orientation
-// made orientable and manifold (faces flipped, vertices duplicated where needed). Faces that repeat a
-// vertex are left out; a vertex only they use gets no representative.
+// there, several times faster on the largest meshes. CGAL was chosen over OpenMesh's Decimater
+// (ModQuadric), which is slower with a normal-flip module (docs/measurements.md). A mesh a halfedge structure
+// cannot hold (faces oriented against their neighbours, non-manifold edges or vertices) is decimated from a
+// copy that CGAL's soup orientation made orientable and manifold (faces flipped, vertices duplicated where
+// needed). Faces that repeat a vertex are left out; a vertex only they use gets no representative.
 #pragma once
 
 #include "mesh/TriangleMesh.h"

@@ -35,9 +35,9 @@ Eigen::MatrixX3d faceCotangents(const Vertices& vertices, const Faces& faces, do
 
 Eigen::SparseMatrix<double> laplacianFromCotangents(const Faces& faces, const Eigen::MatrixX3d& cotangents,
                                                     Eigen::Index vertexCount) {
-  // Built column by column: Eigen's setFromTriplets needed 12 triplets per face plus a copy of them all
-  // (about 1.1 GB and 10 s for the 1.66M-vertex armadillo's heat weights); here each column gathers its
-  // off-diagonal entries (6 per face in all), merges the two faces of each edge, and appends the diagonal.
+  // Built column by column: Eigen's setFromTriplets needs 12 triplets per face plus a copy of them all
+  // (docs/measurements.md); here each column gathers its off-diagonal entries (6 per face in all), merges
+  // the two faces of each edge, and appends the diagonal.
   const size_t n = size_t(vertexCount);
   std::vector<int> start(n + 1, 0);
   for (Eigen::Index f = 0; f < faces.rows(); ++f)

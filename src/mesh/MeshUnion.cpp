@@ -71,7 +71,7 @@ MeshUnionResult meshUnion(const std::vector<TriangleMesh>& parts,
       whole = std::move(joined);
     }
     if (progress && !progress(double(k + 1) / double(parts.size()))) {
-      result.error = "aborted";
+      result.error = Error::cancelled();
       return result;
     }
   }

@@ -8,6 +8,7 @@
 // part, to which a later one is attached). A part entirely inside the others adds nothing.
 #pragma once
 
+#include "common/Error.h"
 #include "mesh/TriangleMesh.h"
 
 #include <functional>
@@ -19,7 +20,7 @@ namespace medial {
 struct MeshUnionResult {
   TriangleMesh mesh;
   std::vector<int> vertexLabel;  // one per output vertex
-  std::string error;             // non-empty when a part is not closed or cuts itself, or on abort
+  Error error;                   // non-empty when a part is not closed or cuts itself, or cancelled
   bool ok() const { return error.empty(); }
 };
 

@@ -21,9 +21,7 @@ using SpMat = Eigen::SparseMatrix<double>;
 namespace {
 
 // SuiteSparse's AMD as an Eigen ordering: the same approximate minimum degree as Eigen's AMDOrdering (a
-// port of CSparse's), 2-4x faster. Orderings and symbolic analyses of the contraction's two-ring matrix,
-// AMD then Eigen's analysis: elephant (2,775 unknowns) 6.4 -> 2.5 ms, femur (3,897) 11.1 -> 3.9 ms, with
-// factors within 2 % of the same size (about one factorization's time saved per contraction). Eigen's
+// port of CSparse's), faster, with factors of about the same size (docs/measurements.md). Eigen's
 // AMDOrdering is the fallback should SuiteSparse refuse the pattern.
 template <typename StorageIndex>
 struct SuiteSparseAmdOrdering {

@@ -19,17 +19,12 @@ namespace medial {
 enum class SparseSolverKind {
   // Default: Eigen's simplicial LLT with AMD below kSimplicialBelow unknowns, CHOLMOD supernodal with METIS
   // (the paper's winner) from there on: the supernodes' BLAS calls cost more than they save while small.
-  // (Choosing AMD or METIS by the fill of both analyses was tried: METIS saves knot1 21 % of the
-  // factorization's multiply-adds, but Eigen's METIS analysis takes 15 ms at 3,000 unknowns against
-  // Eigen's AMD's 4-6 ms and 3-6 ms per factorization: it paid for itself on knot1 alone, cost the rest.)
-  // Factorization seconds of whole full-resolution contractions, simplicial : supernodal, on an idle
-  // machine (stop 29): man (17,495 vertices) 0.51 : 1.00, diplodocus (23,982) 1.13 : 1.53, armadillo
-  // (26,002) 1.71 : 1.88, bunny00 (37,706) 4.12 : 3.08, refined_elephant (44,460) 3.82 : 3.30. (CHOLMOD's
-  // OpenBLAS threads also slow down badly when the other core is busy; the simplicial one does not.)
-  // A sparser matrix than the contraction's two-ring one (fewer than kAmdBelowDensity entries per column on
-  // average: the heat weights' one-ring Laplacian) takes AMD instead of METIS: METIS's analysis of the
-  // 1.66M-vertex armadillo's weights took 15.9 s against AMD's 4.8 s, and the heat weights as a whole
-  // took 1.99 / 8.25 / 53 s with METIS and 1.69 / 7.19 / 45 s with AMD at 104k / 416k / 1.66M vertices.
+  // (Choosing AMD or METIS per matrix by the fill of both analyses costs more in METIS's analysis than
+  // it saves below kSimplicialBelow.) CHOLMOD's OpenBLAS threads also slow down badly when the other
+  // core is busy; the simplicial one does not. A sparser matrix than the contraction's two-ring one (fewer
+  // than kAmdBelowDensity entries per column on average: the heat weights' one-ring Laplacian) takes AMD
+  // instead of METIS, whose analysis of such a matrix costs more than the factorization saves. The
+  // figures behind these thresholds: docs/measurements.md.
   Automatic,
   CholmodSupernodalMetis,
   CholmodSupernodalAmd,

@@ -1,9 +1,9 @@
 // GltfRig: a rig as glTF 2.0 (.glb binary or .gltf with an embedded buffer), written with TinyGLTF.
-// Assimp's glTF 2.0 exporter took time quadratic in the vertices (3.4 s for a 104k-vertex rig, 59 s at
-// 416k, and more than 10 minutes at 1.66M); this one is linear (the same conventions as RigBones.h and the
-// FBX writer): a node "Scene" holding the mesh's node (mesh and skin) and "Armature" -> "Root" -> the bones,
-// the skin's joints the root joint and every bone that drives a vertex, their inverse bind matrices the
-// rest pose, and per vertex at most four joints (JOINTS_0, WEIGHTS_0).
+// Assimp's glTF 2.0 exporter takes time quadratic in the vertices (docs/measurements.md); this one is linear
+// (the same conventions as RigBones.h and the FBX writer): a node "Scene" holding the mesh's node (mesh and
+// skin) and "Armature" -> "Root" -> the bones, the skin's joints the root joint and every bone that drives a
+// vertex, their inverse bind matrices the rest pose, and per vertex at most four joints (JOINTS_0,
+// WEIGHTS_0).
 #pragma once
 
 #include "rig/RigBones.h"

@@ -14,9 +14,8 @@ namespace medial {
 
 namespace {
 
-// Bones solved together. All 30 of a 1.66M-vertex armadillo at once: weights 42.6-45.6 s; 8: 41.8 s;
-// 4: 37.1-40.8 s; 2: 35.2-36.7 s; 1: 36.6 s (this VM pays for fresh memory, and CHOLMOD's solve is
-// bound by reading the factor, not by the columns).
+// Bones solved together: few at a time reuse their memory, and CHOLMOD's solve is bound by reading the
+// factor, not by the columns (docs/measurements.md).
 constexpr int kBonesPerSolve = 2;
 
 struct NearestBones {
@@ -103,7 +102,7 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
       sees[j] = inside.segmentIsClear(v, nearest[j].closestPoint);
     });
     if (aborted(0.4 * double(first + count) / double(n))) {
-      result.error = "aborted";
+      result.error = Error::cancelled();
       return result;
     }
   }
@@ -145,7 +144,7 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
   }
   matrix.makeCompressed();
   if (aborted(0.5)) {
-    result.error = "aborted";
+    result.error = Error::cancelled();
     return result;
   }
 
@@ -173,7 +172,7 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
     }
     result.weights.middleCols(first, count) = solution.cwiseMax(0.0).cwiseMin(1.0);
     if (aborted(0.5 + 0.4 * double(first + count) / double(bones))) {
-      result.error = "aborted";
+      result.error = Error::cancelled();
       return result;
     }
   }
@@ -189,7 +188,7 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
   }
   const Eigen::VectorXd divide = (sums.array() > 0).select(sums, 1.0);
   result.weights.array().colwise() /= divide.array();
-  if (aborted(1.0)) result.error = "aborted";
+  if (aborted(1.0)) result.error = Error::cancelled();
   return result;
 }
 

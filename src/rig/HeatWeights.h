@@ -24,6 +24,7 @@
 // nearest bone's weight directly.
 #pragma once
 
+#include "common/Error.h"
 #include "mesh/InsideTest.h"
 #include "mesh/SparseSolver.h"
 #include "mesh/TriangleMesh.h"
@@ -46,7 +47,7 @@ struct HeatWeightResult {
   Eigen::MatrixXd weights;
   int invisibleVertices = 0;       // vertices no nearest bone sees (H_jj = 0: weight by diffusion only)
   int componentsWithoutSight = 0;  // mesh components handled by the visibility fallback
-  std::string error;               // non-empty on failure (no bones, solver breakdown, aborted)
+  Error error;                     // non-empty on failure (no bones, solver breakdown, cancelled)
   bool ok() const { return error.empty(); }
 };
 

@@ -8,6 +8,7 @@
 // which is where a rigger puts the root so that posing a limb never drags the body.
 #pragma once
 
+#include "common/Error.h"
 #include "rig/HeatWeights.h"
 
 namespace medial {
@@ -17,7 +18,7 @@ struct SkinBindingResult {
   int root = -1;              // the skeleton's root, or its central node when it had none
   int nodesOutside = 0;       // skeleton nodes outside the mesh (a bone there sees no vertex from inside)
   int invisibleVertices = 0;  // vertices their nearest bone does not see (weighted by diffusion only)
-  std::string error;
+  Error error;
   bool ok() const { return error.empty(); }
 };
 

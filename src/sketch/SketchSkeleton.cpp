@@ -140,7 +140,7 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
   }
   auto aborted = [&](double fraction) {
     if (progress && !progress(fraction)) {
-      result.error = "aborted";
+      result.error = Error::cancelled();
       return true;
     }
     return false;
@@ -219,8 +219,7 @@ SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchPa
       // One watertight mesh (the paper's Fig. 12: a model to animate), the parts' volumes joined.
       MeshUnionResult merged = meshUnion(pieces, [&](double f) { return !aborted(0.8 + 0.2 * f); });
       if (!merged.ok()) {
-        result.error =
-            merged.error == "aborted" ? merged.error : "joining the inflated parts: " + merged.error;
+        result.error = merged.error.within("joining the inflated parts");
         return result;
       }
       result.mesh = std::move(merged.mesh);

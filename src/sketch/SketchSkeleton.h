@@ -17,6 +17,7 @@
 // (metres, millimetres, screen pixels). Set unitLength = 1 to use the stroke's own units as pixels.
 #pragma once
 
+#include "common/Error.h"
 #include "mesh/TriangleMesh.h"
 #include "sketch/PartConnection.h"
 #include "sketch/SketchGraph.h"
@@ -82,14 +83,14 @@ struct SketchResult {
   // edges removed and short edges collapsed), "bounded-dp" (each branch simplified), "connected" (the parts
   // joined by eq. 3), "pruned", "merged" (the refinement's first two operations; the collapse gives graph).
   std::vector<std::pair<std::string, SketchGraph>> stages;
-  std::string error;  // names the part ("stroke 2: ...") when one is bad
+  Error error;  // names the part ("stroke 2: ...") when one is bad
   bool ok() const { return error.empty(); }
 };
 
 /// The skeleton of sketched parts (§3.1-3.3) and their inflated meshes (§4.1).
 /// @param parts closed strokes in modelling order, each with its placement and optional local thresholds
 /// @param parameters the paper's defaults in sketch pixels (SketchParameters)
-/// @param progress called with the fraction done; returning false stops the work (error "aborted")
+/// @param progress called with the fraction done; returning false stops the work (error: Error::cancelled())
 /// @return the skeleton with part and branch labels, the inflated meshes and stage times, or an error that
 ///         names the stroke ("stroke 2: ...")
 SketchResult sketchSkeleton(const std::vector<SketchPart>& parts, const SketchParameters& parameters = {},

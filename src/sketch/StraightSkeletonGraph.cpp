@@ -113,7 +113,7 @@ RawSkeleton readSkeleton(const Skeleton& skeleton, const Polygon2& polygon) {
   return raw;
 }
 
-// CGAL's skeleton in double arithmetic when it passes isSound (about 5x faster: with the filtered kernel
+// CGAL's skeleton in double arithmetic when it passes isSound (faster: with the filtered kernel
 // most of the time goes to exact GMP re-evaluations of event-time comparisons), else with exact predicates.
 bool computeSkeleton(const Polygon2& polygon, SkeletonArithmetic arithmetic, RawSkeleton& raw) {
   if (arithmetic == SkeletonArithmetic::automatic) {

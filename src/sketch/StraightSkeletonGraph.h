@@ -26,7 +26,7 @@ struct SkeletonGraph2 {
 
 // How CGAL's skeleton is computed. automatic: in double arithmetic, kept when it passes a geometric check
 // (every skeleton vertex inside the polygon at its offset time from its faces' contour lines), else again
-// with exact predicates (CGAL's Epick); about 5x faster than exactPredicates on the sample strokes.
+// with exact predicates (CGAL's Epick); several times faster than exactPredicates on the sample strokes.
 enum class SkeletonArithmetic { automatic, exactPredicates };
 
 // False with `error` set when CGAL cannot build the skeleton (a degenerate polygon).

@@ -375,56 +375,43 @@ void appendPolyhedron(SqmMesh& out, const BranchNodePolyhedron& bnp) {
   }
 }
 
-std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pose, const SqmParameters& p,
-                     Builder& b, SqmResult& result) {
-  // Linear skeleton (extension 2): an N-vertex ring at the first connection node.
-  if (!tree.hasBranchNode) {
-    const int root = tree.root;
-    if (tree.children[size_t(root)].empty()) {
-      meshLoneNode(b, pose.position[size_t(root)], s.radii[size_t(root)], root);
-      return {};
-    }
-    int end = -1;
-    const std::vector<int> connections = pathFrom(tree, root, tree.children[size_t(root)][0], end);
-    const Eigen::Vector3d d = (pose.position[size_t(end)] - pose.position[size_t(root)]).normalized();
-    // Two nodes only: the ring goes half way, owned by the root.
-    const bool midway = connections.empty();
-    const int ringNode = midway ? root : connections[0];
-    const Eigen::Vector3d centre =
-        midway ? Eigen::Vector3d(0.5 * (pose.position[size_t(root)] + pose.position[size_t(end)]))
-               : pose.position[size_t(ringNode)];
-    const double radius =
-        midway ? 0.5 * (s.radii[size_t(root)] + s.radii[size_t(end)]) : s.radii[size_t(ringNode)];
-    const Eigen::Vector3d u = perpendicular(d), v = d.cross(u);
-    std::vector<int> ring;
-    const int n = std::max(3, p.linearRingVertices);
-    for (int j = 0; j < n; ++j) {
-      const double angle = 2 * M_PI * j / n;
-      ring.push_back(b.add(centre + radius * (std::cos(angle) * u + std::sin(angle) * v), ringNode));
-    }
-    b.endAtLeaf(ring, root, pose.position[size_t(root)], true);
-    ring = carryAlong(b, ring, std::vector<int>(connections.begin() + (midway ? 0 : 1), connections.end()),
-                      ringNode, s, pose);
-    b.endAtLeaf(ring, end, pose.position[size_t(end)], false);
-    return {};
+// A linear skeleton (extension 2): an N-vertex ring at the first connection node, carried along the
+// path and closed at both leaves; a lone node becomes a sphere.
+void meshLinearSkeleton(const Skeleton& s, const SqmTree& tree, const BindPose& pose, const SqmParameters& p,
+                        Builder& b) {
+  const int root = tree.root;
+  if (tree.children[size_t(root)].empty()) {
+    meshLoneNode(b, pose.position[size_t(root)], s.radii[size_t(root)], root);
+    return;
   }
+  int end = -1;
+  const std::vector<int> connections = pathFrom(tree, root, tree.children[size_t(root)][0], end);
+  const Eigen::Vector3d d = (pose.position[size_t(end)] - pose.position[size_t(root)]).normalized();
+  // Two nodes only: the ring goes half way, owned by the root.
+  const bool midway = connections.empty();
+  const int ringNode = midway ? root : connections[0];
+  const Eigen::Vector3d centre =
+      midway ? Eigen::Vector3d(0.5 * (pose.position[size_t(root)] + pose.position[size_t(end)]))
+             : pose.position[size_t(ringNode)];
+  const double radius =
+      midway ? 0.5 * (s.radii[size_t(root)] + s.radii[size_t(end)]) : s.radii[size_t(ringNode)];
+  const Eigen::Vector3d u = perpendicular(d), v = d.cross(u);
+  std::vector<int> ring;
+  const int n = std::max(3, p.linearRingVertices);
+  for (int j = 0; j < n; ++j) {
+    const double angle = 2 * M_PI * j / n;
+    ring.push_back(b.add(centre + radius * (std::cos(angle) * u + std::sin(angle) * v), ringNode));
+  }
+  b.endAtLeaf(ring, root, pose.position[size_t(root)], true);
+  ring = carryAlong(b, ring, std::vector<int>(connections.begin() + (midway ? 0 : 1), connections.end()),
+                    ringNode, s, pose);
+  b.endAtLeaf(ring, end, pose.position[size_t(end)], false);
+}
 
-  // Steps 1-2: BNPs, generated for every branch node, refined parent before child.
-  Stopwatch start;
-  std::map<int, BranchNodePolyhedron> bnps;
+// Step 2: every BNP refined, parent before child, so that the two ends of each path get rings that pair.
+std::string refineBnps(const SqmTree& tree, const SqmParameters& p,
+                       std::map<int, BranchNodePolyhedron>& bnps) {
   std::string error;
-  for (int k : tree.nodes) {
-    if (!tree.isBranch(k)) continue;
-    std::vector<Eigen::Vector3d> directions;
-    const std::vector<int> around = tree.neighbours(k);
-    for (int m : around) directions.push_back(pose.position[size_t(m)]);
-    if (!generateBnp(k, pose.position[size_t(k)], s.radii[size_t(k)], around, directions, bnps[k], error))
-      return error;
-  }
-  result.generationSeconds += start.seconds();
-  if (p.recordStages)
-    for (const auto& [k, bnp] : bnps) appendPolyhedron(result.polyhedra, bnp);
-  start.restart();
   // For each branch node and each of its intersection vertices: the path's end node, and which of the end
   // BNP's intersection vertices faces back (its parent side: index 0) when the end is a branch node.
   for (int k : tree.nodes) {
@@ -453,6 +440,33 @@ std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pos
     }
     if (!refineBnp(bnp, target, exact, p.smoothing, error)) return error;
   }
+  return {};
+}
+
+std::string meshTree(const Skeleton& s, const SqmTree& tree, const BindPose& pose, const SqmParameters& p,
+                     Builder& b, SqmResult& result) {
+  if (!tree.hasBranchNode) {
+    meshLinearSkeleton(s, tree, pose, p, b);
+    return {};
+  }
+
+  // Steps 1-2: BNPs, generated for every branch node, refined parent before child.
+  Stopwatch start;
+  std::map<int, BranchNodePolyhedron> bnps;
+  std::string error;
+  for (int k : tree.nodes) {
+    if (!tree.isBranch(k)) continue;
+    std::vector<Eigen::Vector3d> directions;
+    const std::vector<int> around = tree.neighbours(k);
+    for (int m : around) directions.push_back(pose.position[size_t(m)]);
+    if (!generateBnp(k, pose.position[size_t(k)], s.radii[size_t(k)], around, directions, bnps[k], error))
+      return error;
+  }
+  result.generationSeconds += start.seconds();
+  if (p.recordStages)
+    for (const auto& [k, bnp] : bnps) appendPolyhedron(result.polyhedra, bnp);
+  start.restart();
+  if (std::string refined = refineBnps(tree, p, bnps); !refined.empty()) return refined;
   result.refinementSeconds += start.seconds();
   if (p.recordStages)
     for (const auto& [k, bnp] : bnps) appendPolyhedron(result.refinedPolyhedra, bnp);
@@ -554,7 +568,7 @@ namespace {
 // Vertices where other than four edges meet (the paper's Table 1 counts them: where quads are not a grid).
 int countIrregularVertices(const SqmMesh& mesh) {
   // SQM's mesh is closed and manifold: around each vertex, faces and edges alternate, so its valence is
-  // the number of its faces (sorting the edges to count them took 8 % of the octopus refined four times).
+  // the number of its faces (sorting the edges to count them is a noticeable part of a refined mesh).
   std::vector<int> degree(mesh.vertices.size(), 0);
   for (const auto& f : mesh.faces)
     for (const int v : f) ++degree[size_t(v)];
@@ -612,7 +626,7 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
     placeVertices(s, tree, pose, builder, firstVertex);
     result.placementSeconds += clock.seconds();
     if (progress && !progress(double(start + 1) / double(s.nodeCount()))) {
-      result.error = "aborted";
+      result.error = Error::cancelled();
       return result;
     }
   }

@@ -20,6 +20,7 @@
 // Then, on request, K levels of the paper's tessellation projected onto the swept spheres (SqmRefinement).
 #pragma once
 
+#include "common/Error.h"
 #include "skeleton/Skeleton.h"
 #include "sqm/BranchNodePolyhedron.h"
 #include "sqm/SqmMesh.h"
@@ -43,8 +44,7 @@ bool parseRingPairing(const std::string& name, RingPairing& pairing);
 std::vector<std::string> ringPairingNames();
 
 // Stage 8's radius scaling near sharp vertices (SqmRefinement.h tells how). Off by default: on the test
-// skeletons refined twice it did not lower the self-intersections (octopus 99 -> 229 pairs at s = 0.8,
-// a narrow Y 73 -> 68 at 0.8 but 162 at 0.6).
+// skeletons refined twice it did not lower the self-intersections (docs/measurements.md).
 struct SharpScaling {
   bool enabled = false;
   double minimumScale = 0.8;  // s: B(0), the radius factor at a sharp vertex
@@ -55,7 +55,7 @@ struct SqmParameters {
   RingPairing pairing = RingPairing::MinimalTotalDistance;
   int linearRingVertices = 8;  // N of extension 2
   bool capsules = false;       // extension 4
-  int capsuleSteps = 4;        // nodes added beyond each leaf for its capsule
+  int capsuleSteps = 4;        // with capsules: rings added beyond each leaf to close it
   // Neighbouring triangles of the leaf fans and cycle bands joined into quads where the quad is fair
   // (TrianglePairing): beyond the papers, whose fans stay triangles; off gives the paper's mesh.
   bool pairTriangles = true;
@@ -93,14 +93,14 @@ struct SqmResult {
   // CESCG Fig. 3) and after the LIE refinement (Fig. 4), in the bind pose (the straightened skeleton), a
   // vertex's node the branch node; and the joined base mesh before the subdivision, in the input pose.
   SqmMesh polyhedra, refinedPolyhedra, baseMesh;
-  std::string error;
+  Error error;
   bool ok() const { return error.empty(); }
 };
 
 /// The SQM mesh of `skeleton`: one closed quad-dominant manifold per connected component.
 /// @param skeleton nodes, edges and a positive radius per node (optional EllipsoidAxes and root)
 /// @param parameters the papers' defaults and Medial's extensions (SqmParameters)
-/// @param progress called with the fraction done; returning false stops the work (error "aborted")
+/// @param progress called with the fraction done; returning false stops the work (error: Error::cancelled())
 /// @return the mesh with each vertex's node, node counts, repairs and stage times, or an error naming the
 ///         problem (no radius, coincident joined nodes, two edges leaving a node in one direction)
 SqmResult sqmMesh(const Skeleton& skeleton, const SqmParameters& parameters = {},

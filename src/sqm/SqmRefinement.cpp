@@ -164,8 +164,8 @@ std::vector<std::vector<int>> vertexNeighbours(const std::vector<std::vector<int
 
 // Finds the vertices of faces that cut others, where the two are a fold (FoldPairs: not tubes of other
 // parts overlapping). After the first test over the whole mesh, only the faces around vertices that were
-// folded are tested again (a full test on 250k faces took about 0.4 s, and the repair tests up to 17
-// times), and a last full test confirms that no fold is left elsewhere.
+// folded are tested again (the repair may test many times, and a full test of a refined mesh is slow),
+// and a last full test confirms that no fold is left elsewhere.
 class FoldFinder {
  public:
   using IsFold = std::function<bool(int, int)>;  // of two faces that cut each other
@@ -257,7 +257,7 @@ bool gentleBend(const Skeleton& skeleton, int e, int g) {
 // turned by the projection by more than a right angle from their place on the base mesh, and the faces of
 // base faces near tubes of other parts (`crowded`). Elsewhere every vertex of a face went onto one smooth
 // swept surface, along its normal, from a base mesh that does not cut itself: nothing there can cut
-// anything. (The octopus refined four times: 10 % of its faces are tested.) Once folds are found, the
+// anything. Once folds are found, the
 // tests cover every face (FoldFinder::testEveryFace).
 std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces,
                                 const std::vector<Eigen::Vector3d>& flat,
@@ -386,23 +386,21 @@ std::vector<std::vector<int>> levelFaces(const Far::TopologyLevel& level) {
   return faces;
 }
 
-}  // namespace
-
-int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling,
-                  bool foldRepair, RefinementReport* report) {
-  RefinementReport unused;
-  if (!report) report = &unused;
-  if (levels <= 0 || mesh.faces.empty()) return 0;
-  const auto refiner = bilinearRefiner(mesh, levels);
-  if (!refiner) return 0;
-  const SweptSpheres spheres(skeleton);
-  const FoldPairs folds(mesh, skeleton);
-  // The edges each base face can project onto: those whose swept volume comes within a radius of it, and
-  // which are near its node on the skeleton (a tube of another part passing through is not its surface:
-  // the overlap is SqmUnion's work).
-  const double largestRadius = *std::max_element(skeleton.radii.begin(), skeleton.radii.end());
+// Per base face: the edges it can project onto, those whose swept volume comes within a radius of it and
+// which are near its node on the skeleton (a tube of another part passing through is not its surface: the
+// overlap is SqmUnion's work); and whether a tube of another part comes near it (`crowded`: its refined
+// surface bulges out of the base face by a fraction of the radius, where tubes can overlap).
+struct FaceSurroundings {
   std::vector<std::vector<int>> nearEdges;
-  std::vector<char> crowded(mesh.faces.size(), 0);  // near tubes of other parts
+  std::vector<char> crowded;
+};
+
+FaceSurroundings surroundingsOf(const SqmMesh& mesh, const Skeleton& skeleton, const SweptSpheres& spheres,
+                                const FoldPairs& folds) {
+  FaceSurroundings result;
+  std::vector<std::vector<int>>& nearEdges = result.nearEdges;
+  result.crowded.assign(mesh.faces.size(), 0);
+  const double largestRadius = *std::max_element(skeleton.radii.begin(), skeleton.radii.end());
   for (size_t f = 0; f < mesh.faces.size(); ++f) {
     Eigen::Vector3d low = mesh.vertices[size_t(mesh.faces[f][0])], high = low;
     double radius = 0;
@@ -421,13 +419,95 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
                                                      !folds.near(node, skeleton.edges[size_t(e)][1]);
                                             }),
                              nearEdges.back().end());
-    // Crowded: a tube of another part comes near the face (its refined surface bulges out of the base
-    // face by a fraction of the radius), where tubes can overlap.
     const std::vector<int> close = spheres.edgesNear(low, high, kCrowdedMargin * radius);
-    crowded[f] = std::any_of(close.begin(), close.end(), [&](int e) {
+    result.crowded[f] = std::any_of(close.begin(), close.end(), [&](int e) {
       return std::find(nearEdges.back().begin(), nearEdges.back().end(), e) == nearEdges.back().end();
     });
   }
+  return result;
+}
+
+// One level's vertices on the swept surfaces (the paper's tessellation: the bilinear points of the faces,
+// projected), beside where they lie on the base mesh's tessellation, with the edge each went to and
+// whether it lies in a crease between tubes.
+struct LevelProjection {
+  std::vector<Eigen::Vector3d> flat, projected;
+  std::vector<int> chosenEdge;
+  std::vector<char> blended;
+};
+
+LevelProjection projectLevel(const std::vector<RefinedPoint>& next,
+                             const std::vector<RefinedPoint>& nextOnBase,
+                             const std::vector<int>& faceOfVertex, const std::vector<int>& nextBaseFace,
+                             const std::vector<std::vector<int>>& nearEdges, const SweptSpheres& spheres,
+                             const Skeleton& skeleton, const std::vector<Eigen::Vector3d>& sharp,
+                             const SharpScaling& scaling) {
+  LevelProjection out;
+  out.flat.resize(next.size());
+  out.projected.resize(next.size());
+  out.chosenEdge.assign(next.size(), -1);
+  out.blended.assign(next.size(), 0);
+  inParallel(next.size(), [&](size_t v) {
+    const Eigen::Vector3d p = next[v].p;
+    const std::vector<int>& edges = nearEdges[size_t(nextBaseFace[size_t(faceOfVertex[v])])];
+    Eigen::Vector3d q = p;
+    bool inCrease = false;
+    int partner = -1;
+    const SweptPoint surface = nearestSurface(p, spheres, edges, q, &inCrease, &out.chosenEdge[v], &partner);
+    // In a crease between tubes, but for the inner side of a gentle bend along a chain.
+    out.blended[v] = inCrease && !(partner >= 0 && gentleBend(skeleton, out.chosenEdge[v], partner));
+    for (int again = 0; again < kCreaseIterations && inCrease; ++again) {  // further into the crease
+      const Eigen::Vector3d from = q;
+      nearestSurface(from, spheres, edges, q, &inCrease);
+    }
+    if (surface.found && !sharp.empty())  // the paper's scaling, on the nearest surface
+      q = surface.centre +
+          surface.radius *
+              sharpScaleFactor(distanceToNearest(p, sharp) / surface.radius, scaling.minimumScale) *
+              surface.direction;
+    out.flat[v] = nextOnBase[v].p;
+    out.projected[v] = q;
+  });
+  return out;
+}
+
+// The refined mesh back into plain arrays; a vertex belongs to the nearest node among the ends of its
+// face's edges.
+void storeRefined(const Far::TopologyLevel& last, const std::vector<RefinedPoint>& points,
+                  const std::vector<int>& baseFace, const std::vector<std::vector<int>>& nearEdges,
+                  const Skeleton& skeleton, std::vector<std::vector<int>> lastFaces, SqmMesh& mesh) {
+  mesh.faces = lastFaces.empty() ? levelFaces(last) : std::move(lastFaces);
+  mesh.vertices.clear();
+  mesh.vertexNode.clear();
+  const std::vector<int> faceOfVertex = vertexFaces(last);
+  for (int v = 0; v < last.GetNumVertices(); ++v) {
+    const Eigen::Vector3d& p = points[size_t(v)].p;
+    mesh.vertices.push_back(p);
+    int nearest = -1;
+    auto distance = [&](int node) { return (skeleton.nodes[size_t(node)] - p).squaredNorm(); };
+    for (int e : nearEdges[size_t(baseFace[size_t(faceOfVertex[size_t(v)])])])
+      for (int node : skeleton.edges[size_t(e)])
+        if (nearest < 0 || distance(node) < distance(nearest)) nearest = node;
+    if (nearest < 0)  // no edge near: a lone node's sphere
+      for (int node = 0; node < skeleton.nodeCount(); ++node)
+        if (nearest < 0 || distance(node) < distance(nearest)) nearest = node;
+    mesh.vertexNode.push_back(nearest);
+  }
+}
+
+}  // namespace
+
+int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const SharpScaling& scaling,
+                  bool foldRepair, RefinementReport* report) {
+  RefinementReport unused;
+  if (!report) report = &unused;
+  if (levels <= 0 || mesh.faces.empty()) return 0;
+  const auto refiner = bilinearRefiner(mesh, levels);
+  if (!refiner) return 0;
+  const SweptSpheres spheres(skeleton);
+  const FoldPairs folds(mesh, skeleton);
+  const FaceSurroundings around = surroundingsOf(mesh, skeleton, spheres, folds);
+  const std::vector<std::vector<int>>& nearEdges = around.nearEdges;
   const std::vector<Eigen::Vector3d> sharp =
       scaling.enabled ? sharpVertices(mesh) : std::vector<Eigen::Vector3d>{};
 
@@ -453,48 +533,26 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
       primvars.Interpolate(level, onBase, nextOnBase);
       std::vector<int> nextBaseFace(size_t(topology.GetNumFaces()));
       primvars.InterpolateFaceUniform(level, baseFace, nextBaseFace);
-      // The paper's tessellation: the bilinear points of the faces, projected onto the swept surfaces.
-      std::vector<Eigen::Vector3d> flat(next.size()), projected(next.size());
       const std::vector<int> faceOfVertex = vertexFaces(topology);
-      std::vector<int> chosenEdge(next.size(), -1);
-      std::vector<char> blended(next.size(), 0);
-      inParallel(next.size(), [&](size_t v) {
-        const Eigen::Vector3d p = next[v].p;
-        const std::vector<int>& edges = nearEdges[size_t(nextBaseFace[size_t(faceOfVertex[v])])];
-        Eigen::Vector3d q = p;
-        bool inCrease = false;
-        int partner = -1;
-        const SweptPoint surface = nearestSurface(p, spheres, edges, q, &inCrease, &chosenEdge[v], &partner);
-        // In a crease between tubes, but for the inner side of a gentle bend along a chain.
-        blended[v] = inCrease && !(partner >= 0 && gentleBend(skeleton, chosenEdge[v], partner));
-        for (int again = 0; again < kCreaseIterations && inCrease; ++again) {  // further into the crease
-          const Eigen::Vector3d from = q;
-          nearestSurface(from, spheres, edges, q, &inCrease);
-        }
-        if (surface.found && !sharp.empty())  // the paper's scaling, on the nearest surface
-          q = surface.centre +
-              surface.radius *
-                  sharpScaleFactor(distanceToNearest(p, sharp) / surface.radius, scaling.minimumScale) *
-                  surface.direction;
-        flat[v] = nextOnBase[v].p;
-        projected[v] = q;
-      });
+      LevelProjection projection = projectLevel(next, nextOnBase, faceOfVertex, nextBaseFace, nearEdges,
+                                                spheres, skeleton, sharp, scaling);
       if (foldRepair && (repairEveryLevel || level == levels)) {
         const auto isFold = [&](int f, int g) {
           return folds.isFold(nextBaseFace[size_t(f)], nextBaseFace[size_t(g)]);
         };
         auto faces = levelFaces(topology);
-        const int moved = repairFolds(
-            faces, flat, projected, isFold,
-            foldCandidates(faces, flat, projected, chosenEdge, blended, nextBaseFace, crowded, skeleton),
-            &settled, &report->overlappingFaces);
+        const int moved =
+            repairFolds(faces, projection.flat, projection.projected, isFold,
+                        foldCandidates(faces, projection.flat, projection.projected, projection.chosenEdge,
+                                       projection.blended, nextBaseFace, around.crowded, skeleton),
+                        &settled, &report->overlappingFaces);
         if (level == levels) {
           report->repairedVertices = moved;
           report->overlapsKnown = settled;
           lastFaces = std::move(faces);
         }
       }
-      for (size_t v = 0; v < next.size(); ++v) next[v].p = projected[v];
+      for (size_t v = 0; v < next.size(); ++v) next[v].p = projection.projected[v];
       points = std::move(next);
       onBase = std::move(nextOnBase);
       baseFace = std::move(nextBaseFace);
@@ -502,25 +560,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
     return settled;
   };
   if (!runLevels(false)) runLevels(true);
-  // Back to plain arrays; a vertex belongs to the nearest node among the ends of its face's edges.
-  const Far::TopologyLevel& last = refiner->GetLevel(levels);
-  mesh.faces = lastFaces.empty() ? levelFaces(last) : std::move(lastFaces);
-  mesh.vertices.clear();
-  mesh.vertexNode.clear();
-  const std::vector<int> faceOfVertex = vertexFaces(last);
-  for (int v = 0; v < last.GetNumVertices(); ++v) {
-    const Eigen::Vector3d& p = points[size_t(v)].p;
-    mesh.vertices.push_back(p);
-    int nearest = -1;
-    auto distance = [&](int node) { return (skeleton.nodes[size_t(node)] - p).squaredNorm(); };
-    for (int e : nearEdges[size_t(baseFace[size_t(faceOfVertex[size_t(v)])])])
-      for (int node : skeleton.edges[size_t(e)])
-        if (nearest < 0 || distance(node) < distance(nearest)) nearest = node;
-    if (nearest < 0)  // no edge near: a lone node's sphere
-      for (int node = 0; node < skeleton.nodeCount(); ++node)
-        if (nearest < 0 || distance(node) < distance(nearest)) nearest = node;
-    mesh.vertexNode.push_back(nearest);
-  }
+  storeRefined(refiner->GetLevel(levels), points, baseFace, nearEdges, skeleton, std::move(lastFaces), mesh);
   return int(sharp.size());
 }
 

@@ -638,7 +638,7 @@ TEST_F(GuiWorkflow, ClicksInThe3dViewPickBonesAndObjectsOfInterest) {
                   static_cast<int>(view->height() - display[1] / ratio));
   QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
   EXPECT_EQ(window->objects()->current(), skeleton) << "the click picks the skeleton inside the mesh";
-  EXPECT_TRUE(window->logText().contains("Mesh coloured by the weight of bone 0"))
+  EXPECT_TRUE(window->logText().contains("Mesh colored by the weight of bone 0"))
       << window->logText().toStdString();
   // Shift+click toggles the object of interest.
   ASSERT_TRUE(skeleton->interest);

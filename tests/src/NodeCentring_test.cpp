@@ -98,7 +98,7 @@ TEST(NodeCentring, UnselectedSkeletonsAreAsCentredAsCgalsOnThreeSamples) {
     medial::SkeletonByContractionParameters p;
     p.targetNodes = 0;
     const auto centred = medial::skeletonByContraction(mesh, p);
-    p.centreNodes = false;
+    p.centerNodes = false;
     const auto uncentred = medial::skeletonByContraction(mesh, p);
     ASSERT_TRUE(centred.ok() && uncentred.ok());
     const auto ours = medial::offCentre(centred.skeleton, sections);

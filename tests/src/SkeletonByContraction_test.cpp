@@ -198,16 +198,16 @@ TEST(SkeletonByContraction, NonManifoldFinIsTolerated) {
 
 TEST(SkeletonByContraction, BadInputIsRefusedWithAMessage) {
   medial::TriangleMesh empty;
-  EXPECT_EQ(medial::skeletonByContraction(empty).error, "the mesh has no triangles");
+  EXPECT_EQ(medial::skeletonByContraction(empty).error.message(), "the mesh has no triangles");
 
   medial::TriangleMesh nan = torusMesh(2, 0.5);
   nan.vertices(7, 1) = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(medial::skeletonByContraction(nan).error,
+  EXPECT_EQ(medial::skeletonByContraction(nan).error.message(),
             "vertex 7 has a non-finite coordinate (NaN or infinity)");
 
   medial::TriangleMesh outOfRange = torusMesh(2, 0.5);
   outOfRange.faces(3, 2) = 100000;
-  EXPECT_EQ(medial::skeletonByContraction(outOfRange).error,
+  EXPECT_EQ(medial::skeletonByContraction(outOfRange).error.message(),
             "triangle 3 refers to vertex 100000, which does not exist");
 }
 

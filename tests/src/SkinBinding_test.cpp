@@ -68,8 +68,9 @@ TEST(SkinBinding, NodesOutsideAreCountedAndBadPairsAreErrors) {
   EXPECT_NEAR(longer.weights.row(0).sum(), 1.0, 1e-9);
 
   medial::Skeleton far = pathOf({100, 101});
-  EXPECT_NE(medial::bindSkin(tube, far).error.find("outside the mesh's bounding box"), std::string::npos);
-  EXPECT_NE(medial::bindSkin(tube, pathOf({0})).error.find("no edges"), std::string::npos);
-  EXPECT_NE(medial::bindSkin(medial::TriangleMesh{}, pathOf({0, 1})).error.find("no faces"),
+  EXPECT_NE(medial::bindSkin(tube, far).error.message().find("outside the mesh's bounding box"),
+            std::string::npos);
+  EXPECT_NE(medial::bindSkin(tube, pathOf({0})).error.message().find("no edges"), std::string::npos);
+  EXPECT_NE(medial::bindSkin(medial::TriangleMesh{}, pathOf({0, 1})).error.message().find("no faces"),
             std::string::npos);
 }

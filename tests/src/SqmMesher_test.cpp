@@ -518,19 +518,19 @@ TEST(SqmMesher, NodesInsideANeighboursSphereAreMergedIntoIt) {
 }
 
 TEST(SqmMesher, BadInputIsRefusedOrRepaired) {
-  EXPECT_EQ(medial::sqmMesh(medial::Skeleton()).error, "the skeleton has no nodes");
+  EXPECT_EQ(medial::sqmMesh(medial::Skeleton()).error.message(), "the skeleton has no nodes");
   auto noRadius = ySkeleton();
   noRadius.radii.clear();
-  EXPECT_EQ(medial::sqmMesh(noRadius).error, "the skeleton has no Radius per node (SQM needs one)");
+  EXPECT_EQ(medial::sqmMesh(noRadius).error.message(), "the skeleton has no Radius per node (SQM needs one)");
   auto zeroRadius = ySkeleton();
   zeroRadius.radii[3] = 0;
-  EXPECT_NE(medial::sqmMesh(zeroRadius).error.find("node 3"), std::string::npos);
+  EXPECT_NE(medial::sqmMesh(zeroRadius).error.message().find("node 3"), std::string::npos);
   auto nan = ySkeleton();
   nan.nodes[2].x() = NAN;
-  EXPECT_NE(medial::sqmMesh(nan).error.find("node 2"), std::string::npos);
+  EXPECT_NE(medial::sqmMesh(nan).error.message().find("node 2"), std::string::npos);
   auto coincident = ySkeleton();
   coincident.nodes[2] = coincident.nodes[1];
-  EXPECT_EQ(medial::sqmMesh(coincident).error,
+  EXPECT_EQ(medial::sqmMesh(coincident).error.message(),
             "nodes 1 and 2 are joined by an edge but lie at the same place");
   auto sameDirection = ySkeleton();
   sameDirection.nodes.push_back({2, 0, 0});  // a second edge from node 0 along +x
@@ -538,7 +538,7 @@ TEST(SqmMesher, BadInputIsRefusedOrRepaired) {
   sameDirection.edges.push_back({0, 7});
   sameDirection.nodes[1] = {1, 0, 0};
   sameDirection.edges[1] = {1, 2};
-  EXPECT_NE(medial::sqmMesh(sameDirection).error.find("same direction"), std::string::npos);
+  EXPECT_NE(medial::sqmMesh(sameDirection).error.message().find("same direction"), std::string::npos);
 
   // Repairs: a self-loop is dropped, a repeated edge merged.
   auto repaired = ySkeleton();

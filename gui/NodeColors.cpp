@@ -1,4 +1,4 @@
-#include "NodeColours.h"
+#include "NodeColors.h"
 
 #include <vtkActor.h>
 #include <vtkLookupTable.h>
@@ -9,7 +9,7 @@
 
 namespace medial::gui {
 
-vtkSmartPointer<vtkLookupTable> segmentColours(int count) {
+vtkSmartPointer<vtkLookupTable> segmentColors(int count) {
   auto table = vtkSmartPointer<vtkLookupTable>::New();
   table->SetNumberOfTableValues(std::max(count, 1));
   double hue = 0.1;
@@ -23,13 +23,13 @@ vtkSmartPointer<vtkLookupTable> segmentColours(int count) {
   return table;
 }
 
-bool colourByLabel(vtkActor* actor, const char* name, int count) {
+bool colorByLabel(vtkActor* actor, const char* name, int count) {
   vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
   if (!mapper) return false;
   mapper->ScalarVisibilityOn();
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SetColorModeToMapScalars();
-  mapper->SetLookupTable(segmentColours(count));
+  mapper->SetLookupTable(segmentColors(count));
   mapper->ColorByArrayComponent(name, 0);
   mapper->SetScalarRange(0, std::max(count - 1, 1));
   return true;

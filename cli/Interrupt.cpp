@@ -1,0 +1,37 @@
+#include "Interrupt.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkSmartPointer.h>
+
+#include <csignal>
+
+namespace medial::cli {
+namespace {
+
+volatile std::sig_atomic_t signalled = 0;
+
+extern "C" void onSignal(int number) {
+  signalled = 1;
+  std::signal(number, SIG_DFL);  // a second Ctrl-C is not caught
+}
+
+}  // namespace
+
+void catchInterrupts() {
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+}
+
+bool interrupted() { return signalled != 0; }
+
+void abortOnInterrupt(vtkAlgorithm* filter) {
+  auto callback = vtkSmartPointer<vtkCallbackCommand>::New();
+  callback->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
+    if (interrupted()) static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+  });
+  filter->AddObserver(vtkCommand::ProgressEvent, callback);
+}
+
+}  // namespace medial::cli
