@@ -167,7 +167,8 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   const medial::SkeletonByContractionParameters p = this->MakeParameters();
   this->Steps.clear();
   this->SurgerySkeleton = this->UnselectedSkeleton = nullptr;
-  const medial::SkeletonByContractionResult result = medial::skeletonByContraction(mesh, p, medial::progressOf(this));
+  const medial::SkeletonByContractionResult result =
+      medial::skeletonByContraction(mesh, p, medial::progressOf(this));
   this->ContractionIterations = result.contractionIterations;
   this->CurveSkeletonNodes = result.curveSkeletonNodes;
   this->ContractedVertices = result.contractedVertices;

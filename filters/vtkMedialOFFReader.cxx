@@ -229,8 +229,9 @@ std::string checkAsciiOff(const std::string& text, const std::vector<int>& lineN
 
 // Binary OFF ("OFF BINARY" and its variants) is refused: OpenMesh's binary reader trusts the counts it
 // reads, without checking for the end of the file, and reads them in an order of bytes that does not
-// match the big-endian files of the format's description (fuzz_off found files that hang it). A file is binary when its first
-// line, as written or without its comment, says BINARY (fuzz_off: a comment hid it from one of the two).
+// match the big-endian files of the format's description (fuzz_off found files that hang it). A file is
+// binary when its first line, as written or without its comment, says BINARY (fuzz_off: a comment hid it from
+// one of the two).
 bool isBinaryOff(const std::string& path, const std::string& text) {
   std::ifstream in(path, std::ios::binary);
   std::string firstLine;

@@ -159,7 +159,8 @@ int vtkMedialSketchSkeleton::RequestData(vtkInformation*, vtkInformationVector**
   for (const auto& [key, value] : this->BranchThresholds)
     if (key.first >= 0 && key.first < int(parts.size()))
       parts[key.first].branchSimplification[key.second] = value;
-  const medial::SketchResult result = medial::sketchSkeleton(parts, this->MakeParameters(), medial::progressOf(this));
+  const medial::SketchResult result =
+      medial::sketchSkeleton(parts, this->MakeParameters(), medial::progressOf(this));
   if (!result.ok()) {
     medial::reportError(this, result.error);
     return 0;

@@ -76,7 +76,8 @@ int vtkMedialSkinBinding::RequestData(vtkInformation*, vtkInformationVector** in
   const medial::TriangleMesh mesh = medial::toTriangleMesh(medial::triangulated(input));
   medial::HeatWeightParameters parameters;
   parameters.heatConstant = this->HeatConstant;
-  const medial::SkinBindingResult result = medial::bindSkin(mesh, skeleton, parameters, medial::progressOf(this));
+  const medial::SkinBindingResult result =
+      medial::bindSkin(mesh, skeleton, parameters, medial::progressOf(this));
   if (!result.ok()) {
     medial::reportError(this, result.error);
     return 0;

@@ -81,13 +81,17 @@ class Coverage {
 };
 
 // A parameter whose getter, setter and struct field share one type: FIELD is reached from a Parameters p.
-#define MEDIAL_PARAMETER(coverage, Name, field, other)                                                     \
-  coverage.parameter(                                                                                      \
-      #Name, coverage.fresh->Get##Name() == coverage.defaults.field, [](auto* f) { f->Set##Name(other); }, \
-      [d = coverage.defaults](const auto& p, bool changed) {                                               \
-        return p.field == (changed ? decltype(d.field)(other) : d.field);                                  \
-      });                                                                                                  \
-  EXPECT_NE(decltype(coverage.defaults.field)(other), coverage.defaults.field) << #Name ": not a change"
+#define MEDIAL_PARAMETER(coverage, Name, field, other)                          \
+  do {                                                                          \
+    const auto changedValue = decltype(coverage.defaults.field)(other);         \
+    coverage.parameter(                                                         \
+        #Name, coverage.fresh->Get##Name() == coverage.defaults.field,          \
+        [changedValue](auto* f) { f->Set##Name(changedValue); },                \
+        [d = coverage.defaults, changedValue](const auto& p, bool changed) {    \
+          return p.field == (changed ? changedValue : d.field);                 \
+        });                                                                     \
+    EXPECT_NE(changedValue, coverage.defaults.field) << #Name ": not a change"; \
+  } while (false)
 
 }  // namespace
 
@@ -138,14 +142,14 @@ TEST(FilterDefaults, SqmCarriesEverySqmParameter) {
   Coverage<vtkMedialSQM, medial::SqmParameters> c;
   c.parameter(
       "Smoothing", c.fresh->GetSmoothing() == medial::lieSmoothingName(c.defaults.smoothing),
-      [](auto* f) { f->SetSmoothing("linear"); },
+      [](auto* f) { f->SetSmoothing("averaging"); },
       [d = c.defaults](const auto& p, bool changed) {
-        return changed ? medial::lieSmoothingName(p.smoothing) == std::string("linear")
+        return changed ? medial::lieSmoothingName(p.smoothing) == std::string("averaging")
                        : p.smoothing == d.smoothing;
       });
   c.parameter(
       "Pairing", c.fresh->GetPairing() == medial::ringPairingName(c.defaults.pairing),
-      [](auto* f) { f->SetPairing("minimal-angle"); },
+      [](auto* f) { f->SetPairing("angle"); },
       [d = c.defaults](const auto& p, bool changed) {
         return changed ? p.pairing == medial::RingPairing::MinimalAngle : p.pairing == d.pairing;
       });
@@ -191,10 +195,7 @@ TEST(FilterDefaults, TskCenterlineCarriesEveryTskCenterlineParameter) {
   EXPECT_EQ(c.defaults.selection, medial::VoxelSelection::NonZero);
   c.parameter(
       "Label", c.fresh->GetLabel() == c.defaults.label, [](auto* f) { f->SetLabel(3); },
-      [d = c.defaults](const auto& p, bool changed) {
-        return changed ? p.selection == medial::VoxelSelection::Label && p.label == 3
-                       : p.selection == d.selection && p.label == d.label;
-      });
+      [d = c.defaults](const auto& p, bool changed) { return p.label == (changed ? 3 : d.label); });
   // SetThreshold after SetLabel: the last selection given is the one used.
   c.parameter(
       "Threshold",
@@ -202,8 +203,10 @@ TEST(FilterDefaults, TskCenterlineCarriesEveryTskCenterlineParameter) {
           c.fresh->GetThresholdHigh() == c.defaults.thresholdHigh,
       [](auto* f) { f->SetThreshold(-900, -500); },
       [d = c.defaults](const auto& p, bool changed) {
-        return changed ? p.thresholdLow == -900 && p.thresholdHigh == -500
-                       : p.thresholdLow == d.thresholdLow && p.thresholdHigh == d.thresholdHigh;
+        return changed ? p.selection == medial::VoxelSelection::Threshold && p.thresholdLow == -900 &&
+                             p.thresholdHigh == -500
+                       : p.selection == d.selection && p.thresholdLow == d.thresholdLow &&
+                             p.thresholdHigh == d.thresholdHigh;
       });
   c.parameter(
       "Seed", !c.fresh->MakeParameters().seed, [](auto* f) { f->SetSeed(1, 2, 3); },
@@ -223,7 +226,7 @@ TEST(FilterDefaults, TskCenterlineCarriesEveryTskCenterlineParameter) {
   MEDIAL_PARAMETER(c, DetectBranches, detectBranches, true);
   MEDIAL_PARAMETER(c, MinimumBranchLength, minimumBranchLength, 5.0);
   MEDIAL_PARAMETER(c, CenteringIterations, tsk.centeringIterations, c.defaults.tsk.centeringIterations + 1);
-  MEDIAL_PARAMETER(c, SampleSpacing, tsk.sampleSpacing, c.defaults.tsk.sampleSpacing * 2);
+  MEDIAL_PARAMETER(c, SampleSpacing, tsk.sampleSpacing, 0.5);
   MEDIAL_PARAMETER(c, ComputeSections, computeSections, true);
   MEDIAL_PARAMETER(c, SectionSpacing, sections.spacing, c.defaults.sections.spacing * 2);
   MEDIAL_PARAMETER(c, SectionRays, sections.rays, c.defaults.sections.rays * 2);
