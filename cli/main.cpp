@@ -24,7 +24,7 @@ const std::vector<Command>& commands() {
       {"skeleton", "curve skeleton of a surface mesh by mesh contraction", skeletonUsage, skeletonOptions,
        runSkeleton},
       {"centerline", "TSK centerline of a tubular structure in a CT or label volume", centerlineUsage,
-       runCenterline},
+       centerlineOptions, runCenterline},
       {"sqm", "quad-dominant tube mesh of a skeleton with radii (SQM)", sqmUsage, sqmOptions, runSqm},
       {"sketch", "animatable skeleton and inflated mesh of closed 2-D strokes", sketchUsage, sketchOptions,
        runSketch},

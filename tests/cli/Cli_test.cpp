@@ -74,7 +74,8 @@ TEST(Cli, UsageErrorsExitTwo) {
                            "sqm s.vtp -o m.vtp --ring-vertices 2",
                            "sqm s.vtp -o m.vtp --subdivide 9",
                            "sqm s.vtp -o m.vtp --pairing best",
-                           "sqm s.vtp -o m.vtp --sharp-scale 0"}) {
+                           "sqm s.vtp -o m.vtp --sharp-scale 0",
+                           "sqm s.vtp -o m.vtp --capsule-steps 0"}) {
     auto r = runCommand(medialCommand(args));
     EXPECT_EQ(r.exitCode, 2) << "medial " << args << "\n" << r.err;
     EXPECT_FALSE(r.err.empty()) << "medial " << args;
@@ -144,6 +145,51 @@ TEST(Cli, SkeletonOfTorusWritesSkeletonAndSegmentation) {
   auto render = runCommand(medialCommand("render " + dataPath("meshes/torus.off") + " " + skeleton + " -o " +
                                          dir + "/torus-skeleton.png --size 320x240 --quiet"));
   EXPECT_EQ(render.exitCode, 0) << render.err;
+}
+
+// --no-centring, the British spelling, is kept for one release: the same skeleton as --no-centering.
+TEST(Cli, NoCentringIsAnAliasOfNoCentering) {
+  const std::string dir = scratchDir("cli-centering-alias");
+  std::string written[2];
+  int k = 0;
+  for (const char* option : {"--no-centering", "--no-centring"}) {
+    const std::string out = dir + "/" + std::to_string(k) + ".vtp";
+    auto r = runCommand(medialCommand("skeleton " + dataPath("meshes/torus.off") + " -o " + out + " " +
+                                      option + " --contraction-vertices 300 --quiet"));
+    ASSERT_EQ(r.exitCode, 0) << option << ": " << r.err;
+    std::ifstream file(out, std::ios::binary);
+    written[k++].assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+  }
+  EXPECT_FALSE(written[0].empty());
+  EXPECT_EQ(written[0], written[1]);
+}
+
+// medial COMMAND --list-options prints the command's own option table (what medial batch passes through).
+TEST(Cli, ListOptionsPrintsTheCommandsOptionTable) {
+  auto r = runCommand(medialCommand("sqm --list-options"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("values "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" --capsule-steps"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nflags "), std::string::npos) << r.out;
+  const std::string flags = r.out.substr(r.out.find("\nflags "));
+  EXPECT_NE(flags.find(" --union"), std::string::npos) << r.out;
+  EXPECT_EQ(flags.find(" --subdivide"), std::string::npos) << "--subdivide takes a value: " << r.out;
+}
+
+// Ctrl-C stops the running filter at its next progress report: "cancelled", exit 130, no output written.
+TEST(Cli, InterruptCancelsWithExitCode130AndNoOutput) {
+  const std::string armadillo = medial::test::externalPath("cgal/meshes/armadillo.off");
+  if (!std::filesystem::exists(armadillo)) GTEST_SKIP() << armadillo << " missing: run scripts/fetch-samples";
+  const std::string dir = scratchDir("cli-interrupt");
+  const std::string out = dir + "/skeleton.vtp";
+  // At full resolution the contraction takes seconds; SIGINT arrives after half of one.
+  auto r =
+      runCommand("timeout --preserve-status -s INT 0.5 " +
+                 medialCommand("skeleton " + armadillo + " -o " + out + " --contraction-vertices 30000"));
+  EXPECT_EQ(r.exitCode, 130) << r.err;
+  EXPECT_NE(r.err.find("medial skeleton: cancelled"), std::string::npos) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 // The paper's constants from the command line, and the contracted mesh (Fig. 5): the input's faces at the
