@@ -246,7 +246,7 @@ void CenterlinePanel::showBridges(SceneObject* object, vtkPolyData* line) {
   colors->SetNumberOfTableValues(2);
   colors->SetTableValue(0, 0.1, 0.8, 0.2);
   colors->SetTableValue(1, medial::kBridgedRgb[0] / 255.0, medial::kBridgedRgb[1] / 255.0,
-                         medial::kBridgedRgb[2] / 255.0);
+                        medial::kBridgedRgb[2] / 255.0);
   colors->SetTableRange(0, 1);
   vtkMapper* mapper = actor->GetMapper();
   mapper->SetLookupTable(colors);
