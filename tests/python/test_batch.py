@@ -228,6 +228,34 @@ class Batch(unittest.TestCase):
         self.assertEqual(len(rows(out)), 7)
         print("first run %.1f s, resumed %.1f s" % (first_seconds, time.monotonic() - start))
 
+    def test_rows_are_typed_when_run_and_when_read_back(self):
+        import medial.batch
+        stand_in, counts = self.stand_in()
+        for name in ("a.vtp", "abort.vtp"):
+            open(os.path.join(self.inputs, name), "w").close()
+        out = os.path.join(self.dir, "out")
+        os.environ["COUNT_DIR"] = counts
+        first = medial.batch.run("sqm", [self.inputs], out, workers=1, medial=stand_in)
+        resumed = medial.batch.run("sqm", [self.inputs], out, workers=1, medial=stand_in, resume=True)
+        self.assertEqual(run_count(counts, "a.vtp"), 1, "read back, not run again")
+        for rows_ in (first, resumed):
+            by_name = {os.path.basename(r.input): r for r in rows_}
+            done, crashed = by_name["a.vtp"], by_name["abort.vtp"]
+            self.assertIsInstance(done, medial.batch.Row)
+            self.assertEqual((done.status, done.exit_code, done.timings), ("ok", 0, {"total": 0.01}))
+            self.assertIsInstance(done.exit_code, int)
+            self.assertIsInstance(done.seconds, float)
+            self.assertEqual(done["status"], "ok", "rows still read like the dictionaries they were")
+            self.assertEqual((crashed.status, crashed.exit_code), ("crash", -6))
+
+    def test_option_arity_comes_from_the_commands_option_table(self):
+        import medial.batch
+        with_value = medial.batch._options_with_value("sqm")
+        self.assertIn("--subdivide", with_value)
+        self.assertIn("-o", with_value)
+        self.assertNotIn("--union", with_value)
+        self.assertNotIn("--quiet", with_value)
+
     def test_killing_the_driver_leaves_a_valid_manifest(self):
         stand_in, counts = self.stand_in()
         for k in range(30):
