@@ -1,6 +1,7 @@
 #include "rig/RigImport.h"
 
 #include <assimp/Importer.hpp>
+#include <assimp/ai_assert.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -8,6 +9,19 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <stdexcept>
+#include <string>
+
+// Debian's Assimp 5.2 is built with its assertions on, and a malformed FBX file trips some of them
+// (fuzz_rig_import: FBXConverter's "out_idx != nullptr"): Assimp's aiAssertViolation prints and aborts the
+// process, the GUI with it. This definition takes the place of the library's (the dynamic linker binds the
+// library's calls to the first definition in its search order, and Medial's code comes before libassimp)
+// and throws instead: Assimp's ReadFile catches the exception and reports the file as unreadable.
+namespace Assimp {
+void aiAssertViolation(const char* failedExpression, const char* file, int line) {
+  throw std::runtime_error(std::string("the file breaks one of Assimp's checks (") + failedExpression + ")");
+}
+}  // namespace Assimp
 
 namespace medial {
 
@@ -54,16 +68,21 @@ struct Import {
 // The meshes in scene space, merged; the joints and, per vertex, its largest weight's joint.
 void mergeMeshes(const aiNode* node, Import& in) {
   const Eigen::Matrix4d& g = in.walk.global[node];
+  // A malformed file can name meshes, vertices and faces that are not there (fuzz_rig_import): those are
+  // left out.
   for (unsigned k = 0; k < node->mNumMeshes; ++k) {
+    if (node->mMeshes[k] >= in.scene->mNumMeshes || !in.scene->mMeshes[node->mMeshes[k]]) continue;
     const aiMesh* mesh = in.scene->mMeshes[node->mMeshes[k]];
     const int first = int(in.vertices.size());
+    const auto exists = [mesh](unsigned v) { return v < mesh->mNumVertices; };
     for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
       const aiVector3D& p = mesh->mVertices[v];
       in.vertices.push_back((g * Eigen::Vector4d(p.x, p.y, p.z, 1)).head<3>());
     }
     in.strongest.resize(in.vertices.size(), {std::string(), 0.0});
     for (unsigned f = 0; f < mesh->mNumFaces; ++f)
-      if (mesh->mFaces[f].mNumIndices == 3)
+      if (mesh->mFaces[f].mNumIndices == 3 && exists(mesh->mFaces[f].mIndices[0]) &&
+          exists(mesh->mFaces[f].mIndices[1]) && exists(mesh->mFaces[f].mIndices[2]))
         in.faces.emplace_back(first + int(mesh->mFaces[f].mIndices[0]),
                               first + int(mesh->mFaces[f].mIndices[1]),
                               first + int(mesh->mFaces[f].mIndices[2]));
@@ -71,6 +90,7 @@ void mergeMeshes(const aiNode* node, Import& in) {
       const aiBone* bone = mesh->mBones[b];
       in.jointNames.insert(bone->mName.C_Str());
       for (unsigned w = 0; w < bone->mNumWeights; ++w) {
+        if (!exists(bone->mWeights[w].mVertexId)) continue;
         auto& s = in.strongest[size_t(first) + bone->mWeights[w].mVertexId];
         if (bone->mWeights[w].mWeight > s.second) s = {bone->mName.C_Str(), bone->mWeights[w].mWeight};
       }
