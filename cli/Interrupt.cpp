@@ -5,8 +5,6 @@
 #include <vtkCommand.h>
 #include <vtkSmartPointer.h>
 
-#include <csignal>
-
 namespace medial::cli {
 namespace {
 
@@ -19,19 +17,23 @@ extern "C" void onSignal(int number) {
 
 }  // namespace
 
-void catchInterrupts() {
-  std::signal(SIGINT, onSignal);
-  std::signal(SIGTERM, onSignal);
-}
-
-bool interrupted() { return signalled != 0; }
-
-void abortOnInterrupt(vtkAlgorithm* filter) {
+InterruptScope::InterruptScope(vtkAlgorithm* filter) : filter_(filter) {
+  signalled = 0;
+  previousInt_ = std::signal(SIGINT, onSignal);
+  previousTerm_ = std::signal(SIGTERM, onSignal);
   auto callback = vtkSmartPointer<vtkCallbackCommand>::New();
   callback->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
-    if (interrupted()) static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    if (signalled) static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
   });
-  filter->AddObserver(vtkCommand::ProgressEvent, callback);
+  observer_ = filter->AddObserver(vtkCommand::ProgressEvent, callback);
 }
+
+InterruptScope::~InterruptScope() {
+  filter_->RemoveObserver(observer_);
+  std::signal(SIGINT, previousInt_ == SIG_ERR ? SIG_DFL : previousInt_);
+  std::signal(SIGTERM, previousTerm_ == SIG_ERR ? SIG_DFL : previousTerm_);
+}
+
+bool InterruptScope::interrupted() const { return signalled != 0; }
 
 }  // namespace medial::cli

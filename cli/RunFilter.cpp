@@ -15,10 +15,13 @@ void runFilter(vtkAlgorithm* filter, vtkDataObject* data, const std::string& inp
   auto errors = medial::ErrorCollector::Watch(filter);
   filter->SetInputDataObject(data);
   progress.watch(filter, label);
-  abortOnInterrupt(filter);
-  filter->Update();
-  progress.finish();
-  if (filter->GetAbortExecute()) throw Cancelled();
+  {
+    const InterruptScope interrupts(filter);
+    filter->Update();
+    progress.finish();
+    // Also a signal after the filter's last progress report: the user asked for nothing to be written.
+    if (filter->GetAbortExecute() || interrupts.interrupted()) throw Cancelled();
+  }
   if (errors->HasErrors()) throw Failure(inputName + ": " + errors->Joined());
 }
 

@@ -1,7 +1,6 @@
 // `medial`: Medial's batch command (docs/ARCHITECTURE.md §6). Dispatches to one subcommand per algorithm.
 #include "Commands.h"
 #include "CommandLine.h"
-#include "Interrupt.h"
 
 #include <vtkLogger.h>
 #include <vtkOutputWindow.h>
@@ -104,7 +103,6 @@ int main(int argc, char** argv) {
     vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);  // the executive's "returned failure" reports
   }
-  catchInterrupts();
   try {
     return command->run(rest);
   } catch (const UsageError& e) {
