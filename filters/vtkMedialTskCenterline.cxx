@@ -116,7 +116,9 @@ vtkMedialTskCenterline::vtkMedialTskCenterline() {
 }
 
 medial::TskCenterlineParameters vtkMedialTskCenterline::MakeParameters() const {
-  static_assert(int(medial::VoxelSelection::Label) == int(Selection::Label), "one order of selections");
+  static_assert(int(medial::VoxelSelection::Label) == int(Selection::Label) &&
+                    int(medial::VoxelSelection::Automatic) == int(Selection::Automatic),
+                "one order of selections");
   static_assert(int(medial::BorderParts::Keep) == BORDER_PARTS_KEEP, "one order of border rules");
   medial::TskCenterlineParameters p;
   p.selection = medial::VoxelSelection(int(this->Mode));
@@ -181,11 +183,17 @@ void vtkMedialTskCenterline::SetThreshold(double low, double high) {
 const char* vtkMedialTskCenterline::GetSelectionName() const {
   return this->Mode == Selection::Label       ? "label"
          : this->Mode == Selection::Threshold ? "threshold"
+         : this->Mode == Selection::Automatic ? "automatic"
                                               : "non-zero";
 }
 
 void vtkMedialTskCenterline::SelectNonZero() {
   this->Mode = Selection::NonZero;
+  this->Modified();
+}
+
+void vtkMedialTskCenterline::SelectAutomatically() {
+  this->Mode = Selection::Automatic;
   this->Modified();
 }
 

@@ -52,10 +52,14 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   void SetLabel(int label);
   /// Select the voxels in [low, high] (disables the label).
   void SetThreshold(double low, double high);
-  /// Use the non-zero voxels (the default).
+  /// Use the non-zero voxels.
   void SelectNonZero();
-  /// The selection: "label", "threshold" or "non-zero", and its values (the window defaults to colon
-  /// air on CT, -1024..-600 HU).
+  /// Choose from the volume (the default): the threshold window on a CT in Hounsfield units (with a note;
+  /// an error when it holds no air), the non-zero voxels on any other volume (an error when they fill most
+  /// of it). src/centerline/TskCenterline.h says how.
+  void SelectAutomatically();
+  /// The selection: "automatic", "label", "threshold" or "non-zero", and its values (the window defaults
+  /// to colon air on CT, -1024..-600 HU).
   const char* GetSelectionName() const;
   vtkGetMacro(Label, int);
   vtkGetMacro(ThresholdLow, double);
@@ -166,7 +170,7 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   void KeepStages(const medial::TskStages& stages);
 
   // Parameters: defaults from medial::TskCenterlineParameters (the constructor).
-  enum class Selection { NonZero, Label, Threshold };
+  enum class Selection { NonZero, Label, Threshold, Automatic };
   Selection Mode;
   int Label;
   double ThresholdLow, ThresholdHigh;

@@ -44,8 +44,9 @@ std::vector<Parameter> centerlineParameters() {
   const char* border[] = {"automatic", "drop", "keep"};
   return {
       choiceOf(
-          "Selection", "Structure", "label, threshold, non-zero", f->GetSelectionName(),
-          "Which voxels form the tube: one label, an intensity window (e.g. colon air), or all non-zero"),
+          "Selection", "Structure", "label, threshold, non-zero, automatic", f->GetSelectionName(),
+          "Which voxels form the tube: one label, an intensity window (e.g. colon air), all non-zero, or "
+          "chosen from the volume (the default: a CT's air in the window, else the non-zero voxels)"),
       P::integer("Label", "Label", f->GetLabel(), -1000000, 1000000,
                  "Voxel value of the structure (label images)"),
       P::real("ThresholdLow", "Threshold low", f->GetThresholdLow(), -1e6, 1e6, 1,
@@ -185,8 +186,10 @@ vtkSmartPointer<vtkAlgorithm> CenterlinePanel::makeFilter(SceneObject* input, QS
     filter->SetLabel(static_cast<int>(form()->value("Label")));
   else if (selection == "threshold")
     filter->SetThreshold(form()->value("ThresholdLow"), form()->value("ThresholdHigh"));
-  else
+  else if (selection == "non-zero")
     filter->SelectNonZero();
+  else
+    filter->SelectAutomatically();
   filter->SetBorderParts(static_cast<int>(form()->value("BorderParts")));
   filter->SetFillHoles(form()->isOn("FillHoles"));
   filter->SetMaxGap(form()->value("MaxGap"));

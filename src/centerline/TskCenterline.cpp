@@ -75,6 +75,54 @@ void withVoxels(const ScalarVolume& volume, F&& f) {
   }
 }
 
+std::string format(double value);  // a number as short as it prints (below)
+
+// VoxelSelection::Automatic made concrete for `volume` (TskCenterline.h), from a regular sample of its
+// voxels (about two million: a CT has millions of air voxels); false with `error` set when the volume
+// holds no structure to follow without a label or a window.
+bool resolveSelection(const ScalarVolume& volume, TskCenterlineParameters& p, std::vector<std::string>& notes,
+                      Error& error) {
+  if (p.selection != VoxelSelection::Automatic) return true;
+  const int64_t count = int64_t(volume.size[0]) * volume.size[1] * volume.size[2];
+  const int64_t stride = std::max<int64_t>(1, count / 2000000);
+  const int c = std::max(1, volume.components);
+  double lowest = std::numeric_limits<double>::infinity();
+  int64_t samples = 0, nonZero = 0, inWindow = 0;
+  bool signedValues = false;
+  withVoxels(volume, [&](const auto* values) {
+    using T = std::remove_cv_t<std::remove_pointer_t<decltype(values)>>;
+    signedValues = std::is_signed_v<T>;
+    for (int64_t i = 0; i < count; i += stride, ++samples) {
+      const double v = double(values[i * c]);
+      lowest = std::min(lowest, v);
+      nonZero += v != 0;
+      inWindow += v >= p.thresholdLow && v <= p.thresholdHigh;
+    }
+  });
+  const std::string window = format(p.thresholdLow) + " to " + format(p.thresholdHigh);
+  if (signedValues && lowest < -200) {  // Hounsfield units: air is -1000, water 0
+    if (inWindow == 0) {
+      error = "the volume looks like a CT in Hounsfield units (values down to " + format(lowest) +
+              ") but has no voxel in the air window (" + window +
+              "): choose a threshold window (--threshold LO:HI) or a label (--label L)";
+      return false;
+    }
+    p.selection = VoxelSelection::Threshold;
+    notes.push_back("the volume looks like a CT in Hounsfield units: the structure is its air (" + window +
+                    " HU, parts touching the border dropped); --threshold or --label choose another");
+    return true;
+  }
+  if (2 * nonZero > samples) {
+    error = "the non-zero voxels fill " +
+            std::to_string(int(std::lround(100.0 * double(nonZero) / double(samples)))) +
+            " % of the volume: that is no tube to follow; choose a threshold window (--threshold LO:HI) or a "
+            "label (--label L)";
+    return false;
+  }
+  p.selection = VoxelSelection::NonZero;
+  return true;
+}
+
 std::vector<VoxelRun> selectedRuns(const ScalarVolume& volume, const TskCenterlineParameters& p,
                                    int64_t& selected) {
   const int c = std::max(1, volume.components);
@@ -394,7 +442,7 @@ bool placeSeed(const Eigen::Vector3d& s, const BinaryVolume& volume, const Binar
 
 }  // namespace
 
-TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterlineParameters& parameters,
+TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterlineParameters& given,
                                   const std::function<bool(double)>& progress) {
   TskCenterlineResult result;
   const auto& size = input.size;
@@ -403,6 +451,8 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
                    std::to_string(size[1]) + " x " + std::to_string(size[2]) + " voxels)";
     return result;
   }
+  TskCenterlineParameters parameters = given;
+  if (!resolveSelection(input, parameters, result.notes, result.error)) return result;
   const auto report = [&progress](double fraction) { return !progress || progress(fraction); };
 
   // The structure: selection, clean-up, and the box it fills (every later step works on the box only).

@@ -35,15 +35,19 @@ struct ScalarVolume {
   int components = 1;
 };
 
-/// Which voxels make the structure.
-enum class VoxelSelection { NonZero, Label, Threshold };
+/// Which voxels make the structure. Automatic (the default) looks at the volume: a CT in Hounsfield
+/// units (signed or floating-point voxels reaching below -200) takes the threshold window, the air of a
+/// colon, and says so in a note - or, with no voxel in the window, is an error that asks for a threshold
+/// or a label; any other volume takes its non-zero voxels, unless they fill most of it (then an error
+/// too: a body, not a tube).
+enum class VoxelSelection { NonZero, Label, Threshold, Automatic };
 
 /// What happens to parts of the selection that touch the volume's border. Automatic drops them for a
 /// threshold selection (the air around the body of a CT) and keeps them for labels and non-zero voxels.
 enum class BorderParts { Automatic, Drop, Keep };
 
 struct TskCenterlineParameters {
-  VoxelSelection selection = VoxelSelection::NonZero;
+  VoxelSelection selection = VoxelSelection::Automatic;
   double label = 1;  // with VoxelSelection::Label
   // With VoxelSelection::Threshold, inclusive; by default the air in the colon on CT (the paper's use).
   double thresholdLow = -1024, thresholdHigh = -600;

@@ -191,8 +191,8 @@ TEST(FilterDefaults, SketchSkeletonCarriesEverySketchParameter) {
 
 TEST(FilterDefaults, TskCenterlineCarriesEveryTskCenterlineParameter) {
   Coverage<vtkMedialTskCenterline, medial::TskCenterlineParameters> c;
-  EXPECT_STREQ(c.fresh->GetSelectionName(), "non-zero");
-  EXPECT_EQ(c.defaults.selection, medial::VoxelSelection::NonZero);
+  EXPECT_STREQ(c.fresh->GetSelectionName(), "automatic");
+  EXPECT_EQ(c.defaults.selection, medial::VoxelSelection::Automatic);
   c.parameter(
       "Label", c.fresh->GetLabel() == c.defaults.label, [](auto* f) { f->SetLabel(3); },
       [d = c.defaults](const auto& p, bool changed) { return p.label == (changed ? 3 : d.label); });
@@ -232,6 +232,17 @@ TEST(FilterDefaults, TskCenterlineCarriesEveryTskCenterlineParameter) {
   MEDIAL_PARAMETER(c, SectionRays, sections.rays, c.defaults.sections.rays * 2);
   MEDIAL_PARAMETER(c, RecordStages, recordStages, true);
   c.verify("vtkMedialTskCenterline.h");
+}
+
+// The selection modes without values reach the parameters as well.
+TEST(FilterDefaults, SelectionModesReachTheParameters) {
+  const auto f = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  f->SelectNonZero();
+  EXPECT_EQ(f->MakeParameters().selection, medial::VoxelSelection::NonZero);
+  EXPECT_STREQ(f->GetSelectionName(), "non-zero");
+  f->SelectAutomatically();
+  EXPECT_EQ(f->MakeParameters().selection, medial::VoxelSelection::Automatic);
+  EXPECT_STREQ(f->GetSelectionName(), "automatic");
 }
 
 // A setter changes only its own parameter: choosing a threshold does not decide about border parts.

@@ -167,6 +167,66 @@ TEST(TskCenterlineFilter, BadInputGivesErrorsAndEmptyOutput) {
 
 }  // namespace
 
+// Without a label or a threshold, a CT in Hounsfield units is followed through its air (the colon's), as
+// with the window given, and a note says so; a CT with no air, and a volume whose non-zero voxels fill it,
+// are refused with a message naming --threshold, never followed as a body-sized line.
+TEST(TskCenterlineFilter, ACtWithoutThresholdFollowsItsAirAndSaysSo) {
+  const std::string dir = medial::test::scratchDir("automatic-selection");
+  ASSERT_TRUE(medial::test::makeColonPhantom(dir + " " + dir + "/ct.mha --no-dicom"));
+  const auto ct = read(dir + "/ct.mha");
+  auto automatic = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  auto windowed = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  windowed->SetThreshold(-1024, -600);
+  for (vtkMedialTskCenterline* filter : {automatic.Get(), windowed.Get()}) {
+    filter->SetInputData(ct);
+    filter->Update();
+  }
+  EXPECT_STREQ(automatic->GetSelectionName(), "automatic");
+  ASSERT_GT(automatic->GetOutput()->GetNumberOfPoints(), 100);
+  ASSERT_EQ(automatic->GetOutput()->GetNumberOfPoints(), windowed->GetOutput()->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < automatic->GetOutput()->GetNumberOfPoints(); ++i) {
+    double a[3], w[3];
+    automatic->GetOutput()->GetPoint(i, a);
+    windowed->GetOutput()->GetPoint(i, w);
+    ASSERT_EQ(std::vector<double>(a, a + 3), std::vector<double>(w, w + 3)) << "point " << i;
+  }
+  ASSERT_GT(automatic->GetNumberOfNotes(), 0);
+  EXPECT_NE(std::string(automatic->GetNote(0)).find("Hounsfield units"), std::string::npos)
+      << automatic->GetNote(0);
+}
+
+TEST(TskCenterlineFilter, AVolumeWithNoTubeToFindIsRefusedWithAMessage) {
+  const auto volume = [](int type, double background, double inner) {
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(30, 30, 30);
+    image->AllocateScalars(type, 1);
+    for (int k = 0; k < 30; ++k)
+      for (int j = 0; j < 30; ++j)
+        for (int i = 0; i < 30; ++i)
+          image->SetScalarComponentFromDouble(
+              i, j, k, 0, std::abs(i - 15) < 6 && std::abs(j - 15) < 6 ? inner : background);
+    return image;
+  };
+  const auto refused = [](vtkImageData* image, const std::string& text) {
+    auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+    auto errors = medial::ErrorCollector::Watch(filter);
+    filter->SetInputData(image);
+    filter->Update();
+    EXPECT_NE(errors->Joined().find(text), std::string::npos) << errors->Joined();
+    EXPECT_NE(errors->Joined().find("--threshold"), std::string::npos) << errors->Joined();
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  };
+  // A CT (soft tissue at 40 HU, fat-like -300 HU inside) with nothing in the air window.
+  refused(volume(VTK_SHORT, 40, -300), "no voxel in the air window");
+  // Unsigned voxels, non-zero nearly everywhere (a CT stored with an offset, or a body mask).
+  refused(volume(VTK_UNSIGNED_SHORT, 1100, 0), "fill 87 % of the volume");
+  // The same as a label volume with a tube of ones in zeros: followed as before.
+  auto tube = vtkSmartPointer<vtkMedialTskCenterline>::New();
+  tube->SetInputData(volume(VTK_UNSIGNED_CHAR, 0, 1));
+  tube->Update();
+  EXPECT_GT(tube->GetOutput()->GetNumberOfPoints(), 2);
+}
+
 TEST(TskCenterlineFilter, SectionsMeasureTheChangingRadius) {
   // s-radius: an S whose radius goes from 3 to 7 mm; the sections' mean diameter at both ends.
   auto reader = vtkSmartPointer<vtkMedialReader>::New();
