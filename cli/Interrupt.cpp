@@ -5,6 +5,8 @@
 #include <vtkCommand.h>
 #include <vtkSmartPointer.h>
 
+#include <csignal>
+
 namespace medial::cli {
 namespace {
 
@@ -17,23 +19,21 @@ extern "C" void onSignal(int number) {
 
 }  // namespace
 
+void catchInterrupts() {
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+}
+
+bool interrupted() { return signalled != 0; }
+
 InterruptScope::InterruptScope(vtkAlgorithm* filter) : filter_(filter) {
-  signalled = 0;
-  previousInt_ = std::signal(SIGINT, onSignal);
-  previousTerm_ = std::signal(SIGTERM, onSignal);
   auto callback = vtkSmartPointer<vtkCallbackCommand>::New();
   callback->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
-    if (signalled) static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    if (interrupted()) static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
   });
   observer_ = filter->AddObserver(vtkCommand::ProgressEvent, callback);
 }
 
-InterruptScope::~InterruptScope() {
-  filter_->RemoveObserver(observer_);
-  std::signal(SIGINT, previousInt_ == SIG_ERR ? SIG_DFL : previousInt_);
-  std::signal(SIGTERM, previousTerm_ == SIG_ERR ? SIG_DFL : previousTerm_);
-}
-
-bool InterruptScope::interrupted() const { return signalled != 0; }
+InterruptScope::~InterruptScope() { filter_->RemoveObserver(observer_); }
 
 }  // namespace medial::cli

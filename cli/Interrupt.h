@@ -1,17 +1,19 @@
-// Ctrl-C on the `medial` command while a filter runs: the first SIGINT (or SIGTERM) asks the filter to
-// stop at its next progress report (AbortExecute, filters/MedialProgress.h); the command then exits with
-// kCancelled and writes no output. A second signal ends the process at once, as does any signal outside a
-// filter's run (reading, writing, rendering), as if none were caught.
+// Ctrl-C on the `medial` commands that run a filter: the first SIGINT (or SIGTERM) is remembered; the
+// running filter stops at its next progress report (AbortExecute, filters/MedialProgress.h), or the
+// filter does not start, and the command exits with kCancelled writing no output. A second signal ends
+// the process at once. `medial render` runs no filter and keeps the signals' default handling.
 #pragma once
-
-#include <csignal>
 
 class vtkAlgorithm;
 
 namespace medial::cli {
 
-// Catches SIGINT and SIGTERM while it lives, and sets `filter`'s AbortExecute at each of its progress
-// reports once one came; the signals' previous handling is restored at the end.
+// Installs the handlers (main(), for the commands that run a filter).
+void catchInterrupts();
+// True once a SIGINT or SIGTERM arrived.
+bool interrupted();
+
+// While it lives, sets `filter`'s AbortExecute at each of its progress reports once interrupted().
 class InterruptScope {
  public:
   explicit InterruptScope(vtkAlgorithm* filter);
@@ -19,14 +21,9 @@ class InterruptScope {
   InterruptScope(const InterruptScope&) = delete;
   InterruptScope& operator=(const InterruptScope&) = delete;
 
-  // True once a SIGINT or SIGTERM arrived in this scope.
-  bool interrupted() const;
-
  private:
   vtkAlgorithm* filter_;
   unsigned long observer_;
-  void (*previousInt_)(int);
-  void (*previousTerm_)(int);
 };
 
 }  // namespace medial::cli

@@ -1,6 +1,7 @@
 // `medial`: Medial's batch command (docs/ARCHITECTURE.md §6). Dispatches to one subcommand per algorithm.
 #include "Commands.h"
 #include "CommandLine.h"
+#include "Interrupt.h"
 
 #include <vtkLogger.h>
 #include <vtkOutputWindow.h>
@@ -103,6 +104,7 @@ int main(int argc, char** argv) {
     vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);  // the executive's "returned failure" reports
   }
+  if (std::strcmp(command->name, "render") != 0) catchInterrupts();  // render runs no filter (Interrupt.h)
   try {
     return command->run(rest);
   } catch (const UsageError& e) {

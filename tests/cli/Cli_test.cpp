@@ -182,9 +182,12 @@ TEST(Cli, InterruptCancelsWithExitCode130AndNoOutput) {
   if (!std::filesystem::exists(armadillo)) GTEST_SKIP() << armadillo << " missing: run scripts/fetch-samples";
   const std::string dir = scratchDir("cli-interrupt");
   const std::string out = dir + "/skeleton.vtp";
-  // At full resolution the contraction takes seconds; SIGINT arrives after half of one.
+  // At full resolution the contraction takes seconds; SIGINT arrives after one, once the command's
+  // libraries are in the page cache (a first run), so that it reaches a running command, not its start;
+  // --foreground: timeout sends it to the command alone, not once more to its process group.
+  runCommand(medialCommand("--version"));
   auto r =
-      runCommand("timeout --preserve-status -s INT 0.5 " +
+      runCommand("timeout --foreground --preserve-status -s INT 1 " +
                  medialCommand("skeleton " + armadillo + " -o " + out + " --contraction-vertices 30000"));
   EXPECT_EQ(r.exitCode, 130) << r.err;
   EXPECT_NE(r.err.find("medial skeleton: cancelled"), std::string::npos) << r.err;
