@@ -6,10 +6,6 @@
 #include "HelpText.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
-#include "Progress.h"
-#include "ReadInput.h"
-#include "RunFilter.h"
-#include "Timings.h"
 #include "WriteOutput.h"
 #include "WriteSections.h"
 

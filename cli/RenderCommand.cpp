@@ -6,9 +6,6 @@
 #include "Commands.h"
 #include "CommandLine.h"
 #include "PrivateDisplay.h"
-#include "Progress.h"
-#include "ReadInput.h"
-#include "Timings.h"
 
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"

@@ -5,11 +5,7 @@
 #include "HelpText.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
-#include "Progress.h"
-#include "ReadInput.h"
-#include "RunFilter.h"
 #include "WriteOutput.h"
-#include "Timings.h"
 
 #include "vtkMedialContractionSkeleton.h"
 #include "vtkMedialRigWriter.h"
