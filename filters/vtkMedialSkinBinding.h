@@ -9,7 +9,8 @@
  * Output port 0: the input mesh, its cells as they are, with point data `SkinWeights` (one component per
  * bone, each tuple summing to 1) and `Bone` (int: the bone of largest weight, for colouring).
  * Output port 1: the skeleton with field data `Root`: Root when set (>= 0), else the skeleton's own, else
- * its central node (the middle of its longest path: src/rig/SkinBinding.h).
+ * its body centre (the branch node nearest the mesh's volume centroid among the nodes central along the
+ * skeleton: a figure's hips; src/rig/RigRoot.h).
  *
  * Errors (empty outputs): a mesh without polygons, a skeleton without edges or with invalid values, a
  * skeleton outside the mesh's bounding box, a Root out of range, solver failure or abort. Nodes outside the
@@ -35,7 +36,7 @@ class MEDIALFILTERS_EXPORT vtkMedialSkinBinding : public vtkPolyDataAlgorithm {
   /// nearest bone, smaller blends more across joints.
   vtkSetClampMacro(HeatConstant, double, 1e-3, 100.0);
   vtkGetMacro(HeatConstant, double);
-  /// The rig's root node; -1 (default): the skeleton's `Root`, else its central node.
+  /// The rig's root node; -1 (default): the skeleton's `Root`, else its body centre (src/rig/RigRoot.h).
   vtkSetClampMacro(Root, int, -1, VTK_INT_MAX);
   vtkGetMacro(Root, int);
 

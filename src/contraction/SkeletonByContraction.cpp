@@ -9,6 +9,7 @@
 #include "contraction/NodeSelection.h"
 #include "mesh/InsideTest.h"
 #include "mesh/MeshDecimation.h"
+#include "rig/RigRoot.h"
 
 #include <cmath>
 #include <memory>
@@ -61,24 +62,7 @@ SelectionCentring measureSelectionCentring(const SkeletonByContractionResult& re
   return out;
 }
 
-namespace {
-
-// The root: the node of highest degree, ties broken by the number of vertices it absorbed.
-int chooseRoot(const Skeleton& skeleton, const std::vector<int>& vertexToNode) {
-  if (skeleton.nodes.empty()) return -1;
-  std::vector<int> absorbed(skeleton.nodes.size(), 0);
-  for (int node : vertexToNode)
-    if (node >= 0) ++absorbed[size_t(node)];
-  const std::vector<int> degree = nodeDegrees(skeleton);
-  int best = 0;
-  for (int k = 1; k < skeleton.nodeCount(); ++k)
-    if (std::make_pair(degree[size_t(k)], absorbed[size_t(k)]) >
-        std::make_pair(degree[size_t(best)], absorbed[size_t(best)]))
-      best = k;
-  return best;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::string checkContractionInput(const TriangleMesh& mesh) {
   if (mesh.faces.rows() == 0) return "the mesh has no triangles";
@@ -226,7 +210,7 @@ SkeletonByContractionResult skeletonByContraction(const TriangleMesh& mesh,
   result.skeleton = skeletonOf(curve);
   result.skeleton.radii = radii;
   result.vertexToNode = std::move(curve.vertexToNode);
-  result.skeleton.root = chooseRoot(result.skeleton, result.vertexToNode);
+  result.skeleton.root = bodyCentreNode(result.skeleton, mesh);  // the hips of a figure (rig/RigRoot.h)
 
   // III.E skinning weights.
   if (p.computeWeights) {

@@ -162,6 +162,63 @@ Eigen::VectorXd oneRingAreas(const Faces& faces, const Eigen::VectorXd& faceArea
   return ring;
 }
 
+Eigen::VectorXd mixedVoronoiAreas(const Vertices& vertices, const Faces& faces) {
+  Eigen::VectorXd area = Eigen::VectorXd::Zero(vertices.rows());
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const Eigen::Vector3d p[3] = {row(vertices, faces(f, 0)), row(vertices, faces(f, 1)),
+                                  row(vertices, faces(f, 2))};
+    const double twiceArea = (p[1] - p[0]).cross(p[2] - p[0]).norm();
+    if (!(twiceArea > 0)) continue;
+    double cotangent[3];
+    int obtuse = -1;
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::Vector3d u = p[(c + 1) % 3] - p[c], v = p[(c + 2) % 3] - p[c];
+      cotangent[c] = u.dot(v) / twiceArea;  // cot = cos / sin = (u . v) / |u x v|
+      if (u.dot(v) < 0) obtuse = c;
+    }
+    for (int c = 0; c < 3; ++c) {
+      double share;
+      if (obtuse >= 0) {
+        share = (c == obtuse ? 0.25 : 0.125) * twiceArea;  // area / 2 or area / 4
+      } else {  // (|e_ab|^2 cot C + |e_ac|^2 cot B) / 8 for the corner A
+        const int b = (c + 1) % 3, d = (c + 2) % 3;
+        share = ((p[b] - p[c]).squaredNorm() * cotangent[d] + (p[d] - p[c]).squaredNorm() * cotangent[b]) / 8;
+      }
+      area[faces(f, c)] += share;
+    }
+  }
+  return area;
+}
+
+Eigen::Vector3d volumeCentroid(const Vertices& vertices, const Faces& faces) {
+  Eigen::Vector3d areaMoment = Eigen::Vector3d::Zero();
+  double area = 0;
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const Eigen::Vector3d a = row(vertices, faces(f, 0)), b = row(vertices, faces(f, 1)),
+                          c = row(vertices, faces(f, 2));
+    const double triangle = 0.5 * (b - a).cross(c - a).norm();
+    area += triangle;
+    areaMoment += triangle * (a + b + c) / 3.0;
+  }
+  if (!(area > 0))
+    return vertices.rows() > 0 ? Eigen::Vector3d(vertices.colwise().mean().transpose())
+                               : Eigen::Vector3d::Zero();
+  // Tetrahedra from the faces' centre: for a closed mesh any apex gives the same centroid; for an open one
+  // the faces' centre closes it as a cone would, which keeps the answer independent of the mesh's place.
+  const Eigen::Vector3d apex = areaMoment / area;
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+  double volume = 0;
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const Eigen::Vector3d a = row(vertices, faces(f, 0)) - apex, b = row(vertices, faces(f, 1)) - apex,
+                          c = row(vertices, faces(f, 2)) - apex;
+    const double tetra = a.dot(b.cross(c)) / 6.0;
+    volume += tetra;
+    moment += tetra * (a + b + c) / 4.0;
+  }
+  if (std::abs(volume) > 1e-9 * std::pow(area, 1.5)) return apex + moment / volume;
+  return apex;
+}
+
 double enclosedVolume(const Vertices& vertices, const Faces& faces) {
   double volume = 0;
   for (Eigen::Index f = 0; f < faces.rows(); ++f)

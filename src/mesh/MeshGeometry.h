@@ -46,6 +46,15 @@ Eigen::VectorXd faceAreas(const Vertices& vertices, const Faces& faces);
 // the areas faceAreas() gave.
 Eigen::VectorXd oneRingAreas(const Faces& faces, const Eigen::VectorXd& faceAreas, Eigen::Index vertexCount);
 
+// The mixed Voronoi area of each vertex (Meyer, Desbrun, Schroeder and Barr 2003, "Discrete
+// differential-geometry operators", fig. 4): in a non-obtuse triangle the vertex's Voronoi region, in an
+// obtuse one half the area at the obtuse corner and a quarter at the others. The areas sum to the mesh's.
+Eigen::VectorXd mixedVoronoiAreas(const Vertices& vertices, const Faces& faces);
+
+// Centre of the volume the faces enclose (divergence theorem, tetrahedra from the faces' centre); an open
+// mesh is closed by the cone from that centre; a flat one (no volume) gets the faces' area-weighted centre.
+Eigen::Vector3d volumeCentroid(const Vertices& vertices, const Faces& faces);
+
 // Signed volume enclosed by the faces (divergence theorem); meaningful for closed, oriented meshes.
 double enclosedVolume(const Vertices& vertices, const Faces& faces);
 

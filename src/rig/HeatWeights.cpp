@@ -50,6 +50,32 @@ NearestBones nearestBones(const Eigen::Vector3d& p, const Skeleton& skeleton) {
   return nearest;
 }
 
+// L_w of the header: the clamped cotangents (>= 0) of each face, divided by the number of faces at the edge
+// they weigh (halved on a manifold edge), as Blender's meshlaplacian.c. The face counts come from the same
+// assembly with every cotangent 1, so both matrices share one sparsity pattern.
+Eigen::SparseMatrix<double> boneHeatLaplacian(const TriangleMesh& mesh, double minAngle) {
+  const Eigen::Index n = mesh.vertices.rows();
+  const Eigen::MatrixX3d cotangents = faceCotangents(mesh.vertices, mesh.faces, minAngle).cwiseMax(0.0);
+  Eigen::SparseMatrix<double> laplacian = laplacianFromCotangents(mesh.faces, cotangents, n);
+  const Eigen::SparseMatrix<double> faceCount =
+      laplacianFromCotangents(mesh.faces, Eigen::MatrixX3d::Ones(mesh.faces.rows(), 3), n);
+  for (Eigen::Index column = 0; column < n; ++column) {
+    double diagonal = 0;
+    Eigen::SparseMatrix<double>::InnerIterator entry(laplacian, column), count(faceCount, column);
+    double* diagonalEntry = nullptr;
+    for (; entry; ++entry, ++count) {
+      if (entry.row() == column) {
+        diagonalEntry = &entry.valueRef();
+        continue;
+      }
+      entry.valueRef() /= std::max(1.0, count.value());
+      diagonal -= entry.value();
+    }
+    if (diagonalEntry) *diagonalEntry = diagonal;
+  }
+  return laplacian;
+}
+
 // Component id of every vertex through the faces; -1 for vertices in no face.
 std::vector<int> vertexComponents(const Faces& faces, Eigen::Index vertexCount, int& componentCount) {
   UnionFind sets{static_cast<size_t>(vertexCount)};
@@ -68,6 +94,22 @@ std::vector<int> vertexComponents(const Faces& faces, Eigen::Index vertexCount, 
     id[size_t(v)] = r;
   }
   return id;
+}
+
+// Blender's heat_limit_weight, then rows renormalized to sum 1 (column by column: the matrix is stored so).
+void limitAndNormalize(Eigen::MatrixXd& weights, const std::vector<NearestBones>& nearest, double low) {
+  // Below the minimum 0, then a ramp that meets the weight at twice the minimum, so that the weights stay
+  // continuous over the surface where a bone's influence ends.
+  weights = weights.unaryExpr([low](double w) { return w < low ? 0.0 : w < 2 * low ? 2 * (w - low) : w; });
+  const Eigen::VectorXd sums = weights.rowwise().sum();
+  for (Eigen::Index j = 0; j < weights.rows(); ++j) {
+    if (sums[j] > 0) continue;
+    // Only when every weight fell below the limit (more than 1 / low bones sharing a vertex evenly).
+    for (int bone : nearest[size_t(j)].bones)
+      weights(j, bone) = 1.0 / double(nearest[size_t(j)].bones.size());
+  }
+  const Eigen::VectorXd divide = (sums.array() > 0).select(sums, 1.0);
+  weights.array().colwise() /= divide.array();
 }
 
 }  // namespace
@@ -119,11 +161,9 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
   }
   result.componentsWithoutSight = int(std::count(componentSeen.begin(), componentSeen.end(), false));
 
-  // System (14): A = -L_c + M H, B = M H P.
-  const double minAngle = p.minAngleDegrees * M_PI / 180.0;
-  const Eigen::VectorXd mass = oneRingAreas(mesh.faces, faceAreas(mesh.vertices, mesh.faces), n) / 3.0;
-  const Eigen::MatrixX3d cotangents = faceCotangents(mesh.vertices, mesh.faces, minAngle).cwiseMax(0.0);
-  Eigen::SparseMatrix<double> matrix = -laplacianFromCotangents(mesh.faces, cotangents, n);
+  // System (14) in Blender's scaling (see the header): A = -L_w + 4 A_mixed H, B = 4 A_mixed H P.
+  Eigen::SparseMatrix<double> matrix = -boneHeatLaplacian(mesh, p.minAngleDegrees * M_PI / 180.0);
+  const Eigen::VectorXd mass = 4.0 * mixedVoronoiAreas(mesh.vertices, mesh.faces);
   // Row j of B is source[j] / k on each of its k nearest bones (M_jj H_jj, or 1 for an identity row).
   std::vector<double> source(static_cast<size_t>(n), 0.0);
   // A vertex on a bone (d = 0) would make H infinite: d is bounded below by a millionth of the mesh size.
@@ -177,17 +217,7 @@ HeatWeightResult heatWeights(const TriangleMesh& mesh, const Skeleton& skeleton,
     }
   }
 
-  // Drop the negligible, renormalize (column by column: the matrix is stored so).
-  result.weights = (result.weights.array() < p.minimumWeight).select(0.0, result.weights);
-  const Eigen::VectorXd sums = result.weights.rowwise().sum();
-  for (Eigen::Index j = 0; j < n; ++j) {
-    if (sums[j] > 0) continue;
-    // Cannot happen for a solvable system; keep every row a partition of unity regardless.
-    for (int bone : nearest[size_t(j)].bones)
-      result.weights(j, bone) = 1.0 / double(nearest[size_t(j)].bones.size());
-  }
-  const Eigen::VectorXd divide = (sums.array() > 0).select(sums, 1.0);
-  result.weights.array().colwise() /= divide.array();
+  limitAndNormalize(result.weights, nearest, p.minimumWeight);
   if (aborted(1.0)) result.error = Error::cancelled();
   return result;
 }

@@ -3,28 +3,25 @@
 // a sketch's inflated mesh and its skeleton, an SQM mesh and the skeleton it was swept from, or a mesh and
 // a skeleton drawn by hand.
 //
-// The rig needs one root. A skeleton that names none gets its central node: the middle of its longest
-// path (by edge length) in its longest component - the pelvis or chest of a figure, the body of a fish -
-// which is where a rigger puts the root so that posing a limb never drags the body.
+// The rig needs one root. A skeleton that names none gets the body centre of rig/RigRoot.h: the branch
+// node nearest the mesh's volume centroid among the nodes central along the skeleton - the hips of a
+// figure, the middle of a fish - where a rigger puts the root so that posing a limb never drags the body.
 #pragma once
 
 #include "common/Error.h"
 #include "rig/HeatWeights.h"
+#include "rig/RigRoot.h"
 
 namespace medial {
 
 struct SkinBindingResult {
   Eigen::MatrixXd weights;    // (mesh vertices x skeleton edges), rows summing to 1
-  int root = -1;              // the skeleton's root, or its central node when it had none
+  int root = -1;              // the skeleton's root, or its body centre when it had none
   int nodesOutside = 0;       // skeleton nodes outside the mesh (a bone there sees no vertex from inside)
   int invisibleVertices = 0;  // vertices their nearest bone does not see (weighted by diffusion only)
   Error error;
   bool ok() const { return error.empty(); }
 };
-
-// The middle node of the longest shortest path of the skeleton's longest component (by edge length);
-// -1 for a skeleton without nodes.
-int centralNode(const Skeleton& skeleton);
 
 // Heat-diffusion weights of every mesh vertex for every skeleton edge. Errors: no bones, no faces, a
 // skeleton entirely outside the mesh's bounding box (another unit or frame), solver failure, abort.

@@ -57,3 +57,34 @@ TEST(MeshGeometry, AssemblerRefillsTheLaplacianOfNewCotangents) {
     EXPECT_LT((Eigen::MatrixXd(refilled) - Eigen::MatrixXd(fresh)).cwiseAbs().maxCoeff(), 1e-12);
   }
 }
+
+// Meyer et al.'s mixed areas tile the surface: they sum to its area; on an equilateral triangle each corner
+// takes a third, on a right-angled or obtuse one the corner at the large angle takes half.
+TEST(MeshGeometry, MixedVoronoiAreasSumToTheSurfaceArea) {
+  const medial::TriangleMesh torus = medial::testing::torusMesh(2, 0.5, 24, 8);
+  const Eigen::VectorXd mixed = medial::mixedVoronoiAreas(torus.vertices, torus.faces);
+  EXPECT_NEAR(mixed.sum(), medial::faceAreas(torus.vertices, torus.faces).sum(), 1e-9);
+  EXPECT_GT(mixed.minCoeff(), 0);
+  medial::Vertices triangle(3, 3);
+  triangle << 0, 0, 0, 1, 0, 0, 0.5, std::sqrt(3.0) / 2, 0;
+  const medial::Faces face = (medial::Faces(1, 3) << 0, 1, 2).finished();
+  const Eigen::VectorXd thirds = medial::mixedVoronoiAreas(triangle, face);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(thirds[c], std::sqrt(3.0) / 12, 1e-12);
+  triangle.row(2) << -0.2, 0.3, 0;  // obtuse at vertex 0
+  const Eigen::VectorXd obtuse = medial::mixedVoronoiAreas(triangle, face);
+  const double area = medial::faceAreas(triangle, face)[0];
+  EXPECT_NEAR(obtuse[0], area / 2, 1e-12);
+  EXPECT_NEAR(obtuse[1], area / 4, 1e-12);
+}
+
+TEST(MeshGeometry, VolumeCentroidIsTheCentreOfAClosedMeshAndOfAnOpenOne) {
+  medial::TriangleMesh torus = medial::testing::torusMesh(2, 0.5, 24, 8);
+  torus.vertices.rowwise() += Eigen::RowVector3d(3, -1, 7);
+  const Eigen::Vector3d centre = medial::volumeCentroid(torus.vertices, torus.faces);
+  EXPECT_LT((centre - Eigen::Vector3d(3, -1, 7)).norm(), 1e-9);
+  medial::TriangleMesh tube = medial::testing::tubeMesh(10, 1);
+  tube.vertices.rowwise() += Eigen::RowVector3d(0, 0, 4);
+  EXPECT_LT((medial::volumeCentroid(tube.vertices, tube.faces) - Eigen::Vector3d(0, 0, 4)).norm(), 1e-6);
+  tube.faces.conservativeResize(2 * 39 * 16, 3);  // without its caps: open, no volume, its faces' centre
+  EXPECT_LT((medial::volumeCentroid(tube.vertices, tube.faces) - Eigen::Vector3d(0, 0, 4)).norm(), 1e-6);
+}
