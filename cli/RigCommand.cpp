@@ -1,11 +1,13 @@
 // `medial rig SKELETON MESH -o RIG.glb|RIG.fbx [--weights MESH_OUT] [--root N] [--heat C]
-//              [--max-influences N] [--quiet] [--timings]`: binds any mesh to any skeleton with the
+//              [--up-axis AXIS] [--scale F] [--max-influences N] [--quiet] [--timings]`: binds any mesh to
+//              any skeleton with the
 // heat-diffusion weights (vtkMedialSkinBinding) and writes the rig (vtkMedialRigWriter).
 #include "CommandRun.h"
 #include "Commands.h"
 #include "HelpText.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
+#include "RigOptions.h"
 #include "WriteOutput.h"
 
 #include "vtkMedialRigWriter.h"
@@ -20,8 +22,11 @@ namespace medial::cli {
 
 // The options of `medial rig`: those that take a value, and the flags (medial rig --list-options).
 const OptionSpec& rigOptions() {
-  static const OptionSpec spec = {{"-o", "--output", "--weights", "--root", "--heat", "--max-influences"},
-                                  {"--quiet", "--timings"}};
+  static const OptionSpec spec = [] {
+    OptionSpec options = {{"-o", "--output", "--weights", "--root", "--heat"}, {"--quiet", "--timings"}};
+    for (const std::string& name : rigWriterOptionNames()) options.withValue.insert(name);
+    return options;
+  }();
   return spec;
 }
 
@@ -29,10 +34,9 @@ const OptionSpec& rigOptions() {
 const std::string& rigUsage() {
   static const std::string text = [] {
     const auto binding = vtkSmartPointer<vtkMedialSkinBinding>::New();
-    const auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
     return std::string() +
            "usage: medial rig SKELETON MESH -o RIG.glb|RIG.fbx [--weights MESH_OUT] [--root N] [--heat C]\n"
-           "                  [--max-influences N] [--quiet] [--timings]\n\n"
+           "                  [--up-axis AXIS] [--scale F] [--max-influences N] [--quiet] [--timings]\n\n"
            "Binds MESH (.off .obj .ply .stl .vtp .vtk) to SKELETON (.vtp .swc ...) with heat-diffusion "
            "skinning\n"
            "weights (Baran and Popovic 2007, as the contraction paper's III.E) and writes the rig (III.F): "
@@ -44,14 +48,13 @@ const std::string& rigUsage() {
            "  --weights MESH_OUT        also the mesh with point data SkinWeights (a component per bone) "
            "and\n"
            "                            Bone (the strongest)\n"
-           "  --root N                  the root node (default: the skeleton's Root, else its central node,\n"
-           "                            the middle of its longest path)\n"
-           "  --heat C                  c of the heat weights' H = c / d^2 (default " +
-           number(binding->GetHeatConstant()) +
-           ")\n"
-           "  --max-influences N        most bones per vertex (default " +
-           number(writer->GetMaxInfluences()) +
-           ")\n"
+           "  --root N                  the root node (default: the skeleton's Root, else its body centre: "
+           "the\n"
+           "                            branch node nearest the mesh's middle among the central ones, the "
+           "hips)\n"
+           "  --heat C                  c of the heat weights' H = c / d^2, as Blender's bone heat "
+           "(default " +
+           number(binding->GetHeatConstant()) + ")\n" + rigWriterHelp() +
            "  --quiet                   no progress line\n"
            "  --timings                 print stage times as JSON on stdout\n";
   }();
@@ -74,7 +77,7 @@ int runRig(const std::vector<std::string>& args) {
   auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
   MEDIAL_OPTION(parsed, "--root", binding, Root);
   MEDIAL_OPTION(parsed, "--heat", binding, HeatConstant);
-  MEDIAL_OPTION(parsed, "--max-influences", writer, MaxInfluences);
+  applyRigWriterOptions(parsed, writer);
 
   CommandRun command(parsed);
   const vtkSmartPointer<vtkPolyData> skeleton = vtkPolyData::SafeDownCast(command.read(skeletonFile));

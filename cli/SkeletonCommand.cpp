@@ -5,6 +5,7 @@
 #include "HelpText.h"
 #include "CommandLine.h"
 #include "FilterOptions.h"
+#include "RigOptions.h"
 #include "WriteOutput.h"
 
 #include "vtkMedialContractionSkeleton.h"
@@ -77,7 +78,12 @@ const OptionSpec& skeletonOptions() {
                                    "--contraction-steps"},
                                   {"--no-refine", "--no-cycle-repair", "--no-centering", "--no-centring",
                                    "--weights", "--quiet", "--timings"}};
-  return spec;
+  static const OptionSpec withRig = [] {
+    OptionSpec options = spec;
+    for (const std::string& name : rigWriterOptionNames()) options.withValue.insert(name);
+    return options;
+  }();
+  return withRig;
 }
 
 // The --help text of `medial skeleton`, built once; its defaults and names are a fresh filter's.
@@ -92,7 +98,8 @@ const std::string& skeletonUsage() {
            "                       [--max-wh W] [--shape-weight A] [--sampling-weight B] [--collapse-length "
            "D]\n"
            "                       [--heat C] [--contracted MESH] [--no-refine] [--no-cycle-repair]\n"
-           "                       [--no-centering] [--contraction-steps DIR] [--quiet] [--timings]\n\n"
+           "                       [--no-centering] [--contraction-steps DIR] [--up-axis AXIS] [--scale F]\n"
+           "                       [--max-influences N] [--quiet] [--timings]\n\n"
            "Contracts MESH (.off .obj .ply .stl .vtp .vtk; polygons are triangulated) by constrained "
            "Laplacian\n"
            "smoothing and collapses it into a curve skeleton with a Radius per node (the contraction paper, "
@@ -157,6 +164,8 @@ const std::string& skeletonUsage() {
            "  --rig RIG.glb|RIG.fbx     the skinned mesh and its bones (one per skeleton edge) as glTF 2.0 "
            "or FBX\n"
            "  --weights                 compute the skinning weights without writing a rig\n"
+           "with --rig:\n" +
+           rigWriterHelp() +
            "  --quiet                   no progress line\n"
            "  --timings                 print stage times as JSON on stdout\n";
   }();
@@ -179,6 +188,8 @@ int runSkeleton(const std::vector<std::string>& args) {
     throw UsageError(std::string("--rig must end in one of ") + vtkMedialRigWriter::GetExtensions() + ": " +
                      rig);
 
+  auto rigWriter = vtkSmartPointer<vtkMedialRigWriter>::New();
+  applyRigWriterOptions(parsed, rigWriter);
   auto filter = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
   MEDIAL_OPTION(parsed, "--nodes", filter, TargetNodes);
   MEDIAL_OPTION(parsed, "--contraction-vertices", filter, ContractionVertices);
@@ -216,8 +227,7 @@ int runSkeleton(const std::vector<std::string>& args) {
   if (!segmentation.empty()) writePolyData(filter->GetOutput(1), segmentation);
   if (!contracted.empty()) writePolyData(contractedMesh(filter->GetOutput(1)), contracted);
   if (!stepsDir.empty()) writeStages(filter, stepsDir);
-  if (!rig.empty())
-    writeRig(vtkSmartPointer<vtkMedialRigWriter>::New(), filter->GetOutput(1), filter->GetOutput(0), rig);
+  if (!rig.empty()) writeRig(rigWriter, filter->GetOutput(1), filter->GetOutput(0), rig);
   return command.finish();
 }
 

@@ -14,6 +14,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
 
+#include <cmath>
 #include <cstdio>
 
 vtkStandardNewMacro(vtkMedialRigWriter);
@@ -24,6 +25,8 @@ void vtkMedialRigWriter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << this->FileName << "\n";
   os << indent << "MaxInfluences: " << this->MaxInfluences << "\n";
+  os << indent << "UpAxis: " << this->UpAxis << "\n";
+  os << indent << "Scale: " << this->Scale << "\n";
 }
 
 void vtkMedialRigWriter::SetSkeletonData(vtkPolyData* skeleton) { this->SetInputData(1, skeleton); }
@@ -76,6 +79,17 @@ void vtkMedialRigWriter::WriteData() {
 
   medial::RigExportOptions options;
   options.maxInfluences = this->MaxInfluences;
+  options.upAxis = this->UpAxis;
+  options.scale = this->Scale;
+  Eigen::Matrix3d turn;
+  if (!medial::upAxisRotation(options.upAxis, turn)) {
+    vtkErrorMacro(<< this->FileName << ": UpAxis is '" << this->UpAxis << "': one of x, y, z, -x, -y, -z");
+    return this->Fail(vtkErrorCode::UnknownError);
+  }
+  if (!(this->Scale > 0) || !std::isfinite(this->Scale)) {
+    vtkErrorMacro(<< this->FileName << ": Scale is " << this->Scale << ": a positive number");
+    return this->Fail(vtkErrorCode::UnknownError);
+  }
   const std::string format = medial::rigFormatForFile(this->FileName);
   const auto write = [&](const std::string& temporary, std::string& why) {
     why = medial::exportRig(rig, temporary, format, options);

@@ -7,7 +7,9 @@
  * vtkMedialContractionSkeleton gives it with ComputeWeights on; polygons are triangulated.
  * Input port 1: the skeleton (docs/ARCHITECTURE.md §4); bone i is its line cell i, rooted at field data
  * `Root`. The rig: one bone per skeleton edge, head at the end nearer the root, Y along the bone, hierarchy
- * from the root, at most 4 influences per vertex (see src/rig/RigExport.h).
+ * from the root, an end joint at each leaf, the root joint on the ground, at most 4 influences per vertex,
+ * turned so that UpAxis points up and scaled by Scale (see src/rig/RigExport.h and src/rig/RigBones.h).
+ * Errors: an unknown UpAxis, a Scale that is not positive.
  *
  * Atomic like vtkMedialPolyDataWriter: nothing is left behind on failure. Errors name the file; Write()
  * returns 0 on failure.
@@ -37,6 +39,15 @@ class MEDIALFILTERS_EXPORT vtkMedialRigWriter : public vtkWriter {
   vtkSetClampMacro(MaxInfluences, int, 1, 64);
   vtkGetMacro(MaxInfluences, int);
 
+  /// The mesh's up axis: "x", "y" (default, glTF's), "z" (most scans and CAD), "-x", "-y" or "-z". The rig is
+  /// turned so that this axis points up in the file, and the character stands in Blender.
+  vtkSetStdStringFromCharMacro(UpAxis);
+  vtkGetCharFromStdStringMacro(UpAxis);
+
+  /// Mesh units to the file's metres (default 1; 0.01 for a mesh in centimetres).
+  vtkSetMacro(Scale, double);
+  vtkGetMacro(Scale, double);
+
   static bool CanWriteFile(const char* fileName);
   static const char* GetExtensions() { return "*.glb *.fbx"; }
 
@@ -53,4 +64,6 @@ class MEDIALFILTERS_EXPORT vtkMedialRigWriter : public vtkWriter {
 
   std::string FileName;
   int MaxInfluences = 4;
+  std::string UpAxis = "y";
+  double Scale = 1.0;
 };

@@ -105,6 +105,7 @@ MainWindow::MainWindow(QWidget* parent)
   objects_->setErrorReporter(
       [this](const QString& title, const QString& message) { reportError(title, message); });
   connect(objects_, &ObjectList::sceneChanged, this, &MainWindow::render);
+  connect(objects_, &ObjectList::logged, this, &MainWindow::log);
   connect(objects_, &ObjectList::objectsChanged, this, &MainWindow::onObjectsChanged);
   connect(objects_, &ObjectList::currentChanged, this, [this](SceneObject* object) {
     if (object && object->kind == SceneObject::Kind::Volume) showVolume(object);

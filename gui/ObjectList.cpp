@@ -26,6 +26,7 @@
 #include <vtkCellData.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkIntArray.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkXMLImageDataWriter.h>
@@ -319,22 +320,48 @@ bool ObjectList::save(SceneObject* object, const QString& path) {
   return true;
 }
 
-bool ObjectList::exportRig(SceneObject* object, const QString& path) {
+bool ObjectList::exportRig(SceneObject* object, const QString& path, const RigExportSettings& settings) {
   if (!object->skinnedMesh) {
     fail("Cannot export rig", object->name + " has no skinning weights: bind it to a mesh first");
     return false;
   }
+  // The skeleton with the Root asked for (the weights do not depend on it).
+  auto skeleton = vtkSmartPointer<vtkPolyData>::New();
+  skeleton->ShallowCopy(object->polyData());
+  if (settings.root >= 0) {
+    if (settings.root >= skeleton->GetNumberOfPoints()) {
+      fail("Cannot export rig", QString("node %1 is not a node of %2").arg(settings.root).arg(object->name));
+      return false;
+    }
+    auto fields = vtkSmartPointer<vtkFieldData>::New();
+    fields->DeepCopy(skeleton->GetFieldData());
+    fields->RemoveArray(kRootField);
+    auto root = vtkSmartPointer<vtkIntArray>::New();
+    root->SetName(kRootField);
+    root->InsertNextValue(settings.root);
+    fields->AddArray(root);
+    skeleton->SetFieldData(fields);
+  }
   auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
   auto errors = medial::ErrorCollector::Watch(writer);
   writer->SetInputData(object->skinnedMesh);
-  writer->SetSkeletonData(object->polyData());
-  const QByteArray name = path.toLocal8Bit();
+  writer->SetSkeletonData(skeleton);
+  const QByteArray name = path.toLocal8Bit(), axis = settings.upAxis.toLatin1();
   writer->SetFileName(name.constData());
+  writer->SetUpAxis(axis.constData());
+  writer->SetScale(settings.scale);
   writer->Write();
   if (errors->HasErrors()) {
     fail("Cannot export rig", path + ": " + QString::fromStdString(errors->Joined()));
     return false;
   }
+  vtkDataArray* root = skeleton->GetFieldData()->GetArray(kRootField);
+  emit logged(QString("Exported rig %1: %2 bones and Root at node %3, up axis %4, scale %5")
+                  .arg(path)
+                  .arg(skeleton->GetNumberOfLines())
+                  .arg(root && root->GetNumberOfTuples() ? int(root->GetComponent(0, 0)) : 0)
+                  .arg(settings.upAxis)
+                  .arg(settings.scale));
   return true;
 }
 
@@ -413,10 +440,14 @@ void ObjectList::rigDialog() {
                                                      meshes, 0, false, &chosen);
     if (!chosen || !bindMesh(object, findByName(name))) return;
   }
+  vtkDataArray* root = object->polyData()->GetFieldData()->GetArray(kRootField);
+  RigExportDialog options(int(object->polyData()->GetNumberOfPoints()),
+                          root && root->GetNumberOfTuples() ? int(root->GetComponent(0, 0)) : -1, this);
+  if (options.exec() != QDialog::Accepted) return;
   const QString path =
       QFileDialog::getSaveFileName(this, "Export rig", QFileInfo(object->name).completeBaseName() + ".glb",
                                    QString("Rigs (%1)").arg(vtkMedialRigWriter::GetExtensions()));
-  if (!path.isEmpty()) exportRig(object, path);
+  if (!path.isEmpty()) exportRig(object, path, options.settings());
 }
 
 }  // namespace medial::gui

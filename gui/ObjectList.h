@@ -2,6 +2,7 @@
 // of interest for the ghost view (second column), color, opacity, save as, rig export and delete.
 #pragma once
 
+#include "RigExportDialog.h"
 #include "SceneObject.h"
 
 #include <QWidget>
@@ -51,9 +52,9 @@ class ObjectList : public QWidget {
   void setOpacity(SceneObject* object, double opacity);
   // Writes the object (mesh: VTP VTK OBJ PLY STL; skeleton also SWC; volume VTI). False on failure.
   bool save(SceneObject* object, const QString& path);
-  // Writes a skeleton's rig (GLB, FBX): a contraction skeleton's own weights, or those bindMesh made.
-  // False on failure.
-  bool exportRig(SceneObject* object, const QString& path);
+  // Writes a skeleton's rig (GLB, FBX): a contraction skeleton's own weights, or those bindMesh made,
+  // rooted, turned and scaled as `settings` say; logs what it wrote. False on failure.
+  bool exportRig(SceneObject* object, const QString& path, const RigExportSettings& settings = {});
   // Binds `mesh` to the skeleton `skeleton` with heat-diffusion weights (vtkMedialSkinBinding): its
   // skinnedMesh for Export Rig, and its Root when it had none. False (with a dialog) on failure.
   bool bindMesh(SceneObject* skeleton, SceneObject* mesh);
@@ -65,6 +66,7 @@ class ObjectList : public QWidget {
   void sceneChanged();    // something visible changed: render again
   void objectsChanged();  // rows added or removed (panels refresh their input lists)
   void currentChanged(SceneObject* object);
+  void logged(const QString& text);  // a line for the log (what Export Rig wrote)
 
  private:
   void onItemChanged(QTreeWidgetItem* item, int column);

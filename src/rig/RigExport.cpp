@@ -39,17 +39,50 @@ std::string checkRig(const Rig& rig) {
 }
 
 // Binary FBX, written by Medial (rig/FbxRig.h): Assimp's FBX exporter writes files Blender refuses.
-std::string writeFbx(const Rig& rig, const std::vector<RigBone>& bones, const std::string& path,
-                     const RigExportOptions& options) {
-  const std::string bytes =
-      fbxRigFile(rig, bones, keptInfluences(rig, options.maxInfluences), options.meshName);
+std::string writeFbx(const Rig& rig, const std::vector<RigBone>& bones,
+                     const std::vector<std::vector<std::pair<int, double>>>& influences,
+                     const std::string& path, const RigExportOptions& options) {
+  const std::string bytes = fbxRigFile(rig, bones, influences, options.meshName);
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   if (!file || !file.write(bytes.data(), std::streamsize(bytes.size())) || !file.flush())
     return "cannot write the rig to " + path + ": " + std::strerror(errno);
   return {};
 }
 
+// The rig's mesh and skeleton in the file's frame: turned so that its up axis is +Y, scaled to metres.
+std::string orientedForExport(const Rig& rig, const RigExportOptions& options, Rig& turned) {
+  Eigen::Matrix3d rotation;
+  if (!upAxisRotation(options.upAxis, rotation))
+    return "the up axis is '" + options.upAxis + "': it is one of x, y, z, -x, -y, -z";
+  if (!(options.scale > 0) || !std::isfinite(options.scale))
+    return "the scale is " + std::to_string(options.scale) + ": it is a positive number";
+  const Eigen::Matrix3d transform = options.scale * rotation;
+  turned.mesh.faces = rig.mesh.faces;
+  turned.mesh.vertices = rig.mesh.vertices * transform.transpose();
+  turned.skeleton = rig.skeleton;
+  for (Eigen::Vector3d& node : turned.skeleton.nodes) node = transform * node;
+  return {};  // without the weights (up to gigabytes): the influences come from `rig`, in any frame the same
+}
+
 }  // namespace
+
+bool upAxisRotation(const std::string& upAxis, Eigen::Matrix3d& rotation) {
+  // Each row is where the file's x, y, z come from: the file's y is the mesh's up axis.
+  static const std::map<std::string, Eigen::Matrix3d> rotations = [] {
+    std::map<std::string, Eigen::Matrix3d> r;
+    r["y"] = Eigen::Matrix3d::Identity();
+    r["-y"] = Eigen::Vector3d(1, -1, -1).asDiagonal();
+    r["z"] = (Eigen::Matrix3d() << 1, 0, 0, 0, 0, 1, 0, -1, 0).finished();
+    r["-z"] = (Eigen::Matrix3d() << 1, 0, 0, 0, 0, -1, 0, 1, 0).finished();
+    r["x"] = (Eigen::Matrix3d() << 0, -1, 0, 1, 0, 0, 0, 0, 1).finished();
+    r["-x"] = (Eigen::Matrix3d() << 0, 1, 0, -1, 0, 0, 0, 0, 1).finished();
+    return r;
+  }();
+  const auto found = rotations.find(upAxis);
+  if (found == rotations.end()) return false;
+  rotation = found->second;
+  return true;
+}
 
 std::string rigFormatForFile(const std::string& path) {
   const size_t dot = path.find_last_of('.');
@@ -71,11 +104,14 @@ std::vector<std::string> rigBoneNames(const Skeleton& skeleton) {
 std::string exportRig(const Rig& rig, const std::string& path, const std::string& format,
                       const RigExportOptions& options) {
   if (std::string problem = checkRig(rig); !problem.empty()) return problem;
-  const std::vector<RigBone> bones = buildRigBones(rig.skeleton);
-  if (format == "fbx") return writeFbx(rig, bones, path, options);
+  Rig turned;
+  if (std::string problem = orientedForExport(rig, options, turned); !problem.empty()) return problem;
+  const std::vector<RigBone> bones = buildRigBones(turned.skeleton, &turned.mesh.vertices);
+  if (format == "fbx")
+    return writeFbx(turned, bones, keptInfluences(rig, options.maxInfluences), path, options);
   if (format == "glb2" || format == "gltf2")  // TinyGLTF: Assimp's glTF exporter is quadratic in the vertices
-    return writeGltfRig(rig, bones, keptInfluences(rig, std::min(options.maxInfluences, 4)), options.meshName,
-                        path, format == "glb2");
+    return writeGltfRig(turned, bones, keptInfluences(rig, std::min(options.maxInfluences, 4)),
+                        options.meshName, path, format == "glb2");
   return "cannot write a rig as '" + format + "': the formats are glb2, gltf2 and fbx";
 }
 

@@ -23,13 +23,22 @@ struct Rig {
 struct RigExportOptions {
   int maxInfluences = 4;
   std::string meshName = "Mesh";
+  // The mesh's own up axis: x, y, z, -x, -y or -z. The rig is turned so that it points up in the file
+  // (glTF's and this FBX's +Y; Blender turns +Y into its +Z on import): a Z-up scan stands. Default y.
+  std::string upAxis = "y";
+  double scale = 1.0;  // mesh units to the file's metres: 0.01 for a mesh in centimetres
 };
+
+// The rotation that takes `upAxis` (x, y, z, -x, -y, -z) to +Y: a proper rotation, the identity for y, for
+// z the usual Z-up to Y-up turn (x, y, z) -> (x, z, -y). False for an unknown axis.
+bool upAxisRotation(const std::string& upAxis, Eigen::Matrix3d& rotation);
 
 // The format for a file name: .glb -> glb2, .gltf -> gltf2, .fbx -> fbx; empty if unknown.
 std::string rigFormatForFile(const std::string& path);
 
-// Writes the rig to `path` as `format`: fbx (Medial's binary FBX), glb2 or gltf2 (TinyGLTF). Returns an
-// empty string on success, else the problem (bad rig, unknown format, I/O).
+// Writes the rig to `path` as `format`: fbx (Medial's binary FBX), glb2 or gltf2 (TinyGLTF), its mesh and
+// skeleton turned and scaled by the options (the Rig itself stays in the mesh's frame). Returns an empty
+// string on success, else the problem (bad rig or options, unknown format, I/O).
 std::string exportRig(const Rig& rig, const std::string& path, const std::string& format,
                       const RigExportOptions& options = {});
 

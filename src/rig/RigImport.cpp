@@ -108,14 +108,39 @@ void findJoints(Import& in) {
     for (const aiNode* p = it->first->mParent; p && !in.jointIndex.count(p); p = p->mParent)
       if (std::string(p->mName.C_Str()) == "Root") in.jointIndex[p] = 0;
   }
+  // Medial's end joints mark bone tails (buildSkeleton reads them); Root_end marks nothing.
+  for (auto it = in.jointIndex.begin(); it != in.jointIndex.end();) {
+    const std::string name = it->first->mName.C_Str();
+    const bool end = name.size() > 4 && name.compare(name.size() - 4, 4, "_end") == 0;
+    it = end && it->first->mNumChildren == 0 ? in.jointIndex.erase(it) : std::next(it);
+  }
   for (auto& [node, index] : in.jointIndex) {
     index = int(in.joints.size());
     in.joints.push_back(node);
   }
 }
 
+// Where a joint sits; Medial's "Root" stands on the ground below the skeleton (rig/RigBones.h): its place
+// in the skeleton is its first child joint's (Root_end, below it, is no joint: findJoints).
+Eigen::Vector3d jointPosition(Import& in, const aiNode* joint) {
+  if (std::string(joint->mName.C_Str()) == "Root")
+    for (unsigned c = 0; c < joint->mNumChildren; ++c)
+      if (in.jointIndex.count(joint->mChildren[c]))
+        return in.walk.global[joint->mChildren[c]].topRightCorner<3, 1>();
+  return in.walk.global[joint].topRightCorner<3, 1>();
+}
+
+// The child node "<joint>_end" (rig/RigBones.h's end joints), or null.
+const aiNode* endJoint(const aiNode* joint) {
+  const std::string name = std::string(joint->mName.C_Str()) + "_end";
+  for (unsigned c = 0; c < joint->mNumChildren; ++c)
+    if (name == joint->mChildren[c]->mName.C_Str()) return joint->mChildren[c];
+  return nullptr;
+}
+
 // Nodes at the joints (the same place once), edges from each joint to its child joints, and for leaf
-// bones a tail along Y as far as their vertices reach; the root is the joint without a joint parent.
+// bones their end joint or a tail along Y as far as their vertices reach; the root is the joint without a
+// joint parent.
 void buildSkeleton(Import& in, Skeleton& s) {
   in.nodeOf.resize(in.joints.size());
   auto nodeAt = [&](const Eigen::Vector3d& p) {
@@ -124,8 +149,7 @@ void buildSkeleton(Import& in, Skeleton& s) {
     s.nodes.push_back(p);
     return s.nodeCount() - 1;
   };
-  for (size_t j = 0; j < in.joints.size(); ++j)
-    in.nodeOf[j] = nodeAt(in.walk.global[in.joints[j]].topRightCorner<3, 1>());
+  for (size_t j = 0; j < in.joints.size(); ++j) in.nodeOf[j] = nodeAt(jointPosition(in, in.joints[j]));
   std::set<std::pair<int, int>> edges;
   std::vector<bool> hasChild(in.joints.size(), false);
   in.segmentOf.assign(in.joints.size(), {-1, -1});
@@ -146,6 +170,14 @@ void buildSkeleton(Import& in, Skeleton& s) {
   for (size_t j = 0; j < in.joints.size(); ++j) {
     if (hasChild[j]) continue;
     const Eigen::Matrix4d& g = in.walk.global[in.joints[j]];
+    if (const aiNode* end = endJoint(in.joints[j])) {  // Medial's end joint marks the tail
+      const int tail = nodeAt(in.walk.global[end].topRightCorner<3, 1>());
+      if (tail != in.nodeOf[j]) {
+        edges.insert({std::min(in.nodeOf[j], tail), std::max(in.nodeOf[j], tail)});
+        in.segmentOf[j] = {in.nodeOf[j], tail};
+        continue;
+      }
+    }
     const Eigen::Vector3d head = g.topRightCorner<3, 1>(), axis = g.block<3, 1>(0, 1).normalized();
     double reach = 0;
     for (int v : in.verticesOf[in.joints[j]->mName.C_Str()])

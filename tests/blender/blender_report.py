@@ -79,7 +79,39 @@ def rig_report(armatures, meshes):
     report.update(posed=posed, moved=moved, finite=finite)
     # Rest pose: where each bone's head sits, for comparing formats.
     report["heads"] = {b.name: [round(c, 4) for c in (arm.matrix_world @ b.head_local)] for b in bones}
+    # The armature as Blender built it (world space): each bone's parent, head and tail.
+    report["structure"] = {b.name: {"parent": b.parent.name if b.parent else None,
+                                    "head": list(arm.matrix_world @ b.head_local),
+                                    "tail": list(arm.matrix_world @ b.tail_local)} for b in bones}
+    world = [mesh.matrix_world @ v.co for v in mesh.data.vertices]
+    report["extent"] = [max(p[c] for p in world) - min(p[c] for p in world) for c in range(3)]
+    report["dead"] = sorted(b.name for b in bones if b.name.startswith("Bone_") and not b.name.endswith("_end")
+                            and b.name not in counts)
+    report.update(automatic_weights(arm, mesh))
     return report
+
+
+def automatic_weights(arm, mesh):
+    """What a rigger gets who re-binds the mesh to the imported armature with Blender's automatic weights
+    (Object > Parent > With Automatic Weights, every imported bone deforming): vertices per bone."""
+    pose_bone = max(arm.pose.bones, key=lambda b: abs(b.rotation_euler[0]))
+    pose_bone.rotation_euler = (0, 0, 0)
+    bpy.context.view_layer.update()
+    mesh.vertex_groups.clear()
+    for m in list(mesh.modifiers):
+        mesh.modifiers.remove(m)
+    bpy.ops.object.select_all(action="DESELECT")
+    mesh.select_set(True)
+    arm.select_set(True)
+    bpy.context.view_layer.objects.active = arm
+    bpy.ops.object.parent_set(type="ARMATURE_AUTO")
+    groups = {g.index: g.name for g in mesh.vertex_groups}
+    per_bone = {}
+    for v in mesh.data.vertices:
+        for g in v.groups:
+            if g.weight > 0:
+                per_bone[groups[g.group]] = per_bone.get(groups[g.group], 0) + 1
+    return {"automatic": per_bone}
 
 
 def mesh_report(meshes):

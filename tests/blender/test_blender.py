@@ -1,6 +1,7 @@
 """Blender as the test client: rigs (medial skeleton --rig, and medial rig on a sketch, an SQM mesh and a
 contraction skeleton) in .glb and .fbx, and SQM meshes in .obj and .ply, imported by Debian's Blender 3.4
 run headless (tests/blender/blender_report.py reports what it got)."""
+import heapq
 import json
 import os
 import shutil
@@ -14,6 +15,9 @@ REPORT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "blender_repor
 CGAL = os.path.join(SOURCE, "data", "external", "cgal", "meshes")
 RIGGED = [os.path.join(SOURCE, "data", "meshes", "torus.off")] + [
     os.path.join(CGAL, name + ".off") for name in ("elephant", "dino", "cow")]
+# Turned and scaled rigs: the man is Z-up (1 tall, 0.42 wide, 0.30 deep), the armadillo 151 units tall.
+ORIENTED = {os.path.join(CGAL, "man.off"): ["--up-axis", "z"],
+            os.path.join(CGAL, "armadillo.off"): ["--scale", "0.012"]}
 SKETCH = os.path.join(SOURCE, "data", "sketches", "bird.txt")
 TUBES = [os.path.join(SOURCE, "data", "skeletons", "sqm", name + ".vtp") for name in ("fish", "humanoid", "octopus")]
 
@@ -67,15 +71,53 @@ def polydata_counts(path):
     return data.GetNumberOfLines(), data.GetNumberOfPolys(), quads
 
 
+def distance(a, b):
+    return sum((p - q) ** 2 for p, q in zip(a, b)) ** 0.5
+
+
+def skeleton_from_bones(structure):
+    """The skeleton Blender's bones make (Bone_<edge>_<head>_<tail>, lengths head to tail): the root node's
+    distance along the bones to the farthest leaf, the longest path between two leaves, the root node;
+    (None, None, root) for a skeleton with fewer than two leaves (a cycle has no farthest leaf)."""
+    neighbours, root = {}, None
+    for name, bone in structure.items():
+        if not name.startswith("Bone_") or name.endswith("_end"):
+            continue
+        _, _, head, tail = name.split("_")
+        length = distance(bone["head"], bone["tail"])
+        neighbours.setdefault(int(head), []).append((int(tail), length))
+        neighbours.setdefault(int(tail), []).append((int(head), length))
+        if bone["parent"] == "Root":
+            root = int(head)
+    leaves = [n for n, around in neighbours.items() if len(around) == 1]
+    if len(leaves) < 2:
+        return None, None, root
+
+    def distances(source):
+        best, queue = {source: 0.0}, [(0.0, source)]
+        while queue:
+            d, node = heapq.heappop(queue)
+            if d > best[node]:
+                continue
+            for nxt, length in neighbours[node]:
+                if d + length < best.get(nxt, float("inf")):
+                    best[nxt] = d + length
+                    heapq.heappush(queue, (d + length, nxt))
+        return best
+    longest = max(distances(leaf).get(other, 0) for leaf in leaves for other in leaves)
+    from_root = distances(root)
+    return max(from_root.get(leaf, 0) for leaf in leaves), longest, root
+
+
 class BlenderOpensWhatMedialWrites(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.dir = tempfile.mkdtemp(prefix="medial-blender-test-")
         cls.edges, cls.quad_share, paths = {}, {}, []
-        for mesh in RIGGED:
+        for mesh in RIGGED + list(ORIENTED):
             stem = os.path.join(cls.dir, os.path.splitext(os.path.basename(mesh))[0])
             for extension in ("glb", "fbx"):
-                medial("skeleton", mesh, "-o", stem + ".vtp", "--rig", stem + "." + extension)
+                medial("skeleton", mesh, "-o", stem + ".vtp", "--rig", stem + "." + extension, *ORIENTED.get(mesh, []))
                 paths.append(stem + "." + extension)
             cls.edges[stem] = polydata_counts(stem + ".vtp")[0]
         # medial rig binds meshes that other commands made: a sketch's, an SQM mesh (a character made from
@@ -114,7 +156,14 @@ class BlenderOpensWhatMedialWrites(unittest.TestCase):
                 with self.subTest(file=r["file"]):
                     self.assertNotIn("error", r)
                     self.assertEqual(r["armatures"], 1)
-                    self.assertEqual(r["bones"], edges + 1, "a bone per skeleton edge and the root joint")
+                    names = set(r["structure"])
+                    bones = [n for n in names if n.startswith("Bone_") and not n.endswith("_end")]
+                    self.assertEqual(len(bones), edges, "a bone per skeleton edge")
+                    self.assertIn("Root", names)
+                    self.assertIn("Root_end", names)
+                    for name in names - set(bones) - {"Root", "Root_end"}:
+                        self.assertTrue(name.endswith("_end") and name[:-4] in bones, name)
+                        self.assertEqual(r["structure"][name]["parent"], name[:-4])
                     self.assertEqual(r["roots"], 1)
                     self.assertTrue(r["modifier"], "the mesh is bound to the armature")
 
@@ -148,6 +197,52 @@ class BlenderOpensWhatMedialWrites(unittest.TestCase):
                         self.assertAlmostEqual(a, b, delta=1e-3 * size, msg=name)
                 self.assertEqual(glb["posed"], fbx["posed"])
                 self.assertEqual(glb["moved"], fbx["moved"])
+
+    def test_the_root_is_the_bodys_centre(self):
+        """Root's child bones start at the root node, whose farthest node along the skeleton is at most 0.65
+        of the longest path (the hips of a figure, never a hand)."""
+        for stem in self.edges:
+            for extension in ("glb", "fbx"):
+                r = self.reports[stem + "." + extension]
+                with self.subTest(file=r["file"]):
+                    farthest, longest, root = skeleton_from_bones(r["structure"])
+                    self.assertIsNotNone(root, "no bone hangs from Root")
+                    if longest is None:
+                        continue  # a cycle (the torus): every node is as central
+                    self.assertLessEqual(farthest, 0.65 * longest + 1e-9,
+                                         "root node %d: %.3f to the farthest leaf, the longest path %.3f" % (
+                                             root, farthest, longest))
+
+    def test_every_bone_ends_at_its_node_and_weighs_a_vertex(self):
+        for stem in self.edges:
+            for extension in ("glb", "fbx"):
+                r = self.reports[stem + "." + extension]
+                with self.subTest(file=r["file"]):
+                    size = max(r["extent"])
+                    for name, bone in r["structure"].items():
+                        if name.startswith("Bone_") and name.endswith("_end"):
+                            leaf = r["structure"][name[:-4]]
+                            if extension == "glb" and distance(leaf["head"], bone["head"]) < 0.004:
+                                continue  # Blender's glTF importer guesses bones shorter than 4 mm
+                            self.assertLessEqual(distance(leaf["tail"], bone["head"]), 0.02 * size, name)
+                    self.assertEqual(r["dead"], [], "bones that drive no vertex")
+
+    def test_blenders_automatic_weights_give_the_root_nothing(self):
+        for stem in self.edges:
+            for extension in ("glb", "fbx"):
+                r = self.reports[stem + "." + extension]
+                with self.subTest(file=r["file"]):
+                    self.assertNotIn("Root", r["automatic"], "Blender's bone heat weighted Root")
+                    self.assertNotIn("Root_end", r["automatic"])
+
+    def test_rigs_stand_and_have_the_size_asked_for(self):
+        man = os.path.join(self.dir, "man")
+        armadillo = os.path.join(self.dir, "armadillo")
+        for extension in ("glb", "fbx"):
+            x, y, z = self.reports[man + "." + extension]["extent"]
+            self.assertGreater(z, 2 * max(x, y), "the Z-up man stands in Blender (Z up)")
+            extent = self.reports[armadillo + "." + extension]["extent"]
+            self.assertAlmostEqual(extent[2], 151.0 * 0.012, delta=0.02 * 151 * 0.012)
 
     def test_sqm_meshes_are_closed_manifold_with_the_quad_share_medial_reports(self):
         for stem, share in self.quad_share.items():

@@ -281,6 +281,22 @@ TEST_F(GuiWorkflow, SkeletonGhostViewSqmAndRig) {
   // Rig export (GLB) and Save As of the skeleton (SWC).
   ASSERT_TRUE(window->objects()->exportRig(skeleton, QString::fromStdString(dir + "/torus-rig.glb")));
   EXPECT_GT(std::filesystem::file_size(dir + "/torus-rig.glb"), 1000u);
+  EXPECT_TRUE(window->logText().contains("Exported rig")) << window->logText().toStdString();
+  // Export Rig's choices: root node, up axis, scale (as --root, --up-axis, --scale), and the log says so.
+  medial::gui::RigExportSettings settings;
+  settings.root = 1;
+  settings.upAxis = "z";
+  settings.scale = 0.5;
+  ASSERT_TRUE(
+      window->objects()->exportRig(skeleton, QString::fromStdString(dir + "/torus-rig-z.glb"), settings));
+  EXPECT_TRUE(window->logText().contains("Root at node 1, up axis z, scale 0.5"))
+      << window->logText().toStdString();
+  settings.root = 100000;
+  EXPECT_FALSE(window->objects()->exportRig(skeleton, QString::fromStdString(dir + "/bad.glb"), settings));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/bad.glb"));
+  ASSERT_EQ(errors.size(), 1);
+  EXPECT_TRUE(errors.front().contains("node 100000 is not a node")) << errors.front().toStdString();
+  errors.clear();
   // The rig opens again: the torus's mesh, and its skeleton as a second object (FBX as well).
   ASSERT_TRUE(window->objects()->exportRig(skeleton, QString::fromStdString(dir + "/torus-rig.fbx")));
   for (const char* rig : {"/torus-rig.glb", "/torus-rig.fbx"}) {

@@ -1,9 +1,13 @@
 // RigExport: a skinned tube with a three-bone skeleton written as glTF and FBX, read back with Assimp.
 #include "ContractionTestMeshes.h"
 #include "rig/HeatWeights.h"
+#include "rig/RigBones.h"
 #include "rig/RigExport.h"
+#include "rig/RigImport.h"
 
 #include <gtest/gtest.h>
+
+#include <Eigen/LU>
 
 #include <cmath>
 #include <cstdio>
@@ -47,9 +51,64 @@ TEST(RigExport, FormatFromFileName) {
 TEST(RigExport, BonesFollowTheHierarchyFromTheRoot) {
   const medial::Rig rig = tubeRig();
   // The root joint at node 0, then breadth-first from node 0: edge 0 (0 -> 1), then the two bones leaving
-  // node 1.
+  // node 1, the end joints of the two leaf bones, and Root_end.
   EXPECT_EQ(medial::rigBoneNames(rig.skeleton),
-            (std::vector<std::string>{"Root", "Bone_0_0_1", "Bone_1_1_2", "Bone_2_1_3"}));
+            (std::vector<std::string>{"Root", "Bone_0_0_1", "Bone_1_1_2", "Bone_2_1_3", "Bone_1_1_2_end",
+                                      "Bone_2_1_3_end", "Root_end"}));
+}
+
+TEST(RigExport, EndJointsSitAtTheLeavesAndRootStandsBelowTheMesh) {
+  const medial::Rig rig = tubeRig();
+  const std::vector<medial::RigBone> bones = medial::buildRigBones(rig.skeleton, &rig.mesh.vertices);
+  ASSERT_EQ(bones.size(), 7u);
+  for (const medial::RigBone& bone : bones) {
+    const Eigen::Vector3d at = bone.global.topRightCorner<3, 1>();
+    if (bone.name.size() > 4 && bone.name.substr(bone.name.size() - 4) == "_end" && bone.name != "Root_end") {
+      EXPECT_EQ(bone.edge, -1) << bone.name;
+      EXPECT_EQ(bones[size_t(bone.parent)].name + "_end", bone.name);
+      EXPECT_LT((at - rig.skeleton.nodes[size_t(bone.head)]).norm(), 1e-12) << bone.name;
+    }
+  }
+  // The tube is 2 high (y in [-1, 1]) and no vertex lies farther than 1 from the skeleton (its radius, its
+  // caps' tips 1 beyond the end nodes): Root stands below y = -1 by twice that.
+  const Eigen::Vector3d root = bones[0].global.topRightCorner<3, 1>();
+  EXPECT_NEAR(root.x(), -5, 1e-12);
+  EXPECT_LT(root.y(), -1 - 2 * 1.0 + 1e-9);
+  EXPECT_LT(bones[0].global(1, 1), 0) << "Root's Y axis points down";
+  EXPECT_LT(bones.back().global(1, 3), root.y()) << "Root_end below Root";
+}
+
+TEST(RigExport, UpAxisRotationsTakeTheAxisUp) {
+  const std::vector<std::pair<std::string, Eigen::Vector3d>> axes = {
+      {"x", Eigen::Vector3d::UnitX()},   {"y", Eigen::Vector3d::UnitY()},
+      {"z", Eigen::Vector3d::UnitZ()},   {"-x", -Eigen::Vector3d::UnitX()},
+      {"-y", -Eigen::Vector3d::UnitY()}, {"-z", -Eigen::Vector3d::UnitZ()}};
+  for (const auto& [name, axis] : axes) {
+    Eigen::Matrix3d rotation;
+    ASSERT_TRUE(medial::upAxisRotation(name, rotation)) << name;
+    EXPECT_NEAR(rotation.determinant(), 1, 1e-12) << name;
+    EXPECT_LT((rotation * axis - Eigen::Vector3d::UnitY()).norm(), 1e-12) << name;
+  }
+  Eigen::Matrix3d rotation;
+  EXPECT_FALSE(medial::upAxisRotation("up", rotation));
+  EXPECT_NE(medial::exportRig(tubeRig(), scratch("bad.glb"), "glb2", {4, "Mesh", "w", 1.0}), "");
+  EXPECT_NE(medial::exportRig(tubeRig(), scratch("bad.glb"), "glb2", {4, "Mesh", "y", 0.0}), "");
+}
+
+TEST(RigExport, AnXUpMeshIsTurnedAndScaled) {
+  // The tube along x, turned as if x were up and scaled by 2: read back (Assimp, no axis conversion of its
+  // own for glTF) it stands along y, 2 x 12 tall (the tube with its caps is 12 long), 2 x 2 wide.
+  const std::string path = scratch("turned.glb");
+  ASSERT_EQ(medial::exportRig(tubeRig(), path, "glb2", {4, "Mesh", "x", 2.0}), "");
+  const medial::ImportedRig back = medial::importRig(path);
+  ASSERT_EQ(back.error, "");
+  const Eigen::Vector3d extent =
+      back.mesh.vertices.colwise().maxCoeff() - back.mesh.vertices.colwise().minCoeff();
+  EXPECT_NEAR(extent.x(), 2 * 2, 1e-4);
+  EXPECT_NEAR(extent.y(), 2 * 12, 1e-4);
+  EXPECT_NEAR(extent.z(), 2 * 2, 1e-4);
+  EXPECT_EQ(back.skeleton.nodeCount(), 4) << "the same skeleton, Root and end joints folded in";
+  std::remove(path.c_str());
 }
 
 // (format, file extension)

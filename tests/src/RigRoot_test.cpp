@@ -12,7 +12,7 @@ namespace {
 // the hand has degree six, the pelvis and the chest three.
 medial::Skeleton figureWithFingers() {
   medial::Skeleton figure;
-  figure.nodes = {{0, 0, 0},     {0, 0, 0.25},   {0, 0, 0.5},  {-0.15, 0, -0.9},
+  figure.nodes = {{0, 0, 0},       {0, 0, 0.25},    {0, 0, 0.5},    {-0.15, 0, -0.9},
                   {0.15, 0, -0.9}, {-0.75, 0, 0.4}, {0.75, 0, 0.4}, {0, 0, 0.8}};
   figure.edges = {{0, 1}, {1, 2}, {0, 3}, {0, 4}, {2, 5}, {2, 6}, {2, 7}};
   for (int finger = 0; finger < 5; ++finger) {
@@ -45,7 +45,9 @@ TEST(RigRoot, EccentricityIsTheDistanceToTheFarthestNode) {
   const medial::Skeleton figure = figureWithFingers();
   double longest = 0;
   const std::vector<double> eccentricity = medial::nodeEccentricities(figure, longest);
-  const auto length = [&](int a, int b) { return (figure.nodes[size_t(a)] - figure.nodes[size_t(b)]).norm(); };
+  const auto length = [&](int a, int b) {
+    return (figure.nodes[size_t(a)] - figure.nodes[size_t(b)]).norm();
+  };
   const double leg = length(0, 3), spine = 0.5, arm = length(2, 6), finger = length(6, 8);
   // The longest path runs from a foot over the spine to the right hand's outer finger.
   EXPECT_NEAR(longest, leg + spine + arm + finger, 1e-9);
