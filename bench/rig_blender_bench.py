@@ -132,7 +132,7 @@ def main():
     parser.add_argument("--repeat", type=int, default=3)
     args = parser.parse_args()
     if not shutil.which("blender"):
-        print("blender is not on the PATH: nothing to compare with")
+        print("blender is not installed: nothing to compare with")
         return 0
     directory = tempfile.mkdtemp(prefix="medial-rig-bench-")
     rigs, medial_seconds = [], {}

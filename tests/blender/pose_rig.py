@@ -30,7 +30,9 @@ def main():
         for g in v.groups:
             if g.weight > 0.5 and g.group in groups:
                 counts[groups[g.group]] = counts.get(groups[g.group], 0) + 1
-    root = next(b for b in arm.data.bones if b.parent is None).head_local
+    # The root node: where the bones under the root joint start (Medial's Root stands on the ground).
+    top = [b for b in arm.data.bones if b.parent is not None and b.parent.parent is None]
+    root = (top[0] if top else next(b for b in arm.data.bones if b.parent is None)).head_local
     size = max((b.head_local - root).length for b in arm.data.bones) or 1.0
     limbs = [b.name for b in arm.data.bones if (b.head_local - root).length > size / 3 and b.name in counts]
     bone = max(limbs or counts, key=counts.get)

@@ -65,6 +65,12 @@ class MedialPython(unittest.TestCase):
         self.assertEqual(writer.Write(), 1)
         with open(rig_path, "rb") as rig:
             self.assertEqual(rig.read(4), b"glTF")
+        # A Z-up mesh in centimetres stands, in metres; an unknown axis is refused.
+        writer.SetUpAxis("z")
+        writer.SetScale(0.01)
+        self.assertEqual(writer.Write(), 1)
+        writer.SetUpAxis("up")
+        self.assertEqual(writer.Write(), 0)
 
     def test_sqm_meshes_a_skeleton_file(self):
         reader = medial.vtkMedialReader()
