@@ -19,14 +19,14 @@ const std::vector<std::string>& rigWriterOptionNames() {
 
 std::string rigWriterHelp() {
   const auto writer = vtkSmartPointer<vtkMedialRigWriter>::New();
-  return std::string() +
-         "  --up-axis x|y|z|-x|-y|-z  the mesh's up axis (default " + writer->GetUpAxis() +
+  return std::string() + "  --up-axis x|y|z|-x|-y|-z  the mesh's up axis (default " + writer->GetUpAxis() +
          ", glTF's; z for most scans\n"
          "                            and CAD): the rig is turned so that the character stands in Blender\n"
-         "  --scale F                 mesh units to metres in the rig (default " + number(writer->GetScale()) +
+         "  --scale F                 mesh units to metres in the rig (default " +
+         number(writer->GetScale()) +
          "; 0.01 for centimetres)\n"
-         "  --max-influences N        most bones per vertex (default " + number(writer->GetMaxInfluences()) +
-         ")\n";
+         "  --max-influences N        most bones per vertex (default " +
+         number(writer->GetMaxInfluences()) + ")\n";
 }
 
 void applyRigWriterOptions(const ParsedArgs& parsed, vtkMedialRigWriter* writer) {

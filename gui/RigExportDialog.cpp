@@ -16,7 +16,8 @@ RigExportDialog::RigExportDialog(int nodes, int root, QWidget* parent) : QDialog
   root_->setRange(-1, std::max(0, nodes - 1));
   root_->setSpecialValueText(root >= 0 ? QString("body centre (node %1)").arg(root) : QString("body centre"));
   root_->setValue(-1);
-  root_->setToolTip("The node the rig hangs from; by default the skeleton's Root, its body centre (the hips)");
+  root_->setToolTip(
+      "The node the rig hangs from; by default the skeleton's Root, its body centre (the hips)");
   form->addRow("Root node", root_);
   upAxis_ = new QComboBox(this);
   upAxis_->setObjectName("rigUpAxis");

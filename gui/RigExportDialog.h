@@ -13,9 +13,9 @@ class QSpinBox;
 namespace medial::gui {
 
 struct RigExportSettings {
-  int root = -1;           // a node of the skeleton; -1: the skeleton's Root
-  QString upAxis = "y";    // the mesh's up axis (vtkMedialRigWriter::SetUpAxis)
-  double scale = 1.0;      // mesh units to metres
+  int root = -1;         // a node of the skeleton; -1: the skeleton's Root
+  QString upAxis = "y";  // the mesh's up axis (vtkMedialRigWriter::SetUpAxis)
+  double scale = 1.0;    // mesh units to metres
 };
 
 class RigExportDialog : public QDialog {
