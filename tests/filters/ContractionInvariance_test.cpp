@@ -88,7 +88,8 @@ TEST_P(ContractionInvariance, DISABLED_TheSameSkeletonInAnyUnitAndPlace) {
                                       std::make_pair(100.0, Eigen::Vector3d::Zero().eval()),
                                       std::make_pair(1.0, far), std::make_pair(0.01, (far * 0.01).eval())}) {
     const std::vector<Eigen::Vector3d> nodes = skeletonNodes(mesh, scale, offset);
-    EXPECT_EQ(nodes.size(), reference.size()) << "x" << scale << " moved " << offset.norm() / (scale * diagonal);
+    EXPECT_EQ(nodes.size(), reference.size())
+        << "x" << scale << " moved " << offset.norm() / (scale * diagonal);
     EXPECT_LT(farthestFromNearest(nodes, reference), 0.02 * diagonal) << "x" << scale;
     EXPECT_LT(farthestFromNearest(reference, nodes), 0.02 * diagonal) << "x" << scale;
   }
