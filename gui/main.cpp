@@ -1,5 +1,7 @@
 // medial-gui: Medial's Qt6 application.
 //   medial-gui [FILE...]                         open the files in the window
+//   medial-gui [--run FILTER]... [--edit] [FILE...]   and run the filters, open the last skeleton in the
+//                                                editor (gui/StartupActions.h)
 //   medial-gui --screenshot IMAGE.png [FILE...]  open, render, save the 3-D view (--window: the whole
 //                                                window), quit (for tests);
 //                                                errors go to stderr and the exit code is 1
@@ -8,6 +10,7 @@
 #include "MainWindow.h"
 #include "ObjectList.h"
 #include "SkeletonEditor.h"
+#include "StartupActions.h"
 #include "VtkView.h"
 
 #include <QApplication>
@@ -57,44 +60,20 @@ int main(int argc, char** argv) {
   if (!batch) window.restoreLayout();
   for (const QString& file : parser.positionalArguments()) window.openFile(file);
   window.show();
-  if (!batch) return app.exec();
-
   if (failed) return 1;
-  QTimer::singleShot(0, &window, [&] {
-    for (const QString& name : parser.values(run)) {
-      medial::gui::FilterPanel* panel = window.panel(name);
-      if (!panel) {
-        std::fprintf(stderr, "medial-gui: --run %s: no such filter\n", name.toLocal8Bit().constData());
-        failed = true;
-        break;
-      }
-      for (int tab = 0; tab < window.filterTabs()->count(); ++tab)  // show the panel that runs
-        if (window.filterTabs()->widget(tab)->isAncestorOf(panel)) window.filterTabs()->setCurrentIndex(tab);
-      if (!panel->run()) break;  // the error handler has reported why
-      panel->wait();
-      if (!panel->lastRunSucceeded()) {
-        std::fprintf(stderr, "medial-gui: --run %s failed; log:\n%s\n", name.toLocal8Bit().constData(),
-                     window.logText().toLocal8Bit().constData());
-        failed = true;
-        break;
-      }
-    }
-    if (!failed && parser.isSet(edit)) {
-      const auto skeletons = window.objects()->ofKind(medial::gui::SceneObject::Kind::Skeleton);
-      failed = skeletons.empty() || !window.skeletonEditor()->begin(skeletons.back());
-      for (int tab = 0; tab < window.filterTabs()->count(); ++tab)
-        if (window.filterTabs()->widget(tab)->isAncestorOf(window.skeletonEditor()))
-          window.filterTabs()->setCurrentIndex(tab);
-    }
-    if (failed) {
-      app.quit();
-      return;
-    }
-    window.resetCamera();
-    failed = parser.isSet(whole) ? !window.grab().save(parser.value(screenshot))
-                                 : !window.saveScreenshot(parser.value(screenshot));
-    app.quit();
-  });
-  app.exec();
-  return failed ? 1 : 0;
+  // --run and --edit, in the window a user keeps open or before the --screenshot.
+  auto* actions =
+      new medial::gui::StartupActions(&window, parser.values(run), parser.isSet(edit), [&](bool ok) {
+        if (!batch) return;
+        failed = !ok;
+        if (ok) {
+          window.resetCamera();
+          failed = parser.isSet(whole) ? !window.grab().save(parser.value(screenshot))
+                                       : !window.saveScreenshot(parser.value(screenshot));
+        }
+        app.quit();
+      });
+  actions->start();
+  const int status = app.exec();
+  return batch ? (failed ? 1 : 0) : status;
 }

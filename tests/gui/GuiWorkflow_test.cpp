@@ -11,6 +11,8 @@
 #include "SketchPanel.h"
 #include "SkeletonPanel.h"
 #include "SqmPanel.h"
+#include "SkeletonEditor.h"
+#include "StartupActions.h"
 #include "VtkView.h"
 #include "rig/RigExport.h"
 #include "vtkMedialContractionSkeleton.h"
@@ -1039,4 +1041,32 @@ TEST_F(GuiWorkflow, FullSizeCtScrollsAndRunsTheCenterlineWithoutFreezing) {
       "full-size CT: opened in %.2f s, slice step %.1f ms (median of 40), centerline tab shown in %.0f ms, "
       "centerline with sections %.2f s, longest event-loop gap %lld ms\n",
       openSeconds, frameMs, tabMs, centerlineSeconds, static_cast<long long>(longestGapMs));
+}
+
+// medial-gui --run and --edit without --screenshot (issue 49): the window that stays open runs the filters
+// in order and opens the last skeleton in the editor, as the --screenshot run does (gui/StartupActions).
+TEST_F(GuiWorkflow, StartupRunAndEditWorkInTheWindowThatStaysOpen) {
+  open(dataPath("meshes/torus.off"));
+  bool finished = false, succeeded = false;
+  auto* actions = new medial::gui::StartupActions(window.get(), {"skeleton"}, true, [&](bool ok) {
+    finished = true;
+    succeeded = ok;
+  });
+  actions->start();
+  QElapsedTimer clock;
+  clock.start();
+  while (!finished && clock.elapsed() < 120000) QTest::qWait(20);
+  ASSERT_TRUE(finished);
+  EXPECT_TRUE(succeeded) << errors.join("\n").toStdString();
+  EXPECT_FALSE(window->objects()->ofKind(SceneObject::Kind::Skeleton).empty());
+  EXPECT_TRUE(window->skeletonEditor()->editing());
+  // A filter that does not exist: done(false) at once, nothing run.
+  finished = false;
+  (new medial::gui::StartupActions(window.get(), {"no-such-filter"}, false, [&](bool ok) {
+    finished = true;
+    succeeded = ok;
+  }))->start();
+  while (!finished && clock.elapsed() < 130000) QTest::qWait(20);
+  EXPECT_TRUE(finished);
+  EXPECT_FALSE(succeeded);
 }
