@@ -4,6 +4,7 @@
 #include "common/UnionFind.h"
 
 #include "mesh/MeshGeometry.h"
+#include "skeleton/SegmentDistance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,14 +24,6 @@ struct NearestBones {
   double distance = INFINITY;
   Eigen::Vector3d closestPoint;  // on the first of those bones
 };
-
-Eigen::Vector3d closestPointOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                                      const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return a + t * ab;
-}
 
 NearestBones nearestBones(const Eigen::Vector3d& p, const Skeleton& skeleton) {
   NearestBones nearest;

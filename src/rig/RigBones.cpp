@@ -1,6 +1,7 @@
 #include "rig/RigBones.h"
 
 #include "common/Parallel.h"
+#include "skeleton/SegmentDistance.h"
 
 #include <Eigen/Geometry>
 
@@ -52,12 +53,10 @@ double farthestFromTheSkeleton(const Skeleton& skeleton, const Vertices& mesh) {
   inParallel(distance.size(), [&](size_t v) {
     const Eigen::Vector3d p = mesh.row(Eigen::Index(v)).transpose();
     double nearest = INFINITY;
-    for (const auto& e : skeleton.edges) {
-      const Eigen::Vector3d a = skeleton.nodes[size_t(e[0])], ab = skeleton.nodes[size_t(e[1])] - a;
-      const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-      nearest = std::min(nearest, (a + t * ab - p).squaredNorm());
-    }
-    distance[v] = std::sqrt(nearest);
+    for (const auto& e : skeleton.edges)
+      nearest =
+          std::min(nearest, distanceToSegment(p, skeleton.nodes[size_t(e[0])], skeleton.nodes[size_t(e[1])]));
+    distance[v] = nearest;
   });
   return distance.empty() ? 0.0 : *std::max_element(distance.begin(), distance.end());
 }

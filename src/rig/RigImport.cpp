@@ -1,5 +1,7 @@
 #include "rig/RigImport.h"
 
+#include "skeleton/SegmentDistance.h"
+
 #include <assimp/Importer.hpp>
 #include <assimp/ai_assert.h>
 #include <assimp/postprocess.h>
@@ -41,12 +43,6 @@ struct Walk {
     for (unsigned c = 0; c < node->mNumChildren; ++c) visit(node->mChildren[c], g);
   }
 };
-
-double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
-}
 
 // What the steps of importRig share: the scene, its nodes' global transforms, the merged mesh, the joints
 // and where they went in the skeleton.

@@ -5,12 +5,16 @@ whether rotating one bone by 30 degrees moves some vertices and not all, and for
 quad share."""
 import json
 import math
+import os
 import sys
 import time
 
 import bpy
 import bmesh
 import numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from automatic_weights import rebind_with_automatic_weights  # noqa: E402
 
 numpy.bool = bool  # Debian's Blender 3.4 glTF add-on uses numpy.bool, which numpy 1.24 removed
 
@@ -97,14 +101,7 @@ def automatic_weights(arm, mesh):
     pose_bone = max(arm.pose.bones, key=lambda b: abs(b.rotation_euler[0]))
     pose_bone.rotation_euler = (0, 0, 0)
     bpy.context.view_layer.update()
-    mesh.vertex_groups.clear()
-    for m in list(mesh.modifiers):
-        mesh.modifiers.remove(m)
-    bpy.ops.object.select_all(action="DESELECT")
-    mesh.select_set(True)
-    arm.select_set(True)
-    bpy.context.view_layer.objects.active = arm
-    bpy.ops.object.parent_set(type="ARMATURE_AUTO")
+    rebind_with_automatic_weights(arm, mesh)
     groups = {g.index: g.name for g in mesh.vertex_groups}
     per_bone = {}
     for v in mesh.data.vertices:
