@@ -109,8 +109,11 @@ const std::string& skeletonUsage() {
            "  --segmentation MESH_OUT   the triangulated mesh with point data SkeletonNode (vertex -> "
            "node),\n"
            "                            and SkinWeights (one component per bone) with --rig or --weights\n"
-           "  --nodes N                 nodes kept by the selection stage (default " +
-           number(contraction->GetTargetNodes()) + "; 0 keeps all)\n" +
+           "  --nodes N                 the skeleton's node count (default " +
+           number(contraction->GetTargetNodes()) +
+           "; 0 keeps all): exactly N,\n"
+           "                            or more where fewer would take a bone out of the mesh, or fewer\n"
+           "                            where the curve skeleton has fewer (a note on stderr says so)\n" +
            namesHelp("--solver NAME", "", vtkMedialContractionSkeleton::GetSolverNames(),
                      contraction->GetSolver()) +
            "  --iterations N            maximum contraction iterations (default " +
@@ -222,6 +225,8 @@ int runSkeleton(const std::vector<std::string>& args) {
     std::fprintf(
         stderr, "medial skeleton: note: %d cycle%s that surgery lost put back (the mesh has genus %d)\n",
         filter->GetRestoredCycles(), filter->GetRestoredCycles() == 1 ? "" : "s", filter->GetGenus());
+  if (!filter->GetSelectionNote().empty())
+    std::fprintf(stderr, "medial skeleton: note: %s\n", filter->GetSelectionNote().c_str());
   command.timings().start("write");
   writePolyData(filter->GetOutput(0), output);
   if (!segmentation.empty()) writePolyData(filter->GetOutput(1), segmentation);

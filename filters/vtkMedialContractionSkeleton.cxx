@@ -9,6 +9,7 @@
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkStringArray.h>
 #include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -174,6 +175,7 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   this->ContractedVertices = result.contractedVertices;
   this->Genus = result.cycleRepair.genus;
   this->RestoredCycles = result.cycleRepair.cyclesAdded;
+  this->SelectionNote.clear();
   const double seconds[kStageCount] = {result.decimationSeconds,    result.contractionSeconds,
                                        result.factorizationSeconds, result.surgerySeconds,
                                        result.refinementSeconds,    result.selectionSeconds,
@@ -185,6 +187,14 @@ int vtkMedialContractionSkeleton::RequestData(vtkInformation*, vtkInformationVec
   }
 
   skeletonOutput->ShallowCopy(medial::polyDataFromSkeleton(result.skeleton));
+  this->SelectionNote = result.selectionNote;
+  if (!result.selectionNote.empty()) {
+    auto note = vtkSmartPointer<vtkStringArray>::New();
+    note->SetName("SelectionNote");
+    note->InsertNextValue(result.selectionNote);
+    skeletonOutput->GetFieldData()->AddArray(note);
+    vtkWarningMacro(<< result.selectionNote);
+  }
   if (this->RecordStages) this->KeepStages(result);
   meshOutput->ShallowCopy(triangles);
   meshOutput->GetPointData()->AddArray(medial::intArray("SkeletonNode", result.vertexToNode));

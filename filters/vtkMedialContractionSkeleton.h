@@ -41,7 +41,9 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   medial::SkeletonByContractionParameters MakeParameters() const;
 #endif
 
-  /// Number of skeleton nodes the selection stage aims at (default 30; 0 keeps the full curve skeleton).
+  /// The skeleton's node count (default 30; 0 keeps the full curve skeleton): exactly this many, or more
+  /// where fewer would take a bone out of the mesh, or fewer where the curve skeleton has fewer
+  /// (GetSelectionNote).
   vtkSetClampMacro(TargetNodes, int, 0, VTK_INT_MAX);
   vtkGetMacro(TargetNodes, int);
   /// Meshes with more vertices are decimated to this many (quadric error, topology kept) before the
@@ -141,6 +143,10 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   /// Genus of the mesh's closed components, and the cycles put back (RestoreCycles).
   vtkGetMacro(Genus, int);
   vtkGetMacro(RestoredCycles, int);
+  /// Why the skeleton does not have TargetNodes nodes (merging more would take a bone out of the mesh, or
+  /// the curve skeleton has fewer), with the count kept; empty when it has them. Also the skeleton's field
+  /// data `SelectionNote`, and a warning.
+  std::string GetSelectionNote() const { return this->SelectionNote; }
   /// Seconds of a stage of the last update: decimation, contraction, factorization (part of the
   /// contraction), surgery, refinement, selection, radii, weights.
   double GetStageSeconds(const std::string& stage) const;
@@ -188,5 +194,6 @@ class MEDIALFILTERS_EXPORT vtkMedialContractionSkeleton : public vtkPolyDataAlgo
   int ContractedVertices = 0;
   int Genus = 0;
   int RestoredCycles = 0;
+  std::string SelectionNote;
   double Seconds[8] = {0, 0, 0, 0, 0, 0, 0, 0};
 };

@@ -1,6 +1,7 @@
 #include "contraction/NodeSelection.h"
 
 #include <algorithm>
+#include <optional>
 #include <queue>
 #include <vector>
 
@@ -31,6 +32,11 @@ struct Graph {
   double length(int a, int b) const { return (position[a] - position[b]).norm(); }
 };
 
+struct Placement {
+  int keep;
+  Eigen::Vector3d position;
+};
+
 struct Candidate {
   double length;
   int a, b;
@@ -51,6 +57,84 @@ bool staysInside(const Graph& g, const InsideTest& inside, const Eigen::Vector3d
   return crossingAfter <= crossingBefore;
 }
 
+// Where the merged node of a candidate edge goes: the preferred placement, and in the second pass either
+// end when that one would take an edge out of the mesh.
+std::optional<Placement> placementOf(const Graph& g, const InsideTest* inside, const Candidate& c,
+                                     bool eitherEnd) {
+  const int sa = g.significance(c.a), sb = g.significance(c.b);
+  // Keep the more significant end: a tip or a junction stays where it is. A leaf on a branch node is
+  // the one case where the branch node is kept: the side branch, the shortest edge left, goes.
+  int keep = sa >= sb ? c.a : c.b;
+  if (sa == 2 && sb == 1) keep = c.b;
+  if (sb == 2 && sa == 1) keep = c.a;
+  const Eigen::Vector3d preferred =
+      sa == sb ? Eigen::Vector3d(0.5 * (g.position[size_t(c.a)] + g.position[size_t(c.b)]))
+               : g.position[size_t(keep)];
+  std::vector<Placement> placements{{keep, preferred}};
+  if (eitherEnd)
+    placements.insert(placements.end(), {{c.a, g.position[size_t(c.a)]}, {c.b, g.position[size_t(c.b)]}});
+  for (const Placement& placement : placements)
+    if (!inside ||
+        staysInside(g, *inside, placement.position, placement.keep, placement.keep == c.a ? c.b : c.a))
+      return placement;
+  return std::nullopt;
+}
+
+void collapse(Graph& g, const Placement& placement, int drop) {
+  const int keep = placement.keep;
+  g.position[size_t(keep)] = placement.position;
+  for (int k : g.neighbours[size_t(drop)]) {
+    auto& list = g.neighbours[size_t(k)];
+    list.erase(std::remove(list.begin(), list.end(), drop), list.end());
+    if (k != keep && !g.adjacent(keep, k)) {
+      g.neighbours[size_t(keep)].push_back(k);
+      list.push_back(keep);
+    }
+    ++g.version[size_t(k)];
+  }
+  g.neighbours[size_t(drop)].clear();
+  g.alive[size_t(drop)] = false;
+  g.owner[size_t(drop)] = keep;
+  ++g.version[size_t(keep)];
+}
+
+// Collapses the shortest collapsible edges until `aliveCount` reaches the target or none is left; returns
+// the collapses.
+int collapseShortestEdges(Graph& g, const InsideTest* inside, int targetNodes, bool eitherEnd,
+                          int& aliveCount) {
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
+  auto push = [&](int a, int b) {
+    queue.push({g.length(a, b), a, b, g.version[size_t(a)], g.version[size_t(b)]});
+  };
+  for (int a = 0; a < int(g.position.size()); ++a)
+    if (g.alive[size_t(a)])
+      for (int b : g.neighbours[size_t(a)])
+        if (a < b) push(a, b);
+  int collapses = 0;
+  while (aliveCount > targetNodes && !queue.empty()) {
+    const Candidate c = queue.top();
+    queue.pop();
+    if (!g.alive[size_t(c.a)] || !g.alive[size_t(c.b)] || g.version[size_t(c.a)] != c.versionA ||
+        g.version[size_t(c.b)] != c.versionB || !g.adjacent(c.a, c.b))
+      continue;
+    if (g.significance(c.a) == 2 && g.significance(c.b) == 2) continue;  // a segment on its own
+    if (g.shareNeighbour(c.a, c.b)) continue;  // would fold a cycle into a double edge
+    const std::optional<Placement> placement = placementOf(g, inside, c, eitherEnd);
+    if (!placement) continue;
+    const int keep = placement->keep;
+    collapse(g, *placement, keep == c.a ? c.b : c.a);
+    --aliveCount;
+    ++collapses;
+    // Lengths around the kept node changed; the significance of its neighbours may have changed too.
+    for (int k : g.neighbours[size_t(keep)]) {
+      push(keep, k);
+      for (int m : g.neighbours[size_t(k)])
+        if (m != keep) push(k, m);
+    }
+  }
+  return collapses;
+}
+
 }  // namespace
 
 int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* inside,
@@ -69,57 +153,13 @@ int selectNodes(CurveSkeleton& skeleton, int targetNodes, const InsideTest* insi
       g.neighbours[size_t(b)].push_back(a);
     }
 
-  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
-  auto push = [&](int a, int b) {
-    queue.push({g.length(a, b), a, b, g.version[size_t(a)], g.version[size_t(b)]});
-  };
-  for (int a = 0; a < n; ++a)
-    for (int b : g.neighbours[size_t(a)])
-      if (a < b) push(a, b);
-
-  int aliveCount = n, collapses = 0;
-  while (aliveCount > targetNodes && !queue.empty()) {
-    const Candidate c = queue.top();
-    queue.pop();
-    if (!g.alive[size_t(c.a)] || !g.alive[size_t(c.b)] || g.version[size_t(c.a)] != c.versionA ||
-        g.version[size_t(c.b)] != c.versionB || !g.adjacent(c.a, c.b))
-      continue;
-    const int sa = g.significance(c.a), sb = g.significance(c.b);
-    if (sa == 2 && sb == 2) continue;          // a segment on its own
-    if (g.shareNeighbour(c.a, c.b)) continue;  // would fold a cycle into a double edge
-    // Keep the more significant end: a tip or a junction stays where it is. A leaf on a branch node is
-    // the one case where the branch node is kept: the side branch, the shortest edge left, goes.
-    int keep = sa >= sb ? c.a : c.b;
-    if (sa == 2 && sb == 1) keep = c.b;
-    if (sb == 2 && sa == 1) keep = c.a;
-    const int drop = keep == c.a ? c.b : c.a;
-    const Eigen::Vector3d kept =
-        sa == sb ? Eigen::Vector3d(0.5 * (g.position[size_t(c.a)] + g.position[size_t(c.b)]))
-                 : g.position[size_t(keep)];
-    if (inside && !staysInside(g, *inside, kept, keep, drop)) continue;
-    g.position[size_t(keep)] = kept;
-    for (int k : g.neighbours[size_t(drop)]) {
-      auto& list = g.neighbours[size_t(k)];
-      list.erase(std::remove(list.begin(), list.end(), drop), list.end());
-      if (k != keep && !g.adjacent(keep, k)) {
-        g.neighbours[size_t(keep)].push_back(k);
-        list.push_back(keep);
-      }
-      ++g.version[size_t(k)];
-    }
-    g.neighbours[size_t(drop)].clear();
-    g.alive[size_t(drop)] = false;
-    g.owner[size_t(drop)] = keep;
-    ++g.version[size_t(keep)];
-    --aliveCount;
-    ++collapses;
-    // Lengths around the kept node changed; the significance of its neighbours may have changed too.
-    for (int k : g.neighbours[size_t(keep)]) {
-      push(keep, k);
-      for (int m : g.neighbours[size_t(k)])
-        if (m != keep) push(k, m);
-    }
-  }
+  int aliveCount = n;
+  int collapses = collapseShortestEdges(g, inside, targetNodes, /*eitherEnd=*/false, aliveCount);
+  // Stopped above the target because every merge at the preferred place would take an edge out of the
+  // mesh (a curled finger's tip joined to the palm): again, with the merged node at either end - the count
+  // asked for matters more to a rigger than a tip a node short.
+  if (inside && aliveCount > targetNodes)
+    collapses += collapseShortestEdges(g, inside, targetNodes, /*eitherEnd=*/true, aliveCount);
 
   // Renumber the surviving nodes and map every absorbed vertex through the merge chain.
   std::vector<int> newId(size_t(n), -1);

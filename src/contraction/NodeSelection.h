@@ -8,8 +8,8 @@
 // significant end (leaf, then branch node, then connection node) or the midpoint of two equal ends, so
 // tips and junctions stay where they are; a leaf on a branch node merges into the branch node, so side
 // branches go shortest first. With an InsideTest, a collapse whose new edges would leave the mesh is
-// refused (a bent limb keeps the node at its bend). The count may stay above the target when no edge can
-// be collapsed.
+// refused (a bent limb keeps the node at its bend) unless the merged node can sit at either end instead.
+// The count may stay above the target when no edge can be collapsed.
 #pragma once
 
 #include "contraction/ConnectivitySurgery.h"

@@ -36,7 +36,10 @@ struct SkeletonByContractionParameters {
   // Beyond the paper: put back the cycles surgery lost, so that the skeleton has as many independent
   // cycles as the closed mesh has genus (src/contraction/CycleRepair.h).
   bool restoreCycles = true;
-  int targetNodes = 30;         // node selection; 0 keeps every node of the refined curve skeleton
+  // III.D node selection: the skeleton gets exactly this many nodes, unless fewer would take a bone out of
+  // the mesh or the curve skeleton has fewer (selectionNote says so; no nodes are invented in the middle
+  // of its edges). 0 keeps every node of the refined curve skeleton.
+  int targetNodes = 30;
   bool computeWeights = false;  // III.E: one weight per vertex and bone (skeleton edge)
   HeatWeightParameters weights;
   // The intermediate results the paper draws: the contraction's steps (contraction.recordSteps, Figs. 5
@@ -69,6 +72,8 @@ struct SkeletonByContractionResult {
   Faces contractedFaces;
   Skeleton surgerySkeleton, unselectedSkeleton;
   std::vector<int> selectedFrom;  // with a selection: per node of `skeleton`, the node it came from
+  // With a selection that could not give targetNodes nodes: why, with the count kept (empty otherwise).
+  std::string selectionNote;
   // Seconds per stage, and the share of the contraction spent factorizing.
   double decimationSeconds = 0, contractionSeconds = 0, factorizationSeconds = 0, surgerySeconds = 0,
          refinementSeconds = 0, selectionSeconds = 0, radiiSeconds = 0, weightsSeconds = 0;

@@ -9,6 +9,7 @@
 #include "vtkMedialReader.h"
 
 #include <vtkCellArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -50,7 +51,9 @@ TEST_P(ContractionSamples, ConnectedWithItsCyclesAndInside) {
   vtkPolyData* skeleton = filter->GetOutput(0);
   const vtkIdType nodes = skeleton->GetNumberOfPoints();
   ASSERT_GT(nodes, 1);
-  EXPECT_LE(nodes, 45);  // the target is 30; collapses that would leave the mesh are refused
+  // The target, 30, or a few more with a note where fewer would take a bone out of the mesh.
+  if (nodes != 30) EXPECT_FALSE(filter->GetSelectionNote().empty()) << nodes << " nodes";
+  EXPECT_LE(nodes, 33);
 
   // Components and independent cycles of the skeleton graph.
   std::vector<vtkIdType> parent(static_cast<size_t>(nodes));
@@ -102,5 +105,35 @@ INSTANTIATE_TEST_SUITE_P(
       std::replace(name.begin(), name.end(), '-', '_');
       return name;
     });
+
+// --nodes N gives N nodes (issue 44: the selection stopped at 44 on the man for 15 or 30), or at most
+// max(2, 10 %) more with a note saying why.
+class NodesAskedFor : public ::testing::TestWithParam<std::pair<const char*, int>> {};
+
+TEST_P(NodesAskedFor, TheSkeletonHasThem) {
+  const auto [name, target] = GetParam();
+  const std::string path = medial::test::externalPath(std::string("cgal/meshes/") + name + ".off");
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " missing: run scripts/fetch-samples";
+  auto reader = vtkSmartPointer<vtkMedialReader>::New();
+  reader->SetFileName(path.c_str());
+  auto filter = vtkSmartPointer<vtkMedialContractionSkeleton>::New();
+  auto errors = medial::ErrorCollector::Watch(filter, /*warningsToo=*/true);
+  filter->SetInputConnection(reader->GetOutputPort());
+  filter->SetTargetNodes(target);
+  filter->Update();
+  const vtkIdType nodes = filter->GetOutput(0)->GetNumberOfPoints();
+  EXPECT_LE(std::abs(nodes - target), std::max(2, target / 10)) << name;
+  const bool noted = filter->GetOutput(0)->GetFieldData()->GetAbstractArray("SelectionNote") != nullptr;
+  EXPECT_EQ(noted, nodes != target) << filter->GetSelectionNote();
+  EXPECT_EQ(errors->HasErrors(), nodes != target) << errors->Joined();  // the note as a warning
+}
+
+INSTANTIATE_TEST_SUITE_P(Cgal, NodesAskedFor,
+                         ::testing::Values(std::make_pair("man", 15), std::make_pair("man", 40),
+                                           std::make_pair("dino", 15), std::make_pair("dino", 40),
+                                           std::make_pair("armadillo", 15), std::make_pair("camel", 40)),
+                         [](const auto& info) {
+                           return std::string(info.param.first) + "_" + std::to_string(info.param.second);
+                         });
 
 }  // namespace

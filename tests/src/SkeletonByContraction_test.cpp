@@ -346,6 +346,25 @@ TEST(NodeSelection, RefusesCollapsesThatLeaveTheMesh) {
         inside.segmentIsClear(constrained.nodes.row(a).transpose(), constrained.nodes.row(b).transpose()));
 }
 
+TEST(NodeSelection, ShortensACurledTipRatherThanStopAboveTheTarget) {
+  // A curled finger: 12 nodes 30 degrees apart on an open arc inside a thin torus (R 2, r 0.1), where
+  // every chord over two steps leaves the tube. Merging at the preferred place (the tip, or the middle)
+  // stops at 12; the second pass keeps the inner end and so reaches the 4 nodes asked for, inside.
+  medial::CurveSkeleton s;
+  s.nodes.resize(12, 3);
+  for (int k = 0; k < 12; ++k) {
+    s.nodes.row(k) << 2 * std::cos(k * M_PI / 6), 2 * std::sin(k * M_PI / 6), 0;
+    if (k > 0) s.edges.emplace_back(k - 1, k);
+  }
+  const medial::TriangleMesh torus = torusMesh(2, 0.1, 96, 12);
+  const medial::InsideTest inside(torus);
+  medial::selectNodes(s, 4, &inside);
+  ASSERT_EQ(s.nodes.rows(), 4);
+  EXPECT_EQ(countGraph(medial::skeletonOf(s)).components, 1);
+  for (const auto& [a, b] : s.edges)
+    EXPECT_TRUE(inside.segmentIsClear(s.nodes.row(a).transpose(), s.nodes.row(b).transpose()));
+}
+
 // The preconditioned conjugate gradients reach the skeleton the direct solver does (it failed on real
 // meshes without a preconditioner).
 TEST(SkeletonByContraction, ConjugateGradientsGiveTheSameSkeletonAsCholmod) {
