@@ -72,7 +72,8 @@ std::optional<Placement> placementOf(const Graph& g, const InsideTest* inside, c
                : g.position[size_t(keep)];
   std::vector<Placement> placements{{keep, preferred}};
   if (eitherEnd)
-    placements.insert(placements.end(), {{c.a, g.position[size_t(c.a)]}, {c.b, g.position[size_t(c.b)]}});
+    for (int end : {c.a, c.b})
+      if (g.position[size_t(end)] != preferred) placements.push_back({end, g.position[size_t(end)]});
   for (const Placement& placement : placements)
     if (!inside ||
         staysInside(g, *inside, placement.position, placement.keep, placement.keep == c.a ? c.b : c.a))

@@ -134,12 +134,11 @@ void selectCurve(const InsideTest& inside, const CrossSections* sections, int ta
   if (sections)
     result.centredNodes += centreNodes(curve, *sections, inside, /*branchNodes=*/true, 2, &directions);
   const int kept = int(curve.nodes.rows());
-  if (kept > targetNodes)
+  if (kept != targetNodes)
     result.selectionNote = std::to_string(kept) + " nodes kept of the " + std::to_string(targetNodes) +
-                           " asked for: merging any more would take a bone out of the mesh";
-  else if (kept < targetNodes)
-    result.selectionNote = std::to_string(kept) + " nodes kept of the " + std::to_string(targetNodes) +
-                           " asked for: the curve skeleton has no more";
+                           " asked for: " +
+                           (kept > targetNodes ? "merging any more would take a bone out of the mesh"
+                                               : "the curve skeleton has no more");
 }
 
 }  // namespace
