@@ -1,6 +1,7 @@
 // `medial centerline VOLUME -o CENTERLINE.vtp [--label L | --threshold LO:HI] [--seed X,Y,Z] [--fill-holes]
 //  [--max-gap MM] [--min-part-volume MM3]
-//  [--profile PROFILE.csv] [--terrain TERRAIN.png] [--section-spacing K] [--section-rays N] [--stages DIR]`
+//  [--markups CURVE.mrk.json] [--profile PROFILE.csv] [--terrain TERRAIN.png] [--section-spacing K]
+//  [--section-rays N] [--stages DIR]`
 #include "CommandRun.h"
 #include "Commands.h"
 #include "HelpText.h"
@@ -65,7 +66,8 @@ void writeStages(vtkMedialTskCenterline* filter, const std::string& dir) {
 const OptionSpec& centerlineOptions() {
   static const OptionSpec spec = {
       {"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain", "--section-spacing",
-       "--section-rays", "--antecedent-width", "--centering", "--max-gap", "--min-part-volume", "--stages"},
+       "--section-rays", "--antecedent-width", "--centering", "--max-gap", "--min-part-volume", "--stages",
+       "--markups"},
       {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}};
   return spec;
 }
@@ -79,10 +81,10 @@ const std::string& centerlineUsage() {
            "X,Y,Z]\n"
            "                         [--fill-holes] [--keep-border-parts] [--max-gap MM] [--min-part-volume "
            "MM3]\n"
-           "                         [--branches] [--antecedent-width W] [--centering N]\n"
+           "                         [--branches] [--antecedent-width W] [--centering N] [--markups "
+           "C.mrk.json]\n"
            "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] "
-           "[--section-rays "
-           "N]\n"
+           "[--section-rays N]\n"
            "                         [--stages DIR] [--quiet] [--timings]\n\n"
            "Follows a tube (colon, vessel) in VOLUME (.nii .nii.gz .mha .mhd .nrrd .inr .vti or a DICOM "
            "folder) "
@@ -121,6 +123,9 @@ const std::string& centerlineUsage() {
            "                            centricity criterion; default " +
            number(tsk->GetCenteringIterations()) +
            ", 0 = the TSK curve as is)\n"
+           "  --markups CURVE.mrk.json  the centerline as 3D Slicer markups curves (one per branch, LPS, "
+           "mm),\n"
+           "                            with Radius per control point (Slicer: drag the file in)\n"
            "  --profile PROFILE.csv     perpendicular sections every K mm: arc length, min/max diameter,\n"
            "                            perimeter (mm) and area (mm2) per row (paper section 4, Fig. 14)\n"
            "  --terrain TERRAIN.png     the unfolded wall: distance from the axis over angle (x) and arc\n"
@@ -188,6 +193,9 @@ int runCenterline(const std::vector<std::string>& args) {
   if (!terrain.empty() && fileExtension(terrain) != ".png")
     throw UsageError("--terrain must end in .png: " + terrain);
   if (!profile.empty() || !terrain.empty()) filter->ComputeSectionsOn();
+  const std::string markups = parsed.value("--markups");
+  if (parsed.has("--markups") && fileExtension(markups) != ".json" && fileExtension(markups) != ".mrk.json")
+    throw UsageError("--markups must end in .mrk.json: " + markups);
   MEDIAL_OPTION(parsed, "--section-spacing", filter, SectionSpacing);
   MEDIAL_OPTION(parsed, "--section-rays", filter, SectionRays);
   if (parsed.has("--stages") && parsed.has("--branches"))
@@ -202,6 +210,7 @@ int runCenterline(const std::vector<std::string>& args) {
 
   command.timings().start("write");
   writePolyData(filter->GetOutput(), output);
+  if (!markups.empty()) writeMarkups(filter->GetOutput(), markups);
   if (!profile.empty()) writeProfileCsv(vtkTable::SafeDownCast(filter->GetOutputDataObject(1)), profile);
   if (!terrain.empty()) writeTerrainPng(vtkImageData::SafeDownCast(filter->GetOutputDataObject(2)), terrain);
   if (!stages.empty()) writeStages(filter, stages);

@@ -4,6 +4,7 @@
 
 #include "MedialErrorCollector.h"
 #include "MedialFileNames.h"
+#include "vtkMedialMarkupsCurveWriter.h"
 #include "vtkMedialPolyDataWriter.h"
 #include "vtkMedialRigWriter.h"
 
@@ -20,6 +21,14 @@ void writePolyData(vtkPolyData* data, const std::string& path) {
   auto errors = medial::ErrorCollector::Watch(writer);
   writer->SetFileName(path.c_str());
   writer->SetInputData(data);
+  if (!writer->Write() || errors->HasErrors()) throw Failure(errors->Joined());
+}
+
+void writeMarkups(vtkPolyData* centerline, const std::string& path) {
+  auto writer = vtkSmartPointer<vtkMedialMarkupsCurveWriter>::New();
+  auto errors = medial::ErrorCollector::Watch(writer);
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(centerline);
   if (!writer->Write() || errors->HasErrors()) throw Failure(errors->Joined());
 }
 

@@ -11,6 +11,10 @@ namespace medial::cli {
 // Writes by extension through vtkMedialPolyDataWriter (atomic); throws Failure with the writer's errors.
 void writePolyData(vtkPolyData* data, const std::string& path);
 
+// Writes the polylines of `centerline` as 3D Slicer markups curves (vtkMedialMarkupsCurveWriter);
+// throws Failure with the writer's errors.
+void writeMarkups(vtkPolyData* centerline, const std::string& path);
+
 // Throws UsageError naming `option` when vtkMedialPolyDataWriter cannot write `path`'s extension.
 void requireWritableExtension(const std::string& path, const char* option);
 

@@ -634,6 +634,10 @@ TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
   auto usage = runCommand(
       medialCommand("centerline " + dir + "/dicom -o " + dir + "/x.vtp --terrain " + dir + "/t.jpg"));
   EXPECT_EQ(usage.exitCode, 2) << usage.err;
+  auto markups = runCommand(
+      medialCommand("centerline " + dir + "/dicom -o " + dir + "/x.vtp --markups " + dir + "/c.txt"));
+  EXPECT_EQ(markups.exitCode, 2) << markups.err;
+  EXPECT_NE(markups.err.find("--markups must end in .mrk.json"), std::string::npos) << markups.err;
 }
 
 TEST(Cli, RenderWritesMeshSkeletonAndSwcPictures) {

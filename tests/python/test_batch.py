@@ -2,6 +2,7 @@
 resume, and a manifest that stays valid when the driver is killed. Every scheduler and worker binds
 127.0.0.1 and is stopped by pid."""
 import csv
+import json
 import os
 import shutil
 import signal
@@ -15,6 +16,7 @@ import unittest
 MEDIAL = os.environ["MEDIAL_EXECUTABLE"]
 SOURCE = os.environ.get("MEDIAL_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 SKELETONS = os.path.join(SOURCE, "data", "skeletons", "sqm")
+TUBES = os.path.join(SOURCE, "data", "volumes", "tubes")
 
 # A stand-in `medial` for isolation tests: it aborts on inputs named *abort*, sleeps on *sleep*, counts its
 # runs of each input in COUNT_DIR, and otherwise writes its output.
@@ -247,6 +249,20 @@ class Batch(unittest.TestCase):
             self.assertIsInstance(done.seconds, float)
             self.assertEqual(done["status"], "ok", "rows still read like the dictionaries they were")
             self.assertEqual((crashed.status, crashed.exit_code), ("crash", -6))
+
+    def test_centerline_outputs_pass_through_with_the_stem(self):
+        for name in ("u", "helix"):
+            shutil.copy(os.path.join(TUBES, name + ".nii.gz"), self.inputs)
+        out = os.path.join(self.dir, "out")
+        r = self.batch("centerline", self.inputs, "--out-dir", out, "--workers", "2", "--label", "1",
+                       "--markups", "{stem}.mrk.json", "--profile", "{stem}-profile.csv")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for name in ("u", "helix"):
+            with open(os.path.join(out, name + ".mrk.json")) as f:
+                curve = json.load(f)["markups"][0]
+            self.assertEqual(curve["type"], "Curve")
+            self.assertGreater(len(curve["controlPoints"]), 50)
+            self.assertTrue(os.path.getsize(os.path.join(out, name + "-profile.csv")) > 100)
 
     def test_option_arity_comes_from_the_commands_option_table(self):
         import medial.batch

@@ -1,7 +1,12 @@
 """The TSK centerline from Python: a branching tree (one polyline per branch), the sections' profile table and
-the unfolded wall on ports 1 and 2, and the centering option, all on the bundled phantoms."""
+the unfolded wall on ports 1 and 2, the centering option, and the 3D Slicer markups curves, all on the bundled
+phantoms."""
+import json
 import os
+import tempfile
 import unittest
+
+import numpy as np
 
 import medial
 from vtk.util import numpy_support
@@ -20,6 +25,11 @@ def centerline(name, **options):
         getattr(tsk, "Set" + key)(value)
     tsk.Update()
     return tsk
+
+
+def cell_ids(polydata, cell):
+    ids = polydata.GetCell(cell).GetPointIds()
+    return [ids.GetId(k) for k in range(ids.GetNumberOfIds())]
 
 
 class CenterlineFromPython(unittest.TestCase):
@@ -44,6 +54,49 @@ class CenterlineFromPython(unittest.TestCase):
     def test_the_papers_curve_without_centering(self):
         paper = centerline("u", CenteringIterations=0).GetOutput().GetNumberOfPoints()
         self.assertGreaterEqual(paper, 50)
+
+    def test_markups_curves_read_back_as_slicer_reads_them(self):
+        tree = centerline("tree", DetectBranches=True).GetOutput()
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "tree.mrk.json")
+            writer = medial.vtkMedialMarkupsCurveWriter()
+            writer.SetFileName(path)
+            writer.SetInputData(tree)
+            self.assertEqual(writer.Write(), 1)
+            with open(path) as f:
+                document = json.load(f)
+        self.assertRegex(document["@schema"], r"markups-schema-v1\.[0-9]+\.[0-9]+\.json#$")
+        curves = document["markups"]
+        self.assertEqual(len(curves), tree.GetNumberOfLines())
+        radius = numpy_support.vtk_to_numpy(tree.GetPointData().GetArray("Radius"))
+        points = numpy_support.vtk_to_numpy(tree.GetPoints().GetData())
+        for cell, curve in enumerate(curves):
+            self.assertEqual((curve["type"], curve["coordinateSystem"], curve["coordinateUnits"]),
+                             ("Curve", "LPS", "mm"))
+            ids = cell_ids(tree, cell)
+            positions = np.array([p["position"] for p in curve["controlPoints"]])
+            self.assertEqual(positions.shape, (len(ids), 3))
+            self.assertLess(np.abs(positions - points[ids]).max(), 1e-6, "control points off the line")
+            values = {m["name"]: m for m in curve["measurements"]}
+            self.assertLess(np.abs(np.array(values["Radius"]["controlPointValues"]) - radius[ids]).max(), 1e-6)
+            length = np.linalg.norm(np.diff(positions, axis=0), axis=1).sum()
+            self.assertAlmostEqual(values["length"]["value"], length, places=4)
+        junction = cell_ids(tree, 0).index(cell_ids(tree, 1)[0])
+        self.assertEqual(curves[1]["controlPoints"][0]["position"], curves[0]["controlPoints"][junction]["position"],
+                         "a branch starts at its junction on its parent")
+
+    def test_markups_writer_refuses_what_is_not_a_curve(self):
+        import vtk
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "none.mrk.json")
+            writer = medial.vtkMedialMarkupsCurveWriter()
+            writer.SetFileName(path)
+            writer.SetInputData(vtk.vtkPolyData())
+            errors = []
+            writer.AddObserver("ErrorEvent", lambda caller, event: errors.append(event))
+            self.assertEqual(writer.Write(), 0)
+            self.assertTrue(errors)
+            self.assertFalse(os.path.exists(path), "no file is left behind")
 
 
 if __name__ == "__main__":
