@@ -1,7 +1,7 @@
-// medial-make-colon-phantom OUTPUT_DIR [VOLUME] [--size WxHxD] [--collapse N] [--gap MM] [--no-dicom]:
-// a CT-like colon phantom written as a DICOM series (one CT slice per file, int16 Hounsfield units) and,
-// when VOLUME is named, as one file too (.nii.gz, .nii, .mha, .nrrd: ITK's writer by extension), for the
-// TSK centerline, its benchmark and the GUI's virtual colonoscopy.
+// medial-make-colon-phantom OUTPUT_DIR [VOLUME] [--size WxHxD] [--collapse N] [--gap MM] [--fluid]
+// [--no-dicom]: a CT-like colon phantom written as a DICOM series (one CT slice per file, int16 Hounsfield
+// units) and, when VOLUME is named, as one file too (.nii.gz, .nii, .mha, .nrrd: ITK's writer by extension),
+// for the TSK centerline, its benchmark and the GUI's virtual colonoscopy.
 //
 // An elliptic body (soft tissue 40 HU, a 10 mm fat layer at -100 HU) in air (-1000 HU) holds an
 // air-filled colon (-1000 HU) that runs from the rectum up the sigmoid and the descending colon, across the
@@ -28,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -101,7 +102,8 @@ struct Options {
   std::filesystem::path out;
   std::string volume;  // also written as one file when named
   int collapse = 0;
-  double gap = 10.0;   // mm
+  double gap = 10.0;  // mm
+  bool gapGiven = false;
   bool fluid = false;  // the collapsed stretches hold contrast-tagged fluid instead of tissue
   bool dicom = true;
 };
@@ -109,6 +111,33 @@ struct Options {
 const char kUsage[] =
     "usage: medial-make-colon-phantom OUTPUT_DIR [VOLUME.nii.gz|.mha|.nrrd] [--size WxHxD] [--collapse N]\n"
     "                                 [--gap MM] [--fluid] [--no-dicom]\n";
+
+const char kHelp[] =
+    "\n"
+    "Writes a CT-like colon phantom: an elliptic body (soft tissue 40 HU, a 10 mm fat layer at -100 HU) in\n"
+    "air, holding an air-filled colon (-1000 HU) from the rectum to the cecum, 8 to 12 mm in radius, with a\n"
+    "haustral fold every 30 mm, four polyps and Gaussian noise (sigma 20 HU). 206 x 165 x 187 voxels of\n"
+    "0.7 x 0.7 x 1.0 mm. `medial centerline OUTPUT_DIR -o c.vtp` follows its air.\n"
+    "  OUTPUT_DIR        a DICOM series (one int16 CT slice per file, Hounsfield units), axis.txt (the true\n"
+    "                    axis, \"x y z radius\" in mm per line), polyps.txt (\"x y z radius\") and, with\n"
+    "                    --collapse, gaps.txt (the collapsed stretches' arc lengths, mm)\n"
+    "  VOLUME            the same CT as one file too (.nii.gz .nii .mha .nrrd)\n"
+    "  --size WxHxD      another voxel count at the same spacing, each 32..4096 (512x512x400: a full-size\n"
+    "                    CT with a colon about 1 m long)\n"
+    "  --collapse N      N evenly spaced stretches (0..20) of the colon without air, as collapsed segments\n"
+    "  --gap MM          length of each collapsed stretch along the axis (default 10, up to 200)\n"
+    "  --fluid           the collapsed stretches hold contrast-tagged fluid (+300 HU) instead of tissue\n"
+    "  --no-dicom        no DICOM series (VOLUME then required)\n"
+    "  -h, --help        this text\n";
+
+// A whole number in [low, high], or false.
+bool parseInt(const std::string& text, int low, int high, int& value) {
+  char* end = nullptr;
+  const long parsed = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || parsed < low || parsed > high) return false;
+  value = int(parsed);
+  return true;
+}
 
 // Parses the command line into `options`; false (after a message) on a usage error.
 bool parse(int argc, char** argv, Options& options) {
@@ -125,14 +154,16 @@ bool parse(int argc, char** argv, Options& options) {
         return false;
       }
     } else if (arg == "--collapse") {
-      options.collapse = std::atoi(value().c_str());
-      if (options.collapse < 0 || options.collapse > 20) {
+      if (!parseInt(value(), 0, 20, options.collapse)) {
         std::fprintf(stderr, "medial-make-colon-phantom: --collapse expects 0..20\n");
         return false;
       }
     } else if (arg == "--gap") {
-      options.gap = std::atof(value().c_str());
-      if (!(options.gap > 0 && options.gap <= 200)) {
+      const std::string v = value();
+      options.gapGiven = true;
+      char* end = nullptr;
+      options.gap = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end != '\0' || !(options.gap > 0 && options.gap <= 200)) {
         std::fprintf(stderr, "medial-make-colon-phantom: --gap expects 0..200 mm\n");
         return false;
       }
@@ -151,6 +182,12 @@ bool parse(int argc, char** argv, Options& options) {
     std::fprintf(stderr, "%s", kUsage);
     return false;
   }
+  if (options.collapse == 0 && (options.fluid || options.gapGiven)) {
+    std::fprintf(stderr,
+                 "medial-make-colon-phantom: --fluid and --gap shape collapsed stretches: give "
+                 "--collapse N too\n");
+    return false;
+  }
   options.out = positional[0];
   if (positional.size() == 2) options.volume = positional[1];
   return true;
@@ -161,7 +198,7 @@ bool parse(int argc, char** argv, Options& options) {
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      std::printf("%s", kUsage);
+      std::printf("%s%s", kUsage, kHelp);
       return 0;
     }
   Options options;

@@ -950,7 +950,8 @@ TEST(Cli, HostileInputsGiveOneLineWithTheRightReason) {
 }
 
 // The colon phantom's options: --collapse N leaves N stretches without air (N + 1 parts of colon air,
-// their arc lengths in gaps.txt), --size scales the body and the colon, usage errors exit 2.
+// their arc lengths in gaps.txt), --size scales the body and the colon, --help explains every option,
+// usage errors (--fluid without --collapse among them) exit 2.
 TEST(Cli, ColonPhantomCollapsedSegmentsAndSize) {
   const std::string dir = scratchDir("cli-phantom-options");
   const std::string phantom = binaryDir() + "/bin/medial-make-colon-phantom ";
@@ -999,9 +1000,16 @@ TEST(Cli, ColonPhantomCollapsedSegmentsAndSize) {
       0);
   readMha(dir + "/big.mha", size);
   EXPECT_EQ(size, (std::array<int, 3>{300, 280, 250}));
-  EXPECT_EQ(runCommand(phantom + "--help").exitCode, 0);
+  const auto help = runCommand(phantom + "--help");
+  EXPECT_EQ(help.exitCode, 0);
+  for (const char* option : {"--size", "--collapse", "--gap", "--fluid", "--no-dicom", "axis.txt"})
+    EXPECT_NE(help.out.find(option), std::string::npos) << option << " is not explained:\n" << help.out;
   EXPECT_EQ(runCommand(phantom + dir + "/x --size 10").exitCode, 2);
   EXPECT_EQ(runCommand(phantom + dir + "/x --frobnicate").exitCode, 2);
+  EXPECT_EQ(runCommand(phantom + dir + "/x --collapse two").exitCode, 2);
+  const auto fluid = runCommand(phantom + dir + "/x --fluid");
+  EXPECT_EQ(fluid.exitCode, 2) << "--fluid without --collapse changes nothing: a usage error";
+  EXPECT_NE(fluid.err.find("--collapse"), std::string::npos) << fluid.err;
 }
 
 // A colon with a collapsed segment longer than --max-gap: two polylines and a note on stderr; a larger
