@@ -3,7 +3,7 @@
 #include "CommandLine.h"
 
 #include "MedialFileNames.h"
-#include "MedialTerrainImage.h"
+#include "MedialTerrainFigure.h"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -59,23 +59,8 @@ void writeProfileCsv(vtkTable* profile, const std::string& path) {
 }
 
 void writeTerrainPng(vtkImageData* terrain, const std::string& path) {
-  const medial::TerrainGrey grey = medial::terrainGrey(terrain);
-  if (grey.pixels.empty()) throw Failure(path + ": no wall was found along the centerline");
-  // PNG rows go top-down and VTK's y goes up: flip, so that the start of the centerline is the top row.
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(grey.width, grey.height, 1);
-  auto pixels = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  pixels->SetNumberOfComponents(3);
-  pixels->SetNumberOfTuples(vtkIdType(grey.width) * grey.height);
-  for (int y = 0; y < grey.height; ++y)
-    for (int x = 0; x < grey.width; ++x) {
-      const uint8_t level = grey.pixels[size_t(y) * grey.width + x];
-      const bool bridged = grey.bridged[size_t(y)] != 0;
-      for (int c = 0; c < 3; ++c)
-        pixels->SetTypedComponent(vtkIdType(grey.height - 1 - y) * grey.width + x, c,
-                                  bridged ? medial::kBridgedRgb[c] : level);
-    }
-  image->GetPointData()->SetScalars(pixels);
+  const vtkSmartPointer<vtkImageData> image = medial::terrainFigure(terrain);
+  if (!image) throw Failure(path + ": no wall was found along the centerline");
   writeOrFail(path, [&](const std::string& temporary, std::string& error) {
     auto writer = vtkSmartPointer<vtkPNGWriter>::New();
     writer->SetInputData(image);

@@ -629,8 +629,18 @@ TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
   auto terrain = vtkSmartPointer<vtkPNGReader>::New();
   terrain->SetFileName((dir + "/terrain.png").c_str());
   terrain->Update();
-  EXPECT_EQ(terrain->GetOutput()->GetDimensions()[0], 72);
-  EXPECT_EQ(terrain->GetOutput()->GetDimensions()[1], rows);
+  // A figure, not the raw 72-ray grid: the wall at least one pixel per section with axes and a colour bar
+  // around it, in colour (viridis: green well above red and blue somewhere).
+  vtkImageData* figure = terrain->GetOutput();
+  EXPECT_GT(figure->GetDimensions()[0], 500);
+  EXPECT_GT(figure->GetDimensions()[1], rows);
+  int coloured = 0;
+  for (int y = 0; y < figure->GetDimensions()[1]; y += 4)
+    for (int x = 0; x < figure->GetDimensions()[0]; x += 4) {
+      const auto* rgb = static_cast<unsigned char*>(figure->GetScalarPointer(x, y, 0));
+      coloured += rgb[1] > rgb[0] + 40 && rgb[1] > rgb[2] - 20;
+    }
+  EXPECT_GT(coloured, 1000) << "the wall on a colour map";
   auto usage = runCommand(
       medialCommand("centerline " + dir + "/dicom -o " + dir + "/x.vtp --terrain " + dir + "/t.jpg"));
   EXPECT_EQ(usage.exitCode, 2) << usage.err;

@@ -2,6 +2,7 @@
 // the analytic axes, physical units through NIfTI, and errors on bad input.
 #include "TestPaths.h"
 
+#include "MedialAxisTicks.h"
 #include "MedialErrorCollector.h"
 #include "vtkMedialReader.h"
 #include "vtkMedialTskCenterline.h"
@@ -551,4 +552,22 @@ TEST(TskCenterlineFilter, RecordedStagesAreThePapersIntermediates) {
     return sum / double(std::max<vtkIdType>(line->GetNumberOfPoints(), 1));
   };
   EXPECT_LT(meanError(filter->GetOutput()), meanError(model));
+}
+
+// The charts' ticks are round: steps of 1, 2 or 5 times a power of ten, labels without stray digits (the
+// profile chart showed 13.2, 26.3, ...).
+TEST(AxisTicks, RoundStepsAndLabels) {
+  const medial::AxisTicks diameters = medial::roundTicks(0, 26.3, 5);
+  EXPECT_EQ(diameters.step, 5);
+  EXPECT_EQ(diameters.values, (std::vector<double>{0, 5, 10, 15, 20, 25}));
+  EXPECT_EQ(diameters.label(25), "25");
+  const medial::AxisTicks wall = medial::roundTicks(7.7, 12.3, 5);
+  EXPECT_EQ(wall.step, 1);
+  EXPECT_EQ(wall.values.front(), 8);
+  EXPECT_EQ(wall.values.back(), 12);
+  const medial::AxisTicks fine = medial::roundTicks(0.1, 0.33, 5);
+  EXPECT_DOUBLE_EQ(fine.step, 0.05);
+  EXPECT_EQ(fine.label(fine.values.front()), "0.10");
+  EXPECT_EQ(medial::roundTicks(0, 1000, 6).step, 200);
+  EXPECT_EQ(medial::roundTicks(3, 3, 5).values.size(), 1u);
 }
