@@ -13,8 +13,8 @@ namespace medial::cli {
 // be written.
 void writeProfileCsv(vtkTable* profile, const std::string& path);
 
-// The `WallDistance` image as an RGB PNG: grey levels (medial::terrainGrey), the rows of bridged sections
-// orange; rows are arc length from the top, columns the angle; atomically; throws Failure on error.
+// The `WallDistance` image as a PNG figure (medial::terrainFigure: colour map, angle and arc-length axes,
+// colour bar in mm, bridged sections orange), atomically; throws Failure on error.
 void writeTerrainPng(vtkImageData* terrain, const std::string& path);
 
 }  // namespace medial::cli

@@ -3,8 +3,11 @@
 #include "FilterDefaults.h"
 #include "ObjectList.h"
 #include "MedialTerrainImage.h"
+#include "ProfileChart.h"
+#include "TerrainView.h"
 #include "vtkMedialTskCenterline.h"
 
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -12,12 +15,6 @@
 #include <QPushButton>
 #include <QSlider>
 #include <QVBoxLayout>
-#include <QtCharts/QChart>
-#include <QtCharts/QChartView>
-#include <QtCharts/QLegendMarker>
-#include <QtCharts/QLineSeries>
-#include <QtCharts/QScatterSeries>
-#include <QtCharts/QValueAxis>
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -99,42 +96,23 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
       "TSK curve before centering (the paper's Figs. 3-10)");
   clearSeed();
 
-  minDiameter_ = new QLineSeries;
-  minDiameter_->setName("min diameter");
-  maxDiameter_ = new QLineSeries;
-  maxDiameter_->setName("max diameter");
-  marker_ = new QLineSeries;
-  marker_->setName("camera");
-  bridged_ = new QScatterSeries;
-  bridged_->setName("bridged (no lumen)");
-  bridged_->setColor(QColor(medial::kBridgedRgb[0], medial::kBridgedRgb[1], medial::kBridgedRgb[2]));
-  bridged_->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
-  bridged_->setMarkerSize(6);
-  bridged_->setBorderColor(Qt::transparent);
-  auto* chart = new QChart;
-  chart->addSeries(minDiameter_);
-  chart->addSeries(maxDiameter_);
-  chart->addSeries(marker_);
-  chart->addSeries(bridged_);
-  chart->createDefaultAxes();
-  chart->legend()->setAlignment(Qt::AlignBottom);
-  chart->legend()->markers(marker_).first()->setVisible(false);
-  chart->setTitle("Section diameters along the centerline");
-  chart->setMargins(QMargins(2, 2, 2, 2));
-  chart_ = new QChartView(chart, this);
-  chart_->setObjectName("profile");
-  chart_->setMinimumHeight(180);
-  chart_->setRenderHint(QPainter::Antialiasing);
-  extraLayout()->addWidget(chart_);
-  terrain_ = new QLabel(this);
-  terrain_->setObjectName("terrain");
-  terrain_->setMinimumHeight(120);
-  terrain_->setToolTip(
-      "Unfolded wall: distance from the axis over the arc length (across, as the profile) "
-      "and the angle (down); dark bands are folds (paper Fig. 15), orange: bridged across a gap");
+  profile_ = new ProfileChart(this);
+  extraLayout()->addWidget(profile_);
+  terrain_ = new TerrainView(this);
   extraLayout()->addWidget(new QLabel("Unfolded wall", this));
   extraLayout()->addWidget(terrain_);
+  connect(profile_, &ProfileChart::clicked, this, &CenterlinePanel::setPosition);
+  connect(terrain_, &TerrainView::clicked, this, &CenterlinePanel::setPosition);
+  buildFlyControls();
+  connect(playButton_, &QPushButton::toggled, this, &CenterlinePanel::play);
+  connect(positionSlider_, &QSlider::valueChanged, this, [this](int value) {
+    if (!fly_.empty()) setPosition(fly_.length() * value / 1000.0);
+  });
+  timer_.setInterval(40);
+  connect(&timer_, &QTimer::timeout, this, &CenterlinePanel::step);
+}
 
+void CenterlinePanel::buildFlyControls() {
   positionSlider_ = new QSlider(Qt::Horizontal, this);
   positionSlider_->setObjectName("flyPosition");
   positionSlider_->setRange(0, 1000);
@@ -142,27 +120,38 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
   playButton_ = new QPushButton("Play", this);
   playButton_->setObjectName("play");
   playButton_->setCheckable(true);
+  backward_ = new QCheckBox("Backward", this);
+  backward_->setObjectName("flyBackward");
+  backward_->setToolTip("Fly and look towards the start of the centerline (the way back of a colonoscopy)");
   speed_ = new QDoubleSpinBox(this);
   speed_->setObjectName("flySpeed");
   speed_->setRange(0.5, 500);
   speed_->setValue(20);
   speed_->setSuffix(" mm/s");
+  viewAngle_ = new QDoubleSpinBox(this);
+  viewAngle_->setObjectName("flyViewAngle");
+  viewAngle_->setRange(20, 140);
+  viewAngle_->setValue(80);
+  viewAngle_->setSuffix(" deg");
+  viewAngle_->setToolTip("The camera's vertical field of view (an endoscope: about 80 to 140 degrees)");
   auto* flyRow = new QHBoxLayout;
   flyRow->addWidget(playButton_);
+  flyRow->addWidget(backward_);
   flyRow->addWidget(speed_);
   auto* flyForm = new QFormLayout;
   flyForm->addRow("Fly-through", flyRow);
+  flyForm->addRow("Field of view", viewAngle_);
   flyForm->addRow("Position", positionSlider_);
   extraLayout()->addLayout(flyForm);
   for (QWidget* w : {static_cast<QWidget*>(positionSlider_), static_cast<QWidget*>(playButton_)})
     w->setEnabled(false);
-
-  connect(playButton_, &QPushButton::toggled, this, &CenterlinePanel::play);
-  connect(positionSlider_, &QSlider::valueChanged, this, [this](int value) {
-    if (!fly_.empty()) setPosition(fly_.length() * value / 1000.0);
+  // A changed direction or angle re-aims the camera where it stands (once a line is there).
+  connect(backward_, &QCheckBox::toggled, this, [this] {
+    if (!fly_.empty()) setPosition(position_);
   });
-  timer_.setInterval(40);
-  connect(&timer_, &QTimer::timeout, this, &CenterlinePanel::step);
+  connect(viewAngle_, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this] {
+    if (!fly_.empty()) setPosition(position_);
+  });
 }
 
 void CenterlinePanel::setSeed(const std::array<double, 3>& seed) {
@@ -229,8 +218,10 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
   showBridges(result, line);
   objects()->setInterest(result, true);
   fly_.setPath(line);
-  buildProfile(vtkTable::SafeDownCast(tsk->GetOutputDataObject(1)));
-  showTerrain(vtkImageData::SafeDownCast(tsk->GetOutputDataObject(2)));
+  profile_->setProfile(vtkTable::SafeDownCast(tsk->GetOutputDataObject(1)));
+  terrain_->setTerrain(vtkImageData::SafeDownCast(tsk->GetOutputDataObject(2)));
+  position_ = 0;
+  showPosition();  // the camera stays where the user left it until they fly
   for (QWidget* w : {static_cast<QWidget*>(positionSlider_), static_cast<QWidget*>(playButton_)})
     w->setEnabled(!fly_.empty());
   emit message(QString("Centerline: %1 points, %2 mm, %3 structure voxels")
@@ -259,91 +250,47 @@ void CenterlinePanel::showBridges(SceneObject* object, vtkPolyData* line) {
   mapper->ScalarVisibilityOn();
 }
 
-void CenterlinePanel::buildProfile(vtkTable* profile) {
-  // Min and max diameter of the perpendicular sections over the arc length (NaN rows skipped).
-  minDiameter_->clear();
-  maxDiameter_->clear();
-  bridged_->clear();
-  double top = 1;
-  auto* arc = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("ArcLength") : nullptr);
-  auto* low = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("MinDiameter") : nullptr);
-  auto* high = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("MaxDiameter") : nullptr);
-  auto* gap = vtkDataArray::SafeDownCast(profile ? profile->GetColumnByName("Bridged") : nullptr);
-  if (arc && low && high) {
-    QList<QPointF> lows, highs, bridges;
-    std::vector<double> maxima;
-    for (vtkIdType i = 0; i < arc->GetNumberOfTuples(); ++i) {
-      const double s = arc->GetComponent(i, 0), a = low->GetComponent(i, 0), b = high->GetComponent(i, 0);
-      if (gap && gap->GetComponent(i, 0) != 0) bridges.append(QPointF(s, 0));
-      if (!std::isfinite(a) || !std::isfinite(b)) continue;
-      lows.append(QPointF(s, a));
-      highs.append(QPointF(s, b));
-      maxima.push_back(b);
-    }
-    minDiameter_->replace(lows);
-    maxDiameter_->replace(highs);
-    bridged_->replace(bridges);
-    // The axis ends at the 95th percentile of the max diameter: oblique cuts at sharp bends spike it.
-    if (!maxima.empty()) {
-      std::sort(maxima.begin(), maxima.end());
-      top = std::max(top, maxima[maxima.size() * 95 / 100]);
-    }
+int CenterlinePanel::profilePoints() const { return profile_->points(); }
+
+int CenterlinePanel::bridgedProfilePoints() const { return profile_->bridgedPoints(); }
+
+const QImage& CenterlinePanel::terrainImage() const { return terrain_->image(); }
+
+void CenterlinePanel::showPosition() {
+  {
+    const QSignalBlocker block(positionSlider_);
+    positionSlider_->setValue(
+        fly_.empty() ? 0 : static_cast<int>(std::lround(1000.0 * position_ / fly_.length())));
   }
-  const auto horizontal = chart_->chart()->axes(Qt::Horizontal),
-             vertical = chart_->chart()->axes(Qt::Vertical);
-  if (!horizontal.isEmpty()) {
-    horizontal.first()->setRange(0, std::max(fly_.length(), 1.0));
-    horizontal.first()->setTitleText("arc length (mm)");
-  }
-  if (!vertical.isEmpty()) {
-    vertical.first()->setRange(0, 1.1 * top);
-    vertical.first()->setTitleText("diameter (mm)");
-  }
-  setPosition(0);
+  profile_->setMarker(position_);
+  terrain_->setMarker(position_);
 }
-
-void CenterlinePanel::showTerrain(vtkImageData* terrain) {
-  // The unfolded wall with the arc length across (as the profile's axis) and the angle down, stretched
-  // to the panel's width.
-  const medial::TerrainGrey grey = medial::terrainGrey(terrain);
-  if (grey.pixels.empty()) {
-    terrain_->clear();
-    terrainImage_ = QImage();
-    return;
-  }
-  QImage image(grey.height, grey.width, QImage::Format_RGB32);  // sections x angles
-  const QRgb bridged = qRgb(medial::kBridgedRgb[0], medial::kBridgedRgb[1], medial::kBridgedRgb[2]);
-  for (int angle = 0; angle < grey.width; ++angle) {
-    auto* row = reinterpret_cast<QRgb*>(image.scanLine(angle));
-    for (int section = 0; section < grey.height; ++section) {
-      const int level = grey.pixels[size_t(section) * grey.width + angle];
-      row[section] = grey.bridged[size_t(section)] ? bridged : qRgb(level, level, level);
-    }
-  }
-  terrainImage_ = image;
-  terrain_->setPixmap(QPixmap::fromImage(image.scaled(std::max(terrain_->width(), 100), 120)));
-}
-
-int CenterlinePanel::profilePoints() const { return static_cast<int>(maxDiameter_->count()); }
-
-int CenterlinePanel::bridgedProfilePoints() const { return static_cast<int>(bridged_->count()); }
 
 void CenterlinePanel::setPosition(double arcLength) {
   if (fly_.empty()) return;
   position_ = std::clamp(arcLength, 0.0, fly_.length());
-  {
-    const QSignalBlocker block(positionSlider_);
-    positionSlider_->setValue(static_cast<int>(std::lround(1000.0 * position_ / fly_.length())));
-  }
-  const auto vertical = chart_->chart()->axes(Qt::Vertical);
-  const double top = vertical.isEmpty() ? 1.0 : static_cast<QValueAxis*>(vertical.first())->max();
-  marker_->replace(QList<QPointF>{{position_, 0}, {position_, top}});
-  emit flyTo(fly_.eye(position_), fly_.focal(position_), fly_.up(position_));
+  showPosition();
+  emit flyTo(fly_.eye(position_), fly_.focal(position_, backward()), fly_.up(position_, backward()));
+}
+
+void CenterlinePanel::setBackward(bool backward) { backward_->setChecked(backward); }
+
+bool CenterlinePanel::backward() const { return backward_->isChecked(); }
+
+void CenterlinePanel::setViewAngle(double degrees) { viewAngle_->setValue(degrees); }
+
+double CenterlinePanel::viewAngle() const { return viewAngle_->value(); }
+
+void CenterlinePanel::applyCamera(vtkCamera* camera) const {
+  fly_.apply(camera, position_, backward(), viewAngle());
 }
 
 void CenterlinePanel::play(bool on) {
   if (on && !fly_.empty()) {
-    if (position_ >= fly_.length()) setPosition(0);
+    // At the end it goes (a forward flight at the end starts again from the start, a backward one at
+    // the start from the end).
+    if (!backward() && position_ >= fly_.length()) setPosition(0);
+    if (backward() && position_ <= 0) setPosition(fly_.length());
     timer_.start();
   } else {
     timer_.stop();
@@ -354,8 +301,9 @@ void CenterlinePanel::play(bool on) {
 }
 
 void CenterlinePanel::step() {
-  setPosition(position_ + speed_->value() * timer_.interval() / 1000.0);
-  if (position_ >= fly_.length()) play(false);
+  const double step = speed_->value() * timer_.interval() / 1000.0;
+  setPosition(position_ + (backward() ? -step : step));
+  if (backward() ? position_ <= 0 : position_ >= fly_.length()) play(false);
 }
 
 }  // namespace medial::gui

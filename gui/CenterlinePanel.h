@@ -1,7 +1,8 @@
 // CenterlinePanel: TSK centerline (vtkMedialTskCenterline) from a volume: a label or a threshold, a seed
-// clicked in a slice view; then the sections' min/max diameter along the arc length (Qt Charts), the
-// unfolded wall, and a fly-through (play/pause, speed, position slider) that moves the 3-D camera inside
-// the tube.
+// clicked in a slice view; then the virtual-colonoscopy tools: the sections' diameter profile
+// (ProfileChart), the unfolded wall (TerrainView), and a fly-through (play/pause, forward or backward,
+// speed, view angle, position slider) that moves the 3-D camera inside the tube; a click on the profile or
+// the wall flies there. A run leaves the camera where the user left it.
 #pragma once
 
 #include "FilterPanel.h"
@@ -13,17 +14,18 @@
 #include <array>
 #include <optional>
 
-class QChartView;
+class QCheckBox;
 class QLabel;
 class QPushButton;
 class QSlider;
 class QDoubleSpinBox;
-class QLineSeries;
-class QScatterSeries;
+class vtkCamera;
 class vtkImageData;
-class vtkTable;
 
 namespace medial::gui {
+
+class ProfileChart;
+class TerrainView;
 
 class CenterlinePanel : public FilterPanel {
   Q_OBJECT
@@ -37,15 +39,24 @@ class CenterlinePanel : public FilterPanel {
   std::optional<std::array<double, 3>> seed() const { return seed_; }
 
   const FlyThrough& flyThrough() const { return fly_; }
-  // Fly-through position in mm along the centerline.
+  // Fly-through position in mm along the centerline (moves the camera there).
   void setPosition(double arcLength);
   double position() const { return position_; }
   void play(bool on);
   bool isPlaying() const { return timer_.isActive(); }
+  // Flying and looking towards the start of the line; the camera's view angle (degrees).
+  void setBackward(bool backward);
+  bool backward() const;
+  void setViewAngle(double degrees);
+  double viewAngle() const;
+  // Puts `camera` at the fly-through's position, direction and view angle.
+  void applyCamera(vtkCamera* camera) const;
   int profilePoints() const;
   // Sections on bridges across gaps (collapsed segments), marked along the profile's axis.
   int bridgedProfilePoints() const;
-  const QImage& terrainImage() const { return terrainImage_; }
+  const QImage& terrainImage() const;
+  ProfileChart* profile() const { return profile_; }
+  TerrainView* terrain() const { return terrain_; }
 
  signals:
   // The camera should stand at `eye` looking at `focal` (the slice views follow `eye`).
@@ -58,23 +69,21 @@ class CenterlinePanel : public FilterPanel {
   Steps steps(vtkAlgorithm* filter) override;
 
  private:
-  void buildProfile(vtkTable* profile);
+  void buildFlyControls();
   void showBridges(SceneObject* object, vtkPolyData* line);
-  void showTerrain(vtkImageData* terrain);
+  // The slider and the markers at position_, without moving the camera.
+  void showPosition();
   void step();
 
   std::optional<std::array<double, 3>> seed_;
   QLabel* seedLabel_ = nullptr;
-  QChartView* chart_ = nullptr;
-  QLineSeries* minDiameter_ = nullptr;
-  QLineSeries* maxDiameter_ = nullptr;
-  QLabel* terrain_ = nullptr;
-  QImage terrainImage_;
-  QLineSeries* marker_ = nullptr;
-  QScatterSeries* bridged_ = nullptr;
+  ProfileChart* profile_ = nullptr;
+  TerrainView* terrain_ = nullptr;
   QSlider* positionSlider_ = nullptr;
   QPushButton* playButton_ = nullptr;
+  QCheckBox* backward_ = nullptr;
   QDoubleSpinBox* speed_ = nullptr;
+  QDoubleSpinBox* viewAngle_ = nullptr;
   QTimer timer_;
   FlyThrough fly_;
   double position_ = 0;

@@ -89,27 +89,30 @@ double FlyThrough::radiusAt(double s) const { return radius_[indexAt(s)]; }
 
 Point FlyThrough::eye(double s) const { return at(s); }
 
-Point FlyThrough::focal(double s) const {
-  // Look about one diameter ahead (at least 2 % of the path); at the end, continue the last direction.
+Point FlyThrough::focal(double s, bool backward) const {
+  // Look about one diameter ahead (at least 2 % of the path); past an end, continue the path's direction
+  // there.
   const double ahead = std::max(2.0 * radiusAt(s), 0.02 * length());
-  if (s + ahead <= length()) return at(s + ahead);
-  const Point end = at(length()), before = at(std::max(0.0, length() - ahead));
-  const Point direction = normalized(minus(end, before));
+  const double sign = backward ? -1.0 : 1.0, target = s + sign * ahead;
+  if (target >= 0 && target <= length()) return at(target);
+  const double end = backward ? 0.0 : length();
+  const Point last = at(end), before = at(std::clamp(end - sign * ahead, 0.0, length()));
+  const Point direction = normalized(minus(last, before));
   const Point e = at(s);
   return {e[0] + ahead * direction[0], e[1] + ahead * direction[1], e[2] + ahead * direction[2]};
 }
 
-Point FlyThrough::up(double s) const {
-  return perpendicular(ups_[indexAt(s)], normalized(minus(focal(s), eye(s))));
+Point FlyThrough::up(double s, bool backward) const {
+  return perpendicular(ups_[indexAt(s)], normalized(minus(focal(s, backward), eye(s))));
 }
 
-void FlyThrough::apply(vtkCamera* camera, double s) const {
+void FlyThrough::apply(vtkCamera* camera, double s, bool backward, double viewAngle) const {
   if (empty()) return;
-  const Point e = eye(s), f = focal(s), u = up(s);
+  const Point e = eye(s), f = focal(s, backward), u = up(s, backward);
   camera->SetPosition(e.data());
   camera->SetFocalPoint(f.data());
   camera->SetViewUp(u.data());
-  camera->SetViewAngle(80.0);  // an endoscope's wide view
+  camera->SetViewAngle(viewAngle);
   // Near plane close to the eye: we are inside the tube.
   const double depth = std::sqrt(vtkMath::Distance2BetweenPoints(e.data(), f.data()));
   camera->SetClippingRange(std::max(1e-3 * length(), 0.01 * depth), std::max(length(), 10.0 * depth));

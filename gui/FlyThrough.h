@@ -23,12 +23,14 @@ class FlyThrough {
   bool empty() const { return points_.size() < 2; }
   double length() const { return arc_.empty() ? 0.0 : arc_.back(); }
 
-  // The camera pose at arc length s (clamped to the path).
+  // The camera pose at arc length s (clamped to the path), looking forward (towards the end of the path) or
+  // backward.
   Point eye(double s) const;
-  Point focal(double s) const;
-  Point up(double s) const;
-  // Puts the camera at arc length s: eye, focal point, up, a wide endoscope angle.
-  void apply(vtkCamera* camera, double s) const;
+  Point focal(double s, bool backward = false) const;
+  Point up(double s, bool backward = false) const;
+  // Puts the camera at arc length s: eye, focal point, up, and a view angle in degrees (an endoscope's wide
+  // 80 by default).
+  void apply(vtkCamera* camera, double s, bool backward = false, double viewAngle = 80.0) const;
 
  private:
   Point at(double s) const;

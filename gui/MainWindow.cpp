@@ -605,7 +605,7 @@ void MainWindow::onFlyTo(const std::array<double, 3>& eye, const std::array<doub
                          const std::array<double, 3>& /*up*/) {
   vtkCamera* camera = scene_->GetRenderer()->GetActiveCamera();
   camera->ParallelProjectionOff();
-  centerline_->flyThrough().apply(camera, centerline_->position());  // eye, focal, up and an endoscope angle
+  centerline_->applyCamera(camera);  // eye, focal, up and view angle of the fly-through
   if (shownVolume_) slices_->setCursor(eye);
   render();
 }

@@ -1,6 +1,7 @@
 #include "SliceView.h"
 
 #include <QMouseEvent>
+#include <QStringList>
 #include <QWheelEvent>
 
 #include <vtkActor.h>
@@ -11,11 +12,14 @@
 #include <vtkImageSlice.h>
 #include <vtkImageSliceMapper.h>
 #include <vtkInteractorStyleImage.h>
+#include <vtkMath.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
 #include <vtkGenericRenderWindowInteractor.h>
 
 #include <algorithm>
@@ -40,6 +44,19 @@ SliceView::SliceView(int axis, QWidget* parent) : VtkView(parent), axis_(axis) {
   crosshairActor_->GetProperty()->LightingOff();
   crosshairActor_->VisibilityOff();
   renderer_->AddActor(crosshairActor_);
+  const double anchors[4][2] = {{0.01, 0.5}, {0.99, 0.5}, {0.5, 0.99}, {0.5, 0.01}};
+  for (int k = 0; k < 4; ++k) {
+    vtkTextProperty* text = letters_[size_t(k)]->GetTextProperty();
+    text->SetFontSize(14);
+    text->BoldOn();
+    text->SetColor(1.0, 0.85, 0.1);  // the crosshair's yellow
+    text->SetJustification(k == 0 ? VTK_TEXT_LEFT : k == 1 ? VTK_TEXT_RIGHT : VTK_TEXT_CENTERED);
+    text->SetVerticalJustification(k == 2 ? VTK_TEXT_TOP : k == 3 ? VTK_TEXT_BOTTOM : VTK_TEXT_CENTERED);
+    letters_[size_t(k)]->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    letters_[size_t(k)]->SetPosition(anchors[k][0], anchors[k][1]);
+    letters_[size_t(k)]->VisibilityOff();
+    renderer_->AddActor2D(letters_[size_t(k)]);
+  }
   addRenderer(renderer_);
 
   auto style = vtkNew<vtkInteractorStyleImage>();  // middle-drag pan, Ctrl+wheel zoom
@@ -53,6 +70,7 @@ void SliceView::setVolume(vtkImageData* volume) {
   const bool show = volume != nullptr;
   slice_->SetVisibility(show);
   crosshairActor_->SetVisibility(show);
+  for (auto& letter : letters_) letter->SetVisibility(show);
   if (!volume) {
     update();
     return;
@@ -138,7 +156,42 @@ void SliceView::resetCamera() {
                  : std::max(bounds[2 * u + 1] - bounds[2 * u], bounds[2 * v + 1] - bounds[2 * v]);
   const double vertical = axis_ == 2 ? bounds[3] - bounds[2] : bounds[5] - bounds[4];
   camera->SetParallelScale(0.52 * std::max(vertical, horizontal / aspect));
+  updateOrientationLetters();
   update();
+}
+
+namespace {
+
+// The patient direction a world direction points to most, in ITK's LPS frame (+x left, +y posterior,
+// +z superior), as radiologists label the edges of a slice.
+const char* patientDirection(const double d[3]) {
+  int axis = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::fabs(d[i]) > std::fabs(d[axis])) axis = i;
+  const char* letters[3][2] = {{"R", "L"}, {"A", "P"}, {"I", "S"}};
+  return letters[axis][d[axis] > 0 ? 1 : 0];
+}
+
+}  // namespace
+
+void SliceView::updateOrientationLetters() {
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  double forward[3], up[3], right[3];
+  camera->GetDirectionOfProjection(forward);
+  camera->GetViewUp(up);
+  vtkMath::Cross(forward, up, right);  // the screen's right in the world
+  const double left[3] = {-right[0], -right[1], -right[2]}, down[3] = {-up[0], -up[1], -up[2]};
+  const double* directions[4] = {left, right, up, down};
+  for (int k = 0; k < 4; ++k) {
+    letters_[size_t(k)]->SetInput(patientDirection(directions[k]));
+    letters_[size_t(k)]->SetVisibility(volume_ != nullptr);
+  }
+}
+
+QString SliceView::orientationLetters() const {
+  QStringList letters;
+  for (const auto& letter : letters_) letters << letter->GetInput();
+  return letters.join(' ');
 }
 
 SliceView::Point SliceView::worldAt(const QPointF& position) const {

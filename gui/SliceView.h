@@ -1,6 +1,7 @@
 // SliceView: one 2-D view of a volume along an axis (axial, coronal, sagittal) with a crosshair at the
-// shared cursor. Left click or drag moves the cursor (and picks a seed); right drag changes window and
-// level; the wheel steps through slices; middle drag pans and Ctrl+wheel zooms.
+// shared cursor and the patient's directions at the edges (R/L, A/P, S/I, for ITK's LPS frame). Left click or
+// drag moves the cursor (and picks a seed); right drag changes window and level; the wheel steps through
+// slices; middle drag pans and Ctrl+wheel zooms.
 #pragma once
 
 #include "VtkView.h"
@@ -17,6 +18,7 @@ class vtkImageSlice;
 class vtkImageSliceMapper;
 class vtkPolyData;
 class vtkRenderer;
+class vtkTextActor;
 
 namespace medial::gui {
 
@@ -38,6 +40,8 @@ class SliceView : public VtkView {
   int sliceIndex() const;
   // The world point under a widget position, on the current slice plane.
   Point worldAt(const QPointF& position) const;
+  // The direction letters at the left, right, top and bottom edges, e.g. "R L A P" for the axial view.
+  QString orientationLetters() const;
 
  signals:
   void cursorPicked(const Point& point);  // left click or drag
@@ -52,6 +56,7 @@ class SliceView : public VtkView {
 
  private:
   void updateCrosshair();
+  void updateOrientationLetters();
 
   int axis_;
   vtkNew<vtkRenderer> renderer_;
@@ -59,6 +64,7 @@ class SliceView : public VtkView {
   vtkNew<vtkImageSlice> slice_;
   vtkNew<vtkPolyData> crosshair_;
   vtkNew<vtkActor> crosshairActor_;
+  std::array<vtkNew<vtkTextActor>, 4> letters_;  // left, right, top, bottom
   vtkSmartPointer<vtkImageData> volume_;
   Point cursor_{0, 0, 0};
   Qt::MouseButton dragging_ = Qt::NoButton;

@@ -6,6 +6,8 @@
 
 #include "CenterlinePanel.h"
 #include "IsoSurfacePanel.h"
+#include "ProfileChart.h"
+#include "TerrainView.h"
 #include "MainWindow.h"
 #include "ObjectList.h"
 #include "SketchPanel.h"
@@ -40,6 +42,8 @@
 #include <QTabWidget>
 #include <QTest>
 #include <QTimer>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -395,6 +399,71 @@ TEST_F(GuiWorkflow, CenterlineFromClickedSeedAndFlyThrough) {
   EXPECT_GT(panel->position(), 0.5 * fly.length());
 }
 
+// The virtual-colonoscopy tools as a user meets them: a run leaves the camera alone; a click on the unfolded
+// wall or the profile flies there; the profile reads out the section under the mouse and exports CSV and
+// PNG; the fly-through goes backward (looking back) and takes another field of view.
+TEST_F(GuiWorkflow, VirtualColonoscopyToolsMoveTheFlyThrough) {
+  open(dataPath("volumes/tubes/u.nii.gz"));
+  CenterlinePanel* panel = window->centerlinePanel();
+  window->filterTabs()->setCurrentIndex(2);
+  panel->form()->setValue("Selection", 0);  // label 1
+  vtkCamera* camera = window->scene()->GetRenderer()->GetActiveCamera();
+  camera->SetPosition(11, 222, 333);
+  ASSERT_TRUE(runThroughUi(panel)) << errors.join("\n").toStdString();
+  EXPECT_DOUBLE_EQ(camera->GetPosition()[1], 222) << "a run leaves the camera where the user left it";
+  const FlyThrough& fly = panel->flyThrough();
+  ASSERT_GT(fly.length(), 80);
+
+  // A click on the wall, 60 % along it.
+  TerrainView* wall = panel->terrain();
+  const double target = 0.6 * fly.length();
+  QTest::mouseClick(wall, Qt::LeftButton, Qt::NoModifier, QPoint(wall->xAt(target), 40));
+  EXPECT_NEAR(panel->position(), target, fly.length() / wall->width() + 1.0) << "the click flies there";
+  const auto eye = fly.eye(panel->position());
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(camera->GetPosition()[i], eye[i], 1e-6);
+
+  // The profile: a readout under the mouse, a click that flies, the exports.
+  ProfileChart* profile = panel->profile();
+  QChartView* chart = profile->view();
+  const QPointF at30 = chart->chart()->mapToPosition(QPointF(30, 5), chart->chart()->series().first());
+  const QPoint viewport = chart->mapFromScene(chart->chart()->mapToScene(at30));
+  QMouseEvent move(QEvent::MouseMove, QPointF(viewport), chart->viewport()->mapToGlobal(QPointF(viewport)),
+                   Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+  QApplication::sendEvent(chart->viewport(), &move);
+  EXPECT_TRUE(profile->readout().startsWith("arc 3")) << profile->readout().toStdString();
+  EXPECT_TRUE(profile->readout().contains("min")) << profile->readout().toStdString();
+  QTest::mouseClick(chart->viewport(), Qt::LeftButton, Qt::NoModifier, viewport);
+  EXPECT_NEAR(panel->position(), 30, 2.0);
+  QString error;
+  ASSERT_TRUE(profile->exportCsv(QString::fromStdString(dir + "/profile.csv"), error)) << error.toStdString();
+  std::ifstream csv(dir + "/profile.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "arc_length_mm,min_diameter_mm,max_diameter_mm,perimeter_mm,area_mm2,bridged");
+  ASSERT_TRUE(profile->exportPng(QString::fromStdString(dir + "/profile.png")));
+  EXPECT_GT(QImage(QString::fromStdString(dir + "/profile.png")).width(), 100);
+
+  // Backward: looking towards the start; playing goes back; the view angle follows its box.
+  panel->setBackward(true);
+  panel->setPosition(50);
+  const auto ahead = fly.eye(52), here = fly.eye(50);
+  double forward = 0;
+  for (int i = 0; i < 3; ++i) forward += (camera->GetFocalPoint()[i] - here[i]) * (ahead[i] - here[i]);
+  EXPECT_LT(forward, 0) << "backward looks back along the line";
+  panel->play(true);
+  QTest::qWait(300);
+  panel->play(false);
+  EXPECT_LT(panel->position(), 50);
+  panel->setViewAngle(110);
+  EXPECT_DOUBLE_EQ(camera->GetViewAngle(), 110.0);
+
+  // The slice views name the patient's directions at their edges (left, right, top, bottom; LPS data).
+  EXPECT_EQ(window->sliceViews()->view(2)->orientationLetters(), "R L A P") << "axial, from the feet";
+  EXPECT_EQ(window->sliceViews()->view(1)->orientationLetters(), "R L S I") << "coronal, from the front";
+  EXPECT_EQ(window->sliceViews()->view(0)->orientationLetters(), "A P S I") << "sagittal, from the left";
+  EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
+}
+
 TEST_F(GuiWorkflow, SketchFileAndDrawnStrokes) {
   open(dataPath("sketches/hand.txt"));
   SketchPanel* panel = window->sketchPanel();
@@ -589,6 +658,7 @@ TEST_F(GuiWorkflow, ColonPhantomDicomThresholdSeedCenterlineFlyThrough) {
   EXPECT_GT(screenshot("colon-inside"), 0.1) << "inside the colon its wall fills the view";
   EXPECT_FALSE(panel->terrainImage().isNull());
   window->grab().save(QString::fromStdString(dir + "/colon-window.png"));  // the whole window, to look at
+  panel->grab().save(QString::fromStdString(dir + "/colon-panel.png"));    // the profile and the wall
   EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
 }
 
