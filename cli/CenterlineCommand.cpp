@@ -67,7 +67,7 @@ const OptionSpec& centerlineOptions() {
   static const OptionSpec spec = {
       {"-o", "--output", "--label", "--threshold", "--seed", "--profile", "--terrain", "--section-spacing",
        "--section-rays", "--antecedent-width", "--centering", "--max-gap", "--min-part-volume", "--stages",
-       "--markups"},
+       "--markups", "--surface"},
       {"--fill-holes", "--keep-border-parts", "--branches", "--quiet", "--timings"}};
   return spec;
 }
@@ -81,10 +81,9 @@ const std::string& centerlineUsage() {
            "X,Y,Z]\n"
            "                         [--fill-holes] [--keep-border-parts] [--max-gap MM] [--min-part-volume "
            "MM3]\n"
-           "                         [--branches] [--antecedent-width W] [--centering N] [--markups "
-           "C.mrk.json]\n"
-           "                         [--profile P.csv] [--terrain T.png] [--section-spacing K] "
-           "[--section-rays N]\n"
+           "                         [--branches] [--antecedent-width W] [--centering N]\n"
+           "                         [--markups C.mrk.json] [--surface LUMEN.vtp] [--profile P.csv]\n"
+           "                         [--terrain T.png] [--section-spacing K] [--section-rays N]\n"
            "                         [--stages DIR] [--quiet] [--timings]\n\n"
            "Follows a tube (colon, vessel) in VOLUME (.nii .nii.gz .mha .mhd .nrrd .inr .vti or a DICOM "
            "folder) "
@@ -126,6 +125,9 @@ const std::string& centerlineUsage() {
            "  --markups CURVE.mrk.json  the centerline as 3D Slicer markups curves (one per branch, LPS, "
            "mm),\n"
            "                            with Radius per control point (Slicer: drag the file in)\n"
+           "  --surface LUMEN.vtp       the closed surface of the followed lumen (smoothed, at most 100,000\n"
+           "                            triangles), the centerline inside it: for fly-throughs and ghost "
+           "views\n"
            "  --profile PROFILE.csv     perpendicular sections every K mm: arc length, min/max diameter,\n"
            "                            perimeter (mm) and area (mm2) per row (paper section 4, Fig. 14)\n"
            "  --terrain TERRAIN.png     the unfolded wall: distance from the axis over angle (x) and arc\n"
@@ -193,6 +195,9 @@ int runCenterline(const std::vector<std::string>& args) {
   if (!terrain.empty() && fileExtension(terrain) != ".png")
     throw UsageError("--terrain must end in .png: " + terrain);
   if (!profile.empty() || !terrain.empty()) filter->ComputeSectionsOn();
+  const std::string surface = parsed.value("--surface");
+  if (parsed.has("--surface")) requireWritableExtension(surface, "--surface");
+  if (!surface.empty()) filter->ComputeSurfaceOn();
   const std::string markups = parsed.value("--markups");
   if (parsed.has("--markups") && fileExtension(markups) != ".json" && fileExtension(markups) != ".mrk.json")
     throw UsageError("--markups must end in .mrk.json: " + markups);
@@ -211,6 +216,7 @@ int runCenterline(const std::vector<std::string>& args) {
   command.timings().start("write");
   writePolyData(filter->GetOutput(), output);
   if (!markups.empty()) writeMarkups(filter->GetOutput(), markups);
+  if (!surface.empty()) writePolyData(vtkPolyData::SafeDownCast(filter->GetOutputDataObject(3)), surface);
   if (!profile.empty()) writeProfileCsv(vtkTable::SafeDownCast(filter->GetOutputDataObject(1)), profile);
   if (!terrain.empty()) writeTerrainPng(vtkImageData::SafeDownCast(filter->GetOutputDataObject(2)), terrain);
   if (!stages.empty()) writeStages(filter, stages);

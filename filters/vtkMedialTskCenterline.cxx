@@ -2,6 +2,7 @@
 
 #include "MedialProgress.h"
 #include "MedialMeshData.h"
+#include "MedialLumenSurface.h"
 #include "MedialVolumeData.h"
 #include "centerline/TskCenterline.h"
 
@@ -19,6 +20,8 @@
 #include <vtkSmartPointer.h>
 #include <vtkTable.h>
 #include <vtkUnsignedCharArray.h>
+
+#include <functional>
 
 vtkStandardNewMacro(vtkMedialTskCenterline);
 
@@ -94,7 +97,7 @@ void writeSections(const medial::TubeSections& sections, double spacing, vtkTabl
 }  // namespace
 
 vtkMedialTskCenterline::vtkMedialTskCenterline() {
-  this->SetNumberOfOutputPorts(3);
+  this->SetNumberOfOutputPorts(4);
   const medial::TskCenterlineParameters defaults;
   this->Mode = Selection(int(defaults.selection));
   this->Label = int(defaults.label);
@@ -113,6 +116,9 @@ vtkMedialTskCenterline::vtkMedialTskCenterline() {
   this->ComputeSections = defaults.computeSections;
   this->SectionSpacing = defaults.sections.spacing;
   this->SectionRays = defaults.sections.rays;
+  const medial::LumenSurfaceParameters surface;
+  this->SurfaceTriangles = surface.maximumTriangles;
+  this->SurfaceSmoothing = surface.smoothingIterations;
 }
 
 medial::TskCenterlineParameters vtkMedialTskCenterline::MakeParameters() const {
@@ -137,6 +143,7 @@ medial::TskCenterlineParameters vtkMedialTskCenterline::MakeParameters() const {
   p.minimumBranchLength = this->MinimumBranchLength;
   p.computeSections = this->ComputeSections;
   p.recordStages = this->RecordStages;
+  p.keepStructure = this->ComputeSurface;
   p.sections.spacing = this->SectionSpacing;
   p.sections.rays = this->SectionRays;
   return p;
@@ -165,6 +172,9 @@ void vtkMedialTskCenterline::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "ComputeSections: " << this->ComputeSections << "\n";
   os << indent << "SectionSpacing: " << this->SectionSpacing << "\n";
   os << indent << "SectionRays: " << this->SectionRays << "\n";
+  os << indent << "ComputeSurface: " << this->ComputeSurface << "\n";
+  os << indent << "SurfaceTriangles: " << this->SurfaceTriangles << "\n";
+  os << indent << "SurfaceSmoothing: " << this->SurfaceSmoothing << "\n";
 }
 
 void vtkMedialTskCenterline::SetLabel(int label) {
@@ -217,7 +227,9 @@ void vtkMedialTskCenterline::ClearSeed() {
 
 int vtkMedialTskCenterline::FillOutputPortInformation(int port, vtkInformation* info) {
   if (port == 0) return this->Superclass::FillOutputPortInformation(port, info);
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 1 ? "vtkTable" : "vtkImageData");
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 1   ? "vtkTable"
+                                             : port == 2 ? "vtkImageData"
+                                                         : "vtkPolyData");
   return 1;
 }
 
@@ -255,7 +267,11 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   const medial::TskCenterlineParameters p = this->MakeParameters();
   this->Stages.clear();
   this->StageLabels = nullptr;
-  const medial::TskCenterlineResult result = medial::tskCenterline(volume, p, medial::progressOf(this));
+  // With the surface, the centerline's share of the progress bar is 85 % (the surface takes about as long).
+  const std::function<bool(double)> progress = medial::progressOf(this);
+  const double share = p.keepStructure ? 0.85 : 1.0;
+  medial::TskCenterlineResult result =
+      medial::tskCenterline(volume, p, [&](double f) { return progress(share * f); });
   this->StructureVoxels = result.structureVoxels;
   this->PrimitiveCenterlinePoints = result.primitiveCenterlinePoints;
   this->StageSeconds = result.stageSeconds;
@@ -265,6 +281,20 @@ int vtkMedialTskCenterline::RequestData(vtkInformation*, vtkInformationVector** 
   if (!result.ok()) {
     medial::reportError(this, result.error);
     return 0;
+  }
+  if (p.keepStructure) {
+    medial::LumenSurfaceParameters surface;
+    surface.maximumTriangles = this->SurfaceTriangles;
+    surface.smoothingIterations = this->SurfaceSmoothing;
+    const vtkSmartPointer<vtkPolyData> lumen = medial::lumenSurface(
+        result.structure, surface, [&](double f) { return progress(share + (1 - share) * f); });
+    result.structure = {};  // the mask's memory back before the caller goes on
+    if (lumen->GetNumberOfPolys() == 0) {
+      medial::reportError(this, this->GetAbortExecute() ? medial::Error::cancelled()
+                                                        : medial::Error("the lumen has no surface"));
+      return 0;
+    }
+    vtkPolyData::GetData(outputVector, 3)->ShallowCopy(lumen);  // the other ports only once it is there
   }
   writePolylines(result, p.detectBranches, vtkPolyData::GetData(outputVector, 0));
   if (p.computeSections)

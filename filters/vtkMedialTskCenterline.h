@@ -16,6 +16,9 @@
  * wall); output port 2, the unfolded wall ("terrain"): a 2-D vtkImageData of SectionRays x sections with
  * point data `WallDistance` (mm from the axis), x = angle (spacing 360/rays degrees), y = arc length (spacing
  * SectionSpacing mm). Implements medial::tubeSections (src/centerline/TubeSections.h).
+ * With ComputeSurface: output port 3, the closed surface of the followed structure (the lumen: the kept
+ * part(s) after hole filling), smoothed and decimated to at most SurfaceTriangles triangles, in mm, with
+ * the centerline inside it (filters/MedialLumenSurface.h), for the fly-through and the ghost view.
  * Errors (empty output): not a 3-D image, a label that no voxel has, nothing left after the clean-up, a
  * seed outside the structure. Implements medial::tskCenterline (src/centerline/TskCenterline.h), whose
  * TskCenterlineParameters give every default.
@@ -124,6 +127,16 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   /// Rays (angles) per section, even (default 72: every 5 degrees).
   vtkSetClampMacro(SectionRays, int, 4, 3600);
   vtkGetMacro(SectionRays, int);
+  /// The lumen's closed surface on output port 3 (default off).
+  vtkSetMacro(ComputeSurface, bool);
+  vtkGetMacro(ComputeSurface, bool);
+  vtkBooleanMacro(ComputeSurface, bool);
+  /// The surface's triangle budget (default 100,000: about 60 frames per second in software rendering;
+  /// 0: not decimated) and its windowed-sinc smoothing passes (default 20, 0: the voxel staircase).
+  vtkSetClampMacro(SurfaceTriangles, int, 0, 100000000);
+  vtkGetMacro(SurfaceTriangles, int);
+  vtkSetClampMacro(SurfaceSmoothing, int, 0, 500);
+  vtkGetMacro(SurfaceSmoothing, int);
   /// Keep the paper's intermediate results along the (first) tube (default off; not with DetectBranches),
   /// then GetStageData of: "voxels" (the followed structure's voxel centres in phase I's total order, as
   /// vertices with point data Layer - Fig. 3 -, Cluster - Figs. 7-8 - and T, the order parameter),
@@ -188,6 +201,9 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   bool ComputeSections;
   double SectionSpacing;
   int SectionRays;
+  bool ComputeSurface = false;
+  int SurfaceTriangles;
+  int SurfaceSmoothing;
   bool RecordStages = false;
   std::map<std::string, vtkSmartPointer<vtkPolyData>> Stages;
   vtkSmartPointer<vtkImageData> StageLabels;

@@ -76,6 +76,10 @@ std::vector<Parameter> centerlineParameters() {
       MEDIAL_REAL_PARAMETER(
           f, SectionSpacing, "Section spacing k (mm)", 2,
           "Perpendicular sections every k mm for the profile and the unfolded wall (§4, Figs. 14-15)"),
+      // On here (the filter's default is off): the fly-through and the ghost view need the lumen's wall.
+      P::toggle("ComputeSurface", "Lumen surface", true,
+                "The closed surface of the followed lumen (smoothed, at most SurfaceTriangles triangles) as "
+                "an object of its own: the wall the fly-through flies inside"),
   };
 }
 
@@ -191,6 +195,7 @@ vtkSmartPointer<vtkAlgorithm> CenterlinePanel::makeFilter(SceneObject* input, QS
   filter->ComputeSectionsOn();
   filter->SetSectionSpacing(form()->value("SectionSpacing"));
   filter->SetRecordStages(recordSteps());
+  filter->SetComputeSurface(form()->isOn("ComputeSurface"));
   return filter;
 }
 
@@ -217,6 +222,7 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
   if (!result) return;
   showBridges(result, line);
   objects()->setInterest(result, true);
+  showLumen(input, vtkPolyData::SafeDownCast(tsk->GetOutputDataObject(3)));
   fly_.setPath(line);
   profile_->setProfile(vtkTable::SafeDownCast(tsk->GetOutputDataObject(1)));
   terrain_->setTerrain(vtkImageData::SafeDownCast(tsk->GetOutputDataObject(2)));
@@ -229,6 +235,18 @@ void CenterlinePanel::collect(vtkAlgorithm* filter, SceneObject* input, double) 
                    .arg(fly_.length(), 0, 'f', 1)
                    .arg(tsk->GetStructureVoxels()));
   for (int i = 0; i < tsk->GetNumberOfNotes(); ++i) emit message(QString("Centerline: ") + tsk->GetNote(i));
+}
+
+void CenterlinePanel::showLumen(SceneObject* input, vtkPolyData* surface) {
+  // The lumen's wall, the context of the ghost view; the volume's 3-D slices would hide it.
+  const QString name = input->name + " lumen";
+  if (SceneObject* previous = objects()->findByName(name)) objects()->remove(previous);
+  if (!surface || surface->GetNumberOfPolys() == 0) return;
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(surface);
+  if (!objects()->add(name, copy)) return;
+  objects()->setVisible(input, false);
+  emit message(QString("Centerline: lumen surface of %1 triangles").arg(copy->GetNumberOfPolys()));
 }
 
 void CenterlinePanel::showBridges(SceneObject* object, vtkPolyData* line) {

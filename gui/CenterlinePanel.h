@@ -71,6 +71,7 @@ class CenterlinePanel : public FilterPanel {
  private:
   void buildFlyControls();
   void showBridges(SceneObject* object, vtkPolyData* line);
+  void showLumen(SceneObject* input, vtkPolyData* surface);
   // The slider and the markers at position_, without moving the camera.
   void showPosition();
   void step();

@@ -535,6 +535,7 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
     markBridgedSections(result.branches.front(), result.sections);
     lap("sections");
   }
+  if (parameters.keepStructure) result.structure = std::move(volume);
   report(1.0);
   return result;
 }

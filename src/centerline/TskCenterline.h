@@ -8,6 +8,7 @@
 #pragma once
 
 #include "common/Error.h"
+#include "centerline/BinaryVolume.h"
 #include "centerline/TskAxis.h"
 #include "centerline/TubeSections.h"
 
@@ -66,6 +67,8 @@ struct TskCenterlineParameters {
   SectionParameters sections;
   // The paper's intermediate results (TskCenterlineResult::stages), along one tube (not with branches).
   bool recordStages = false;
+  // The followed structure's voxels (TskCenterlineResult::structure), e.g. for the lumen's surface.
+  bool keepStructure = false;
 };
 
 // What the paper draws on the way (WSCG 2008 Figs. 3-10), in physical coordinates (mm).
@@ -96,6 +99,9 @@ struct TskCenterlineResult {
   std::vector<double> bridgedGaps;    // mm, the length of each bridge outside the structure
   std::vector<std::string> notes;     // what a user should know: parts left out, gaps too long
   TskStages stages;                   // with recordStages, along one tube
+  // With keepStructure: the followed part(s) after clean-up and hole filling, in their box grown by one
+  // voxel (its outer layer is background unless the structure touches the volume's border).
+  BinaryVolume structure;
   // Seconds of each stage, in order: selection (runs of selected voxels), cleanup (the part to follow in
   // its box, holes), axis (phases I and II, and the branches), sections.
   std::vector<std::pair<std::string, double>> stageSeconds;

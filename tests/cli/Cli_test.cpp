@@ -533,13 +533,22 @@ TEST(Cli, CenterlineOfAPhantomAndItsErrors) {
 }
 
 TEST(Cli, CenterlineProfileAndTerrainOfTheColonPhantom) {
-  // The DICOM colon phantom: sections every 2 mm as CSV, the unfolded wall as PNG.
+  // The DICOM colon phantom: sections every 2 mm as CSV, the unfolded wall as PNG, the lumen's surface.
   const std::string dir = scratchDir("cli-colon");
   ASSERT_TRUE(medial::test::makeColonPhantom(dir + "/dicom"));
-  auto r = runCommand(medialCommand(
-      "centerline " + dir + "/dicom -o " + dir + "/colon.vtp --threshold -1024:-600 " + "--profile " + dir +
-      "/profile.csv --terrain " + dir + "/terrain.png " + "--section-spacing 2 --quiet"));
+  auto r = runCommand(medialCommand("centerline " + dir + "/dicom -o " + dir +
+                                    "/colon.vtp --threshold -1024:-600 " + "--profile " + dir +
+                                    "/profile.csv --terrain " + dir + "/terrain.png " +
+                                    "--section-spacing 2 --surface " + dir + "/lumen.vtp --quiet"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto lumen = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  lumen->SetFileName((dir + "/lumen.vtp").c_str());
+  lumen->Update();
+  EXPECT_GT(lumen->GetOutput()->GetNumberOfPolys(), 10000) << "--surface writes the lumen's surface";
+  EXPECT_EQ(runCommand(medialCommand("centerline " + dir + "/dicom -o " + dir + "/x.vtp --surface " + dir +
+                                     "/lumen.txt"))
+                .exitCode,
+            2);
   std::ifstream csv(dir + "/profile.csv");
   std::string header, row;
   std::getline(csv, header);

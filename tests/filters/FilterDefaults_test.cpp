@@ -231,6 +231,10 @@ TEST(FilterDefaults, TskCenterlineCarriesEveryTskCenterlineParameter) {
   MEDIAL_PARAMETER(c, SectionSpacing, sections.spacing, c.defaults.sections.spacing * 2);
   MEDIAL_PARAMETER(c, SectionRays, sections.rays, c.defaults.sections.rays * 2);
   MEDIAL_PARAMETER(c, RecordStages, recordStages, true);
+  MEDIAL_PARAMETER(c, ComputeSurface, keepStructure, true);
+  // The lumen surface's own settings (medial::LumenSurfaceParameters, applied by the filter).
+  c.notAParameter("SurfaceTriangles");
+  c.notAParameter("SurfaceSmoothing");
   c.verify("vtkMedialTskCenterline.h");
 }
 
