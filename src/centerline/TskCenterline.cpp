@@ -2,6 +2,7 @@
 
 #include "centerline/Branches.h"
 #include "centerline/GapBridges.h"
+#include "centerline/Junctions.h"
 #include "centerline/StructureRuns.h"
 #include "centerline/TubularClusters.h"
 #include "common/Stopwatch.h"
@@ -520,6 +521,7 @@ TskCenterlineResult tskCenterline(const ScalarVolume& input, const TskCenterline
     result.error = "the structure is too small for a centerline";
     return result;
   }
+  if (parameters.detectBranches) placeJunctions(volume, result.branches, result.parent);
   result.junction = junctionPoints(result.branches, result.parent);
   if (result.partsFollowed > 1)
     for (Centerline& line : result.branches) refineBridges(volume, line);
