@@ -326,6 +326,8 @@ Centerline tskAxis(const BinaryVolume& volume, const TubularClusters& clusters, 
   // moved towards the centre of its perpendicular section, the moves smoothed along the curve).
   if (p.centeringIterations > 0) {
     curve = centerInSections(volume, curve, 36, p.centeringIterations);
+    curve = extendToCaps(volume, std::move(curve));
+    length.assign(curve.size(), 0.0);
     for (size_t k = 1; k < curve.size(); ++k) length[k] = length[k - 1] + (curve[k] - curve[k - 1]).norm();
   }
   const double step = p.sampleSpacing > 0 ? p.sampleSpacing : volume.spacing.minCoeff();

@@ -329,4 +329,58 @@ std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::v
   return symmetricAverage(axis, volume.spacing.maxCoeff());  // +-1 voxel
 }
 
+namespace {
+
+// The axis grown from its last point towards the cap ahead (see extendToCaps), the new points only.
+std::vector<Eigen::Vector3d> growTowardsCap(const SectionRays& caster,
+                                            const std::vector<Eigen::Vector3d>& axis, int rays) {
+  std::vector<Eigen::Vector3d> grown;
+  const double step = caster.volume.spacing.minCoeff();
+  const std::vector<double> arc = arcLengths(axis);
+  // The end's direction over the last two voxels of arc length (or the whole line when shorter).
+  size_t back = axis.size() - 1;
+  while (back > 0 && arc.back() - arc[back] < 2 * step) --back;
+  if (back == axis.size() - 1) return grown;
+  Eigen::Vector3d direction = (axis.back() - axis[back]).normalized(), at = axis.back();
+  double travelled = 0, median = 0;
+  for (int k = 0; k < 100000; ++k) {
+    Eigen::Vector3d next = at + step * direction;
+    const Eigen::Vector3d normal = direction.unitOrthogonal(), binormal = direction.cross(normal);
+    bool centred = true;
+    for (int refine = 0; refine < 3 && centred; ++refine) {  // the centroid of the section, found again
+      Eigen::Vector2d centroid;
+      centred = sectionCentroid(caster.walls(next, normal, binormal, rays), rays, centroid, median) ==
+                Section::Centred;
+      if (centred)
+        next += std::min(1.0, 0.5 * median / std::max(centroid.norm(), 1e-12)) *
+                (centroid.x() * normal + centroid.y() * binormal);
+    }
+    if (!centred || !(median > 0)) break;
+    // One radius before the cap: the wall straight ahead nearer than the section's median radius.
+    const double ahead =
+        wallDistance(caster.volume, caster.toIndex, next, direction, caster.step, caster.limit);
+    if (!(ahead >= median) || travelled > 10 * median) break;
+    direction = (0.7 * direction + 0.3 * (next - at).normalized()).normalized();
+    travelled += (next - at).norm();
+    grown.push_back(next);
+    at = next;
+  }
+  return grown;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> extendToCaps(const BinaryVolume& volume, std::vector<Eigen::Vector3d> axis,
+                                          int rays) {
+  if (axis.size() < 2) return axis;
+  const SectionRays caster(volume, 0.0);
+  const std::vector<Eigen::Vector3d> after = growTowardsCap(caster, axis, rays);
+  axis.insert(axis.end(), after.begin(), after.end());
+  std::reverse(axis.begin(), axis.end());
+  const std::vector<Eigen::Vector3d> before = growTowardsCap(caster, axis, rays);
+  axis.insert(axis.end(), before.begin(), before.end());
+  std::reverse(axis.begin(), axis.end());
+  return axis;
+}
+
 }  // namespace medial

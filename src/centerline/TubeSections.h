@@ -46,4 +46,12 @@ TubeSections tubeSections(const BinaryVolume& volume, const std::vector<Eigen::V
 std::vector<Eigen::Vector3d> centerInSections(const BinaryVolume& volume, std::vector<Eigen::Vector3d> axis,
                                               int rays = 36, int iterations = 3, double smoothing = 2.0);
 
+// The axis grown at both ends towards the caps of its tube, as far as one local radius before each (the TSK
+// curve stops where its end clusters turn lopsided, up to 3 radii short on a wide colon): a point a voxel
+// ahead along the end's direction, moved to the centroid of its perpendicular section (three times), taken
+// while the wall straight ahead lies farther than the section's median radius; the direction follows the
+// new points. Ends at the volume's border stop there. Returns the longer axis.
+std::vector<Eigen::Vector3d> extendToCaps(const BinaryVolume& volume, std::vector<Eigen::Vector3d> axis,
+                                          int rays = 36);
+
 }  // namespace medial
