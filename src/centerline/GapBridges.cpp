@@ -87,6 +87,17 @@ const Eigen::Vector3d& endPoint(const std::vector<Centerline>& parts, const End&
   return e.last ? points.back() : points.front();
 }
 
+// The unit direction out of the line at an end, over its last `reach` mm (or the whole line when shorter).
+Eigen::Vector3d outward(const std::vector<Centerline>& parts, const End& e, double reach = 3.0) {
+  const Centerline& line = parts[size_t(e.part)];
+  const size_t n = line.points.size(), end = e.last ? n - 1 : 0;
+  size_t k = end;
+  while (std::abs(line.arcLength[k] - line.arcLength[end]) < reach && (e.last ? k > 0 : k + 1 < n))
+    e.last ? --k : ++k;
+  const Eigen::Vector3d d = line.points[end] - line.points[k];
+  return d.norm() > 0 ? Eigen::Vector3d(d.normalized()) : Eigen::Vector3d::UnitZ();
+}
+
 }  // namespace
 
 PartChains chainParts(const std::vector<Centerline>& parts, int startPart, double maxGap,
@@ -132,7 +143,9 @@ PartChains chainParts(const std::vector<Centerline>& parts, int startPart, doubl
         }
       const double reach = maxGap + 2.0 * (widest[size_t(tail.part)] + widest[size_t(best.part)]);
       Bridge across;
-      if (nearest <= reach) across = bridge(at, endPoint(parts, best));
+      if (nearest <= reach)
+        across = bridge(
+            {at, outward(parts, {tail.part, !tail.reversed}), endPoint(parts, best), -outward(parts, best)});
       if (!(across.gap <= maxGap)) {
         gapBefore = std::isfinite(across.gap) ? across.gap : nearest;
         break;
@@ -144,6 +157,20 @@ PartChains chainParts(const std::vector<Centerline>& parts, int startPart, doubl
     result.chains.push_back(std::move(chain));
   }
   return result;
+}
+
+std::vector<Eigen::Vector3d> hermiteCurve(const Eigen::Vector3d& from, const Eigen::Vector3d& fromDirection,
+                                          const Eigen::Vector3d& to, const Eigen::Vector3d& toDirection,
+                                          double spacing, double tangentScale) {
+  const double chord = (to - from).norm() * tangentScale;
+  const int n = std::max(1, int(std::lround((to - from).norm() / std::max(spacing, 1e-9))));
+  std::vector<Eigen::Vector3d> points;
+  for (int s = 1; s < n; ++s) {
+    const double t = double(s) / n, t2 = t * t, t3 = t2 * t;
+    points.push_back((2 * t3 - 3 * t2 + 1) * from + (t3 - 2 * t2 + t) * chord * fromDirection +
+                     (-2 * t3 + 3 * t2) * to + (t3 - t2) * chord * toDirection);
+  }
+  return points;
 }
 
 std::vector<Eigen::Vector3d> bridgePoints(const Eigen::Vector3d& from, const Eigen::Vector3d& to,

@@ -1,5 +1,7 @@
 #include "centerline/Junctions.h"
 
+#include "centerline/GapBridges.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -17,22 +19,6 @@ double medianRadius(const Centerline& line, double from, double to) {
 }
 
 }  // namespace
-
-// Points of the cubic Hermite curve from `a` (tangent `ta`) to `b` (tangent `tb`), unit tangents scaled
-// by the chord, every `step` mm, both ends left out.
-static std::vector<Eigen::Vector3d> hermite(const Eigen::Vector3d& a, const Eigen::Vector3d& ta,
-                                            const Eigen::Vector3d& b, const Eigen::Vector3d& tb,
-                                            double step) {
-  const double chord = (b - a).norm();
-  const int n = std::max(2, int(std::ceil(chord / step)));
-  std::vector<Eigen::Vector3d> points;
-  for (int s = 1; s < n; ++s) {
-    const double t = double(s) / n, t2 = t * t, t3 = t2 * t;
-    points.push_back((2 * t3 - 3 * t2 + 1) * a + (t3 - 2 * t2 + t) * chord * ta + (-2 * t3 + 3 * t2) * b +
-                     (t3 - t2) * chord * tb);
-  }
-  return points;
-}
 
 void placeJunctions(const BinaryVolume& volume, std::vector<Centerline>& branches,
                     const std::vector<int>& parents) {
@@ -66,7 +52,7 @@ void placeJunctions(const BinaryVolume& volume, std::vector<Centerline>& branche
       Centerline& child = branches[c];
       const Eigen::Vector3d start = child.points.front();
       const Eigen::Vector3d own = (child.points[2] - child.points[0]).normalized();
-      std::vector<Eigen::Vector3d> path = hermite(junction, along, start, own, step);
+      std::vector<Eigen::Vector3d> path = hermiteCurve(junction, along, start, own, step);
       const std::vector<double> distance = distanceAtPoints(volume, path);
       Centerline joined;
       for (size_t k = 0; k < path.size(); ++k) {

@@ -265,12 +265,21 @@ std::vector<int> junctionPoints(const std::vector<Centerline>& branches, const s
   return junction;
 }
 
-// A bridge from `from` to `to` (physical): the least-cost path through the volume in the box around the
-// two ends grown by half their distance (at least 5 mm), smoothed and resampled at `spacing`; its gap is
-// the length of the path's steps outside the selection (cost above 1).
+double polylineLength(const Eigen::Vector3d& from, const std::vector<Eigen::Vector3d>& inner,
+                      const Eigen::Vector3d& to) {
+  double length = 0;
+  Eigen::Vector3d at = from;
+  for (const Eigen::Vector3d& p : inner) length += (p - at).norm(), at = p;
+  return std::max(length + (to - at).norm(), 1e-9);
+}
+
+// A bridge across a gap (GapBridges.h): the least-cost path through the volume in the box around the two
+// ends grown by half their distance (at least 5 mm), smoothed and resampled at `spacing`; or, when it costs
+// at most a quarter more, the Hermite curve continuing both ends' directions (in a collapsed segment the CT
+// holds nothing that marks the tube's course, and the least-cost path cuts the bend as a chord, 3 voxels off
+// a helix's axis). Its gap is the length of the bridge outside the selection (cost above 1).
 Bridge bridgeThroughVolume(const ScalarVolume& input, const TskCenterlineParameters& p,
-                           const BinaryVolume& frame, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
-                           double spacing) {
+                           const BinaryVolume& frame, const BridgeEnds& ends, double spacing) {
   auto voxelOf = [&](const Eigen::Vector3d& point) {
     const Eigen::Vector3d c = frame.continuousIndex(point);
     std::array<int, 3> v{};
@@ -278,6 +287,7 @@ Bridge bridgeThroughVolume(const ScalarVolume& input, const TskCenterlineParamet
       v[size_t(a)] = std::clamp(int(std::lround(c[a])), 0, frame.size[size_t(a)] - 1);
     return v;
   };
+  const Eigen::Vector3d &from = ends.from, &to = ends.to;
   const std::array<int, 3> a = voxelOf(from), b = voxelOf(to);
   const double margin = std::max(5.0, 0.5 * (to - from).norm());
   std::array<int, 3> lo{}, hi{};
@@ -290,19 +300,42 @@ Bridge bridgeThroughVolume(const ScalarVolume& input, const TskCenterlineParamet
   const std::vector<std::array<int, 3>> path = leastCostPath(box, frame.spacing, a, b);
   Bridge bridge;
   if (path.empty()) return bridge;
-  auto outside = [&](const std::array<int, 3>& v) {
-    const int64_t i =
-        (v[0] - lo[0]) + int64_t(box.size[0]) * ((v[1] - lo[1]) + int64_t(box.size[1]) * (v[2] - lo[2]));
-    return box.cost[size_t(i)] > 1.0f ? 0.5 : 0.0;
+  // The cost per mm at a point (the box's voxel nearest it; 5, the most, outside the box).
+  const auto costAt = [&](const Eigen::Vector3d& point) {
+    const std::array<int, 3> v = voxelOf(point);
+    for (size_t k = 0; k < 3; ++k)
+      if (v[k] < lo[k] || v[k] > hi[k]) return 5.0;
+    return double(box.cost[size_t(
+        (v[0] - lo[0]) + int64_t(box.size[0]) * ((v[1] - lo[1]) + int64_t(box.size[1]) * (v[2] - lo[2])))]);
   };
-  bridge.gap = 0;
+  // A bridge's total cost and its length outside the selection, segment by segment at the midpoints.
+  const auto measure = [&](const std::vector<Eigen::Vector3d>& inner, double& outside) {
+    std::vector<Eigen::Vector3d> all{from};
+    all.insert(all.end(), inner.begin(), inner.end());
+    all.push_back(to);
+    double cost = 0;
+    outside = 0;
+    for (size_t k = 1; k < all.size(); ++k) {
+      const double length = (all[k] - all[k - 1]).norm(), c = costAt(0.5 * (all[k] + all[k - 1]));
+      cost += length * c;
+      if (c > 1.0) outside += length;
+    }
+    return cost;
+  };
   std::vector<Eigen::Vector3d> points;
-  for (size_t k = 0; k < path.size(); ++k) {
-    const auto& v = path[k];
-    points.push_back(frame.physical(Eigen::Vector3d(v[0], v[1], v[2])));
-    if (k > 0) bridge.gap += (points[k] - points[k - 1]).norm() * (outside(path[k - 1]) + outside(v));
-  }
-  bridge.points = bridgePoints(from, to, points, spacing);
+  for (const auto& v : path) points.push_back(frame.physical(Eigen::Vector3d(v[0], v[1], v[2])));
+  std::vector<Eigen::Vector3d> leastCost = bridgePoints(from, to, points, spacing);
+  std::vector<Eigen::Vector3d> curve =
+      hermiteCurve(from, ends.fromDirection, to, ends.toDirection, spacing, kBridgeTangentScale);
+  double leastCostGap = 0, curveGap = 0;
+  const double leastCostCost = measure(leastCost, leastCostGap), curveCost = measure(curve, curveGap);
+  // Per mm: a longer curve through the same tissue costs no more (a quarter more: denser tissue, bone).
+  const double curveLength = polylineLength(from, curve, to),
+               leastCostLength = polylineLength(from, leastCost, to);
+  const bool smooth = curveCost / curveLength <= 1.25 * leastCostCost / leastCostLength;
+
+  bridge.points = smooth ? std::move(curve) : std::move(leastCost);
+  bridge.gap = smooth ? curveGap : leastCostGap;
   return bridge;
 }
 
@@ -354,10 +387,9 @@ bool followParts(const ScalarVolume& input, const TskCenterlineParameters& p, co
     result.notes.push_back(std::to_string(tooSmall) + " part(s) too small for a centerline were left out");
 
   const double spacing = p.tsk.sampleSpacing > 0 ? p.tsk.sampleSpacing : frame.spacing.minCoeff();
-  const PartChains chains =
-      chainParts(lines, startLine, p.maxGap, [&](const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
-        return bridgeThroughVolume(input, p, frame, from, to, spacing);
-      });
+  const PartChains chains = chainParts(lines, startLine, p.maxGap, [&](const BridgeEnds& ends) {
+    return bridgeThroughVolume(input, p, frame, ends, spacing);
+  });
   for (const auto& chain : chains.chains) {
     for (size_t k = 1; k < chain.size(); ++k) result.bridgedGaps.push_back(chain[k].bridge.gap);
     result.branches.push_back(joinChain(lines, chain));

@@ -79,14 +79,17 @@ TEST(GapBridges, PartsChainFromTheLowestEndToTheNearestEnds) {
                                          segment({0, 0, 140}, {0, 0, 102}),  // the top, backwards
                                          segment({60, 0, 300}, {60, 0, 340})};
   int bridges = 0;
-  const medial::PartChains chains =
-      medial::chainParts(parts, -1, 40.0, [&](const Vector3d& from, const Vector3d& to) {
-        ++bridges;
-        medial::Bridge b;
-        b.gap = (to - from).norm();  // the whole distance is outside the structure here
-        b.points = medial::bridgePoints(from, to, {from, to}, 1.0);
-        return b;
-      });
+  const medial::PartChains chains = medial::chainParts(parts, -1, 40.0, [&](const medial::BridgeEnds& ends) {
+    const Vector3d &from = ends.from, &to = ends.to;
+    // Up the tube at both ends: the chain leaves upwards and arrives upwards at the next part's end.
+    EXPECT_GT(ends.fromDirection.z(), 0.99);
+    EXPECT_GT(ends.toDirection.z(), 0.99);
+    ++bridges;
+    medial::Bridge b;
+    b.gap = (to - from).norm();  // the whole distance is outside the structure here
+    b.points = medial::bridgePoints(from, to, {from, to}, 1.0);
+    return b;
+  });
   ASSERT_EQ(chains.chains.size(), 2u);
   const auto& first = chains.chains[0];
   ASSERT_EQ(first.size(), 3u);
@@ -119,12 +122,11 @@ TEST(GapBridges, PartsChainFromTheLowestEndToTheNearestEnds) {
   EXPECT_EQ(bridged, 9 + 11) << "a point every mm inside each gap";
 
   // The seed's part first: the chain starts there and goes on from its last point.
-  const medial::PartChains seeded =
-      medial::chainParts(parts, 2, 40.0, [](const Vector3d& a, const Vector3d& b) {
-        medial::Bridge bridge;
-        bridge.gap = (b - a).norm();
-        return bridge;
-      });
+  const medial::PartChains seeded = medial::chainParts(parts, 2, 40.0, [](const medial::BridgeEnds& ends) {
+    medial::Bridge bridge;
+    bridge.gap = (ends.to - ends.from).norm();
+    return bridge;
+  });
   ASSERT_FALSE(seeded.chains.empty());
   EXPECT_EQ(seeded.chains[0][0].part, 2);
   EXPECT_EQ(seeded.chains[0].size(), 3u);
@@ -132,9 +134,9 @@ TEST(GapBridges, PartsChainFromTheLowestEndToTheNearestEnds) {
 
 TEST(GapBridges, AGapLongerThanTheMaximumEndsTheChain) {
   const std::vector<Centerline> parts = {segment({0, 0, 0}, {0, 0, 50}), segment({0, 0, 70}, {0, 0, 120})};
-  const auto across = [](const Vector3d& a, const Vector3d& b) {
+  const auto across = [](const medial::BridgeEnds& ends) {
     medial::Bridge bridge;
-    bridge.gap = (b - a).norm();
+    bridge.gap = (ends.to - ends.from).norm();
     return bridge;
   };
   EXPECT_EQ(medial::chainParts(parts, -1, 25.0, across).chains.size(), 1u);
