@@ -6,7 +6,8 @@ Peers: scikit-image's 3-D skeletonize (Lee et al. thinning), and a distance-map 
 Beside Medial's centerline, the paper's own curve (the TSK models without Medial's centring passes,
 --centering 0): the paper's Table 2 and Medial's improvement on the same phantoms.
 Per phantom: median seconds of each (over --repeat runs), mean and max distance to the true axis (mm,
-voxels and % of the axis length as in the paper's Table 2), leaving out one radius at each end.
+voxels and % of the axis length as in the paper's Table 2), leaving out one radius at each end; and VMTK's
+figures as issue 45 reports them (VMTK is not packaged for Debian: not run here).
 "colon" is the CT-like colon phantom (build/bin/medial-make-colon-phantom, made in a temporary folder and
 read as its DICOM series): Medial thresholds -1024..-600 HU itself; the peers get the same structure (the
 threshold, parts touching the border dropped, the largest 26-connected component).
@@ -33,7 +34,15 @@ import medial
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TUBES = os.path.join(HERE, "..", "data", "volumes", "tubes")
-RADIUS = {"u": 5, "s-plane": 5, "s-3d": 5, "s-radius": 5, "helix": 4, "helix-tight": 3.5, "tree": 4, "colon": 12}
+RADIUS = {"u": 5, "s-plane": 5, "s-3d": 5, "s-radius": 5, "helix": 4, "helix-tight": 3.5, "taper": 6,
+          "ct-spiral": 4, "tree": 4, "colon": 12}
+# VMTK's Voronoi centerline (3D Slicer's "Extract Centerline") as issue 45 reports it, mean / max mm with one
+# radius at each end left out, run by the issue's author beside Medial (VMTK is not a Debian package, so not
+# here). "taper" and "ct-spiral" stand for the issue's "radius varying twofold, 1 mm voxels" and "noisy CT
+# spiral, HU, 0.75 mm voxels": phantoms made to that description, not the same files.
+VMTK_ISSUE_45 = {"u": (0.09, 0.42), "s-plane": (0.33, 1.04), "helix": (0.07, 0.18), "tree": (0.13, 0.50),
+                 "colon": (0.24, 2.58), "taper": (0.094, 0.23), "ct-spiral": (0.067, 0.20)}
+CT_PHANTOMS = {"ct-spiral"}  # Hounsfield units: Medial and the peers take the air below -600 HU
 PHANTOM_TOOL = os.path.join(HERE, "..", "build", "bin", "medial-make-colon-phantom")
 
 
@@ -47,6 +56,27 @@ def read_volume(name):
     return image, array > 0, np.array(image.GetSpacing()), np.array(image.GetOrigin())
 
 
+def air_structure(image):
+    """A CT's structure as Medial's automatic selection takes it: at most -600 HU, parts touching the border
+    dropped, the largest 26-connected part."""
+    dims = image.GetDimensions()
+    hu = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars()).reshape(dims[::-1]).transpose(2, 1, 0)
+    labels, _ = scipy.ndimage.label(hu <= -600, structure=np.ones((3, 3, 3)))
+    border = np.unique(np.concatenate([labels[[0, -1]].ravel(), labels[:, [0, -1]].ravel(), labels[:, :, [0, -1]].ravel()]))
+    sizes = np.bincount(labels.ravel())
+    sizes[border] = 0
+    return labels == np.argmax(sizes)
+
+
+def read_ct_tube(name):
+    """A tube phantom in Hounsfield units, its air as the peers get it."""
+    reader = medial.vtkMedialReader()
+    reader.SetFileName(os.path.join(TUBES, name + ".nii.gz"))
+    reader.Update()
+    image = reader.GetOutputDataObject(0)
+    return image, air_structure(image), np.array(image.GetSpacing()), np.array(image.GetOrigin())
+
+
 def read_colon(folder):
     """The colon phantom's DICOM series, its structure as the peers get it, and its true axis."""
     subprocess.run([PHANTOM_TOOL, folder], check=True, stdout=subprocess.DEVNULL)
@@ -54,13 +84,7 @@ def read_colon(folder):
     reader.SetFileName(folder)
     reader.Update()
     image = reader.GetOutputDataObject(0)
-    dims = image.GetDimensions()
-    hu = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars()).reshape(dims[::-1]).transpose(2, 1, 0)
-    labels, _ = scipy.ndimage.label(hu <= -600, structure=np.ones((3, 3, 3)))
-    border = np.unique(np.concatenate([labels[[0, -1]].ravel(), labels[:, [0, -1]].ravel(), labels[:, :, [0, -1]].ravel()]))
-    sizes = np.bincount(labels.ravel())
-    sizes[border] = 0
-    inside = labels == np.argmax(sizes)
+    inside = air_structure(image)
     axis = [np.loadtxt(os.path.join(folder, "axis.txt"))[:, :3]]
     return image, inside, np.array(image.GetSpacing()), np.array(image.GetOrigin()), axis
 
@@ -110,7 +134,9 @@ def medial_centerline(image, threshold=None, branches=False, centering=None):
     f.SetInputData(image)
     if centering is not None:
         f.SetCenteringIterations(centering)
-    if threshold:
+    if threshold == "automatic":
+        f.SelectAutomatically()  # what a user without --threshold gets: a CT's air
+    elif threshold:
         f.SetThreshold(*threshold)
     else:
         f.SetLabel(1)
@@ -204,8 +230,9 @@ def main():
     parser.add_argument("names", nargs="*", default=list(RADIUS))
     args = parser.parse_args()
     print("TSK centerline (Medial) vs skimage skeletonize_3d vs distance-map minimal path; median of %d runs" % args.repeat)
-    print("%-12s | %-34s | %-34s | %-34s | %-34s" % ("phantom", "Medial: s, mean/max mm, vox, %",
-                                                  "the paper's curve (no centring)", "skeletonize", "minimal path"))
+    print("%-12s | %-34s | %-34s | %-34s | %-34s | %s" % ("phantom", "Medial: s, mean/max mm, vox, %",
+                                                       "the paper's curve (no centring)", "skeletonize", "minimal path",
+                                                       "VMTK, issue 45: mean/max mm"))
     for name in args.names:
         threshold = None
         if name == "colon":
@@ -216,6 +243,10 @@ def main():
             image, inside, spacing, origin, axis = read_colon(folder)
             shutil.rmtree(folder)
             threshold = (-1024, -600)
+        elif name in CT_PHANTOMS:
+            image, inside, spacing, origin = read_ct_tube(name)
+            axis = read_axis(name)
+            threshold = "automatic"
         else:
             image, inside, spacing, origin = read_volume(name)
             axis = read_axis(name)
@@ -231,6 +262,8 @@ def main():
         t, path = timed(args.repeat, lambda: minimal_path(inside, spacing, origin, ends[0][0], [e[1] for e in ends]))
         row.append((t, errors(path, axis, radius, spacing) if len(path) else (math.nan,) * 4))
         cells = ["%.4f s %.3f/%.2f mm %.2f vox %.2f%%" % (t, e[0], e[1], e[2], e[3]) for t, e in row]
+        vmtk = VMTK_ISSUE_45.get(name)
+        cells.append("%.3f/%.2f mm" % vmtk if vmtk else "-")
         print("%-12s | %s" % (name, " | ".join(cells)))
         if name == "colon":
             big = embed(image, inside)

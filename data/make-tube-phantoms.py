@@ -9,6 +9,12 @@ analytic axes as VTP polylines (NAME-axis.vtp, points in mm):
     s-radius.nii.gz   an S whose radius changes from 3 to 7 along it
     helix.nii.gz      a helix of two turns
     helix-tight.nii.gz  a tighter helix of three turns, anisotropic spacing 0.7 x 0.7 x 1.0 mm
+two harder ones (issue 45):
+    taper.nii.gz      a tube bent in a wide arc whose radius grows twofold along it (4 to 8 mm)
+    ct-spiral.nii.gz  a CT, not a mask: an air-filled spiral tube (radius 4, two turns) in soft tissue,
+                      Hounsfield units with partial volume at the wall and Gaussian noise (sigma 20 HU,
+                      fixed seed), not clipped at -1024 (as reconstructions stored in float or resampled
+                      are not), 0.75 mm voxels, both ends capped inside the volume
 and a branching tree (issue 5) with one polyline per branch in its axis file:
     tree.nii.gz       a trunk (radius 5) splitting into two branches (radius 4), one of which splits again
                       (radius 3): five branches
@@ -96,7 +102,42 @@ PHANTOMS = [
      lambda t: 4.0, (60, 60, 66), (1.0, 1.0, 1.0)),
     ("helix-tight", lambda t: (24 + 12 * math.cos(6 * math.pi * t), 24 + 12 * math.sin(6 * math.pi * t), 6 + 50 * t),
      lambda t: 3.5, (69, 69, 62), (0.7, 0.7, 1.0)),
+    ("taper", lambda t: (50 - 38 * math.cos(0.8 * math.pi * t), 12 + 38 * math.sin(0.8 * math.pi * t), 14.0),
+     lambda t: 4 + 4 * t, (84, 62, 28), (1.0, 1.0, 1.0)),
 ]
+
+
+def spiral(t):
+    return (25 + 14 * math.cos(4 * math.pi * t), 25 + 14 * math.sin(4 * math.pi * t), 10 + 40 * t)
+
+
+def make_ct_spiral(folder):
+    """The spiral as a CT: -1000 HU inside, 40 HU around, the wall's voxels by the share of them inside
+    (their distance to the tube's surface over a voxel), noise sigma 20 HU; int16; caps inside."""
+    spacing, size, r = (0.75, 0.75, 0.75), (68, 68, 80), 4.0
+    s = np.linspace(0.0, 1.0, 801)
+    axis = np.array([spiral(t) for t in s])
+    grid = np.stack(np.meshgrid(*[np.arange(n) * h for n, h in zip(size, spacing)], indexing="ij"), axis=-1)
+    points = grid.reshape(-1, 3)
+    best = np.full(len(points), np.inf)
+    for a, b in zip(axis[:-1], axis[1:]):
+        ab = b - a
+        t = np.clip(((points - a) @ ab) / max(ab @ ab, 1e-12), 0.0, 1.0)
+        best = np.minimum(best, np.linalg.norm(points - (a + t[:, None] * ab), axis=1))
+    share = np.clip(0.5 - (best - r) / spacing[0], 0.0, 1.0).reshape(size)
+    noise = np.random.default_rng(45).normal(0.0, 20.0, size)
+    hu = np.round(40.0 - 1040.0 * share + noise).astype(np.int16)
+    image = vtk.vtkImageData()
+    image.SetDimensions(*size)
+    image.SetSpacing(*spacing)
+    flat = np.ascontiguousarray(hu.transpose(2, 1, 0)).ravel()
+    image.GetPointData().SetScalars(numpy_support.numpy_to_vtk(flat, deep=True, array_type=vtk.VTK_SHORT))
+    writer = vtk.vtkNIFTIImageWriter()
+    writer.SetFileName(os.path.join(folder, "ct-spiral.nii.gz"))
+    writer.SetInputData(image)
+    writer.Write()
+    write_axis(axis, os.path.join(folder, "ct-spiral-axis.vtp"))
+    print("%-12s %s voxels, %d below -600 HU" % ("ct-spiral", "x".join(map(str, size)), int((hu <= -600).sum())))
 
 def bezier(p0, p1, p2):
     """A quadratic Bezier branch from p0 (its junction) through the pull of p1 to p2."""
@@ -133,4 +174,5 @@ if __name__ == "__main__":
         write_nifti(inside, spacing, os.path.join(folder, name + ".nii.gz"))
         write_axis(axis, os.path.join(folder, name + "-axis.vtp"))
         print("%-12s %s voxels, %d inside" % (name, "x".join(map(str, size)), int(inside.sum())))
+    make_ct_spiral(folder)
     make_tree(folder)

@@ -108,8 +108,12 @@ bool resolveSelection(const ScalarVolume& volume, TskCenterlineParameters& p, st
               "): choose a threshold window (--threshold LO:HI) or a label (--label L)";
       return false;
     }
+    // Everything below the window's top: air voxels of a noisy CT stored without clipping reach below
+    // -1024 HU, and leaving them out put holes in the lumen (the ct-spiral phantom's line 1.8 mm off).
     p.selection = VoxelSelection::Threshold;
-    notes.push_back("the volume looks like a CT in Hounsfield units: the structure is its air (" + window +
+    p.thresholdLow = -std::numeric_limits<double>::infinity();
+    notes.push_back("the volume looks like a CT in Hounsfield units: the structure is its air (at most " +
+                    format(p.thresholdHigh) +
                     " HU, parts touching the border dropped); --threshold or --label choose another");
     return true;
   }

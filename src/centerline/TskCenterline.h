@@ -37,8 +37,9 @@ struct ScalarVolume {
 };
 
 /// Which voxels make the structure. Automatic (the default) looks at the volume: a CT in Hounsfield
-/// units (signed or floating-point voxels reaching below -200) takes the threshold window, the air of a
-/// colon, and says so in a note - or, with no voxel in the window, is an error that asks for a threshold
+/// units (signed or floating-point voxels reaching below -200) takes its air, every voxel up to the
+/// threshold window's top (-600 HU: below -1024 too, where a noisy CT stored unclipped puts some), and says
+/// so in a note - or, with no voxel in the window, is an error that asks for a threshold
 /// or a label; any other volume takes its non-zero voxels, unless they fill most of it (then an error
 /// too: a body, not a tube).
 enum class VoxelSelection { NonZero, Label, Threshold, Automatic };

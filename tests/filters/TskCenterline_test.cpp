@@ -12,6 +12,7 @@
 #include <vtkDataArray.h>
 #include <vtkIdList.h>
 #include <vtkImageData.h>
+#include <vtkMath.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -27,6 +28,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -99,6 +101,48 @@ TEST_P(TubePhantoms, CenterlineFollowsTheTrueAxis) {
               arc->GetTuple1(arc->GetNumberOfTuples() - 1), mean, worst);
   EXPECT_LT(mean, GetParam().maxMeanError);
   EXPECT_LT(worst, 1.6);
+}
+
+// The goals of issue 45 on a tube whose radius grows twofold (taper, 1 mm voxels, a label) and on a noisy CT
+// (ct-spiral, Hounsfield units, 0.75 mm voxels, followed with the defaults: its air): mean at most 0.09
+// voxel and worst at most 0.3 voxel off the true axis, one radius at each end left out (as
+// bench/tsk_bench.py measures; VMTK per the issue 0.094 / 0.23 mm and 0.067 / 0.20 mm). Measured 0.030 /
+// 0.11 mm and 0.040 / 0.14 mm; the CT was 0.41 / 1.83 mm when its air below -1024 HU was left out.
+TEST(TskCenterlineFilter, VaryingRadiusAndNoisyCtStayWithinATenthOfAVoxel) {
+  const std::string folder = medial::test::dataPath("volumes/tubes/");
+  // Name, the tube's radius at its first and last end, and whether it is a label volume.
+  using Case = std::tuple<const char*, double, double, bool>;
+  for (const auto& [name, firstRadius, lastRadius, label] :
+       {Case{"taper", 4, 8, true}, Case{"ct-spiral", 4, 4, false}}) {
+    const auto imageData = read(folder + name + ".nii.gz");
+    const auto axisData = read(folder + name + "-axis.vtp");
+    auto* image = vtkImageData::SafeDownCast(imageData);
+    auto* axis = vtkPolyData::SafeDownCast(axisData);
+    ASSERT_TRUE(image && axis) << name;
+    auto filter = vtkSmartPointer<vtkMedialTskCenterline>::New();
+    filter->SetInputData(image);
+    if (label) filter->SetLabel(1);
+    filter->Update();
+    vtkPolyData* line = filter->GetOutput();
+    ASSERT_GT(line->GetNumberOfPoints(), 50) << name;
+    double first[3], last[3];
+    axis->GetPoint(0, first);
+    axis->GetPoint(axis->GetNumberOfPoints() - 1, last);
+    double sum = 0, worst = 0;
+    int counted = 0;
+    for (vtkIdType i = 0; i < line->GetNumberOfPoints(); ++i) {
+      double p[3];
+      line->GetPoint(i, p);
+      if (std::sqrt(vtkMath::Distance2BetweenPoints(p, first)) < firstRadius ||
+          std::sqrt(vtkMath::Distance2BetweenPoints(p, last)) < lastRadius)
+        continue;
+      const double d = distanceToLine(p, axis);
+      sum += d, worst = std::max(worst, d), ++counted;
+    }
+    const double voxel = std::min({image->GetSpacing()[0], image->GetSpacing()[1], image->GetSpacing()[2]});
+    EXPECT_LT(sum / counted, 0.09 * voxel) << name << ": mean mm off the true axis";
+    EXPECT_LT(worst, 0.3 * voxel) << name << ": worst mm off the true axis";
+  }
 }
 
 TEST(TskCenterlineFilter, CenteringBringsTheAxisCloserThanThePapersCurve) {
