@@ -4,6 +4,7 @@
 #include "MedialSkeletonData.h"
 
 #include "MedialErrorCollector.h"
+#include "vtkMedialMarkupsCurveWriter.h"
 #include "vtkMedialPolyDataWriter.h"
 #include "vtkMedialRigWriter.h"
 #include "vtkMedialGhostPass.h"
@@ -29,6 +30,7 @@
 #include <vtkIntArray.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkWriter.h>
 #include <vtkXMLImageDataWriter.h>
 
 #include <algorithm>
@@ -308,10 +310,20 @@ bool ObjectList::save(SceneObject* object, const QString& path) {
     }
     return true;
   }
-  auto writer = vtkSmartPointer<vtkMedialPolyDataWriter>::New();
+  // A centerline for 3D Slicer: its polylines as markups curves.
+  const bool markups = path.endsWith(".json", Qt::CaseInsensitive);
+  vtkSmartPointer<vtkWriter> writer;
+  if (markups) {
+    auto curves = vtkSmartPointer<vtkMedialMarkupsCurveWriter>::New();
+    curves->SetFileName(name.constData());
+    writer = curves;
+  } else {
+    auto meshes = vtkSmartPointer<vtkMedialPolyDataWriter>::New();
+    meshes->SetFileName(name.constData());
+    writer = meshes;
+  }
   auto errors = medial::ErrorCollector::Watch(writer);
   writer->SetInputData(object->data);
-  writer->SetFileName(name.constData());
   writer->Write();
   if (errors->HasErrors()) {
     fail("Cannot save", path + ": " + QString::fromStdString(errors->Joined()));
@@ -416,9 +428,9 @@ void ObjectList::saveDialog() {
   SceneObject* object = current();
   if (!object) return;
   const bool volume = object->kind == SceneObject::Kind::Volume;
-  const QString filter =
-      volume ? QString("VTK image data (*.vti)")
-             : QString("Meshes and skeletons (%1)").arg(vtkMedialPolyDataWriter::GetExtensions());
+  const QString filter = volume ? QString("VTK image data (*.vti)")
+                                : QString("Meshes and skeletons (%1);;3D Slicer markups curves (*.mrk.json)")
+                                      .arg(vtkMedialPolyDataWriter::GetExtensions());
   const QString suggested = QFileInfo(object->name).completeBaseName() + (volume ? ".vti" : ".vtp");
   const QString path = QFileDialog::getSaveFileName(this, "Save " + object->name, suggested, filter);
   if (!path.isEmpty()) save(object, path);

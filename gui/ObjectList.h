@@ -50,7 +50,8 @@ class ObjectList : public QWidget {
   void setImportance(SceneObject* object, double importance);
   void setColor(SceneObject* object, double r, double g, double b);
   void setOpacity(SceneObject* object, double opacity);
-  // Writes the object (mesh: VTP VTK OBJ PLY STL; skeleton also SWC; volume VTI). False on failure.
+  // Writes the object (mesh: VTP VTK OBJ PLY STL; skeleton also SWC; a centerline also 3D Slicer markups
+  // curves, .mrk.json; volume VTI). False on failure.
   bool save(SceneObject* object, const QString& path);
   // Writes a skeleton's rig (GLB, FBX): a contraction skeleton's own weights, or those bindMesh made,
   // rooted, turned and scaled as `settings` say; logs what it wrote. False on failure.

@@ -443,6 +443,15 @@ TEST_F(GuiWorkflow, VirtualColonoscopyToolsMoveTheFlyThrough) {
   ASSERT_TRUE(profile->exportPng(QString::fromStdString(dir + "/profile.png")));
   EXPECT_GT(QImage(QString::fromStdString(dir + "/profile.png")).width(), 100);
 
+  // The centerline saved for 3D Slicer.
+  SceneObject* line = object("u.nii.gz centerline");
+  ASSERT_NE(line, nullptr);
+  ASSERT_TRUE(window->objects()->save(line, QString::fromStdString(dir + "/u.mrk.json")));
+  std::ifstream markups(dir + "/u.mrk.json");
+  const std::string json((std::istreambuf_iterator<char>(markups)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"type\": \"Curve\""), std::string::npos);
+  EXPECT_NE(json.find("\"Radius\""), std::string::npos);
+
   // Backward: looking towards the start; playing goes back; the view angle follows its box.
   panel->setBackward(true);
   panel->setPosition(50);
