@@ -93,7 +93,7 @@ const std::string& centerlineUsage() {
            "models. The structure: voxels equal to L, or within LO..HI (parts touching the volume's border "
            "are\n"
            "dropped: the air outside the body); without either, a CT in Hounsfield units gives its air "
-           "(-1024..-600,\n"
+           "(up to -600,\n"
            "with a note) and any other volume its non-zero voxels. A structure in several parts (a "
            "colon\n"
            "split by collapsed or fluid-filled segments) is followed part by part and chained from the "

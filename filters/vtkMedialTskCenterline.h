@@ -57,9 +57,9 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   void SetThreshold(double low, double high);
   /// Use the non-zero voxels.
   void SelectNonZero();
-  /// Choose from the volume (the default): the threshold window on a CT in Hounsfield units (with a note;
-  /// an error when it holds no air), the non-zero voxels on any other volume (an error when they fill most
-  /// of it). src/centerline/TskCenterline.h says how.
+  /// Choose from the volume (the default): on a CT in Hounsfield units its air, every voxel up to the
+  /// window's top (-600 HU; with a note; an error when it holds no air), the non-zero voxels on any other
+  /// volume (an error when they fill most of it). src/centerline/TskCenterline.h says how.
   void SelectAutomatically();
   /// The selection: "automatic", "label", "threshold" or "non-zero", and its values (the window defaults
   /// to colon air on CT, -1024..-600 HU).
