@@ -2,6 +2,7 @@
 // the colon phantom's true wall, and holding the centerline - all of it but the bridges across collapsed
 // segments, where there is no lumen.
 #include "TestPaths.h"
+#include "TrueAxis.h"
 
 #include "vtkMedialReader.h"
 #include "vtkMedialTskCenterline.h"
@@ -26,31 +27,17 @@
 
 namespace {
 
-std::vector<std::array<double, 4>> readAxis(const std::string& path) {  // x y z radius per line
-  std::vector<std::array<double, 4>> axis;
-  std::ifstream file(path);
-  std::string line;
-  while (std::getline(file, line))
-    if (!line.empty() && line[0] != '#') {
-      std::array<double, 4> p{};
-      std::istringstream(line) >> p[0] >> p[1] >> p[2] >> p[3];
-      axis.push_back(p);
-    }
-  return axis;
-}
-
-// |distance to the nearest true axis point - its radius| (mm) for every `step`-th point of the surface.
-std::vector<double> wallErrors(vtkPolyData* surface, const std::vector<std::array<double, 4>>& axis,
+// |distance to the true axis - its radius there| (mm) for every `step`-th point of the surface.
+std::vector<double> wallErrors(vtkPolyData* surface, const std::vector<medial::test::AxisPoint>& axis,
                                int step) {
+  const std::vector<medial::test::Point3> line = medial::test::pointsOf(axis);
   std::vector<double> errors;
   for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); i += step) {
-    double p[3], best = INFINITY, radius = 0;
-    surface->GetPoint(i, p);
-    for (const auto& a : axis) {
-      const double d = std::hypot(p[0] - a[0], p[1] - a[1], p[2] - a[2]);
-      if (d < best) best = d, radius = a[3];
-    }
-    errors.push_back(std::fabs(best - radius));
+    medial::test::Point3 p;
+    surface->GetPoint(i, p.data());
+    size_t nearest = 0;
+    const double d = medial::test::distanceToPolyline(p, line, &nearest);
+    errors.push_back(std::fabs(d - axis[nearest].radius));
   }
   std::sort(errors.begin(), errors.end());
   return errors;
@@ -109,7 +96,7 @@ TEST(LumenSurface, ClosedOnTheWallAndHoldingTheCenterline) {
 
   // On the true wall: the median within a third of a voxel (0.7 mm), where the folds and polyps do not
   // reach; measured 0.10-0.13 mm.
-  const std::vector<double> errors = wallErrors(surface, readAxis(dir + "/axis.txt"), 7);
+  const std::vector<double> errors = wallErrors(surface, medial::test::readAxisFile(dir + "/axis.txt"), 7);
   EXPECT_LT(errors[errors.size() / 2], 0.25) << "median |distance to the true wall| (mm)";
 }
 

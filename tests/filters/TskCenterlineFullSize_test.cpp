@@ -4,6 +4,7 @@
 // up to 3 radii short of their caps), and it runs to within one radius of both ends of the colon (it
 // started 1.7 radii inside the rectum).
 #include "TestPaths.h"
+#include "TrueAxis.h"
 
 #include "vtkMedialReader.h"
 #include "vtkMedialTskCenterline.h"
@@ -24,44 +25,15 @@
 
 namespace {
 
-struct AxisPoint {
-  std::array<double, 3> p;
-  double radius;
-};
+using medial::test::distance;
 
-std::vector<AxisPoint> readAxis(const std::string& path) {
-  std::vector<AxisPoint> axis;
-  std::ifstream file(path);
-  std::string line;
-  while (std::getline(file, line))
-    if (!line.empty() && line[0] != '#') {
-      AxisPoint a{};
-      std::istringstream(line) >> a.p[0] >> a.p[1] >> a.p[2] >> a.radius;
-      axis.push_back(a);
-    }
-  return axis;
-}
-
-double distance(const double* a, const std::array<double, 3>& b) {
-  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-}
-
-// Distance from `p` to the true axis polyline, and the radius at its nearest point.
-double distanceToAxis(const double p[3], const std::vector<AxisPoint>& axis, double& radius) {
-  double best = INFINITY;
-  for (size_t k = 0; k + 1 < axis.size(); ++k) {
-    double ab[3], ap[3], t = 0, length2 = 0;
-    for (int i = 0; i < 3; ++i) {
-      ab[i] = axis[k + 1].p[size_t(i)] - axis[k].p[size_t(i)];
-      ap[i] = p[i] - axis[k].p[size_t(i)];
-      t += ab[i] * ap[i];
-      length2 += ab[i] * ab[i];
-    }
-    t = length2 > 0 ? std::clamp(t / length2, 0.0, 1.0) : 0.0;
-    const double d = std::hypot(ap[0] - t * ab[0], ap[1] - t * ab[1], ap[2] - t * ab[2]);
-    if (d < best) best = d, radius = axis[k].radius;
-  }
-  return best;
+// Distance from `p` to the true axis, and the radius there.
+double distanceToAxis(const medial::test::Point3& p, const std::vector<medial::test::AxisPoint>& axis,
+                      const std::vector<medial::test::Point3>& line, double& radius) {
+  size_t nearest = 0;
+  const double d = medial::test::distanceToPolyline(p, line, &nearest);
+  radius = axis[nearest].radius;
+  return d;
 }
 
 }  // namespace
@@ -78,12 +50,13 @@ TEST(TskCenterlineFullSize, CollapsedColonStaysOnItsAxisFromEndToEnd) {
   vtkPolyData* line = filter->GetOutput();
   ASSERT_EQ(line->GetNumberOfCells(), 1);
   ASSERT_EQ(filter->GetNumberOfBridgedGaps(), 2);
-  const std::vector<AxisPoint> axis = readAxis(dir + "/axis.txt");
+  const std::vector<medial::test::AxisPoint> axis = medial::test::readAxisFile(dir + "/axis.txt");
   ASSERT_GT(axis.size(), 100u);
+  const std::vector<medial::test::Point3> axisLine = medial::test::pointsOf(axis);
 
-  double first[3], last[3];
-  line->GetPoint(0, first);
-  line->GetPoint(line->GetNumberOfPoints() - 1, last);
+  medial::test::Point3 first, last;
+  line->GetPoint(0, first.data());
+  line->GetPoint(line->GetNumberOfPoints() - 1, last.data());
   EXPECT_LT(distance(first, axis.front().p), axis.front().radius) << "the line starts at the rectum's end";
   EXPECT_LT(distance(last, axis.back().p), axis.back().radius) << "and ends at the cecum's";
 
@@ -91,12 +64,13 @@ TEST(TskCenterlineFullSize, CollapsedColonStaysOnItsAxisFromEndToEnd) {
   double worst = 0;
   int measured = 0;
   for (vtkIdType i = 0; i < line->GetNumberOfPoints(); ++i) {
-    double p[3], radius = 1;
-    line->GetPoint(i, p);
+    medial::test::Point3 p;
+    double radius = 1;
+    line->GetPoint(i, p.data());
     if (bridged->GetComponent(i, 0) != 0) continue;
     if (distance(p, axis.front().p) < axis.front().radius || distance(p, axis.back().p) < axis.back().radius)
       continue;
-    worst = std::max(worst, distanceToAxis(p, axis, radius) / radius);
+    worst = std::max(worst, distanceToAxis(p, axis, axisLine, radius) / radius);
     ++measured;
   }
   EXPECT_GT(measured, 1000);

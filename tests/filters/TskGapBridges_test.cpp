@@ -3,6 +3,7 @@
 // as the bend's chord, 2.3 mm (2.3 voxels) off the true axis with no true-axis point of the gap within a
 // voxel of it; the Hermite curve continuing both ends' directions stays within 1.5 mm.
 #include "TestPaths.h"
+#include "TrueAxis.h"
 
 #include "vtkMedialReader.h"
 #include "vtkMedialTskCenterline.h"
@@ -24,31 +25,15 @@
 
 namespace {
 
-using Point = std::array<double, 3>;
+using Point = medial::test::Point3;
+using medial::test::distance;
+using medial::test::distanceToPolyline;
 
 vtkSmartPointer<vtkDataObject> read(const std::string& path) {
   auto reader = vtkSmartPointer<vtkMedialReader>::New();
   reader->SetFileName(path.c_str());
   reader->Update();
   return reader->GetOutputDataObject(0);
-}
-
-double distance(const Point& a, const Point& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
-
-double distanceToPolyline(const Point& p, const std::vector<Point>& line) {
-  double best = INFINITY;
-  for (size_t k = 0; k + 1 < line.size(); ++k) {
-    double t = 0, length2 = 0;
-    for (size_t i = 0; i < 3; ++i) {
-      t += (line[k + 1][i] - line[k][i]) * (p[i] - line[k][i]);
-      length2 += (line[k + 1][i] - line[k][i]) * (line[k + 1][i] - line[k][i]);
-    }
-    t = length2 > 0 ? std::clamp(t / length2, 0.0, 1.0) : 0.0;
-    Point q{};
-    for (size_t i = 0; i < 3; ++i) q[i] = line[k][i] + t * (line[k + 1][i] - line[k][i]);
-    best = std::min(best, distance(p, q));
-  }
-  return best;
 }
 
 }  // namespace
