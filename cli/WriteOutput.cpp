@@ -16,20 +16,26 @@
 
 namespace medial::cli {
 
-void writePolyData(vtkPolyData* data, const std::string& path) {
-  auto writer = vtkSmartPointer<vtkMedialPolyDataWriter>::New();
+namespace {
+
+// A writer of one polydata input with a SetFileName: writes, or throws Failure with its errors.
+template <class Writer>
+void writeWith(vtkPolyData* data, const std::string& path) {
+  auto writer = vtkSmartPointer<Writer>::New();
   auto errors = medial::ErrorCollector::Watch(writer);
   writer->SetFileName(path.c_str());
   writer->SetInputData(data);
   if (!writer->Write() || errors->HasErrors()) throw Failure(errors->Joined());
 }
 
+}  // namespace
+
+void writePolyData(vtkPolyData* data, const std::string& path) {
+  writeWith<vtkMedialPolyDataWriter>(data, path);
+}
+
 void writeMarkups(vtkPolyData* centerline, const std::string& path) {
-  auto writer = vtkSmartPointer<vtkMedialMarkupsCurveWriter>::New();
-  auto errors = medial::ErrorCollector::Watch(writer);
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(centerline);
-  if (!writer->Write() || errors->HasErrors()) throw Failure(errors->Joined());
+  writeWith<vtkMedialMarkupsCurveWriter>(centerline, path);
 }
 
 void requireWritableExtension(const std::string& path, const char* option) {
