@@ -7,8 +7,12 @@
 // split to 150 nodes, one leaf dragged in 40 steps, the mesh rebuilt at every step: base mesh (goal: one
 // frame, 16 ms), K = 2 while dragging (no fold repair; goal 100 ms), K = 2 on release (with the repair),
 // beside the tube filter rebuilding its tubes of the same skeleton. Without SKELETON arguments, last the
-// --union rows on the overlapping skeletons (crossing tubes, the dense tree).
-//   medial_bench_sqm [--repeat N] [SKELETON...]   (default: data/skeletons/sqm/*.vtp, figure, hand)
+// --union rows on the overlapping skeletons (crossing tubes, the dense tree), and the rows at scale:
+// long branching chains whose tubes overlap (data/make-long-chain.py, 1,000 to 100,000 nodes), meshed with
+// the overlap count as `medial sqm` does, beside vtkTubeFilter on the same chain and CGAL's
+// self-intersection test on the same mesh (what the count was before issue 46); `--scale` runs only those.
+//   medial_bench_sqm [--repeat N] [--scale] [SKELETON...]   (default: data/skeletons/sqm/*.vtp, figure, hand)
+#include "MedialMeshData.h"
 #include "MedialSkeletonData.h"
 #include "MedianSeconds.h"
 #include "skeleton/SkeletonEdits.h"
@@ -27,6 +31,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <string>
@@ -207,7 +212,8 @@ void editorRows(int steps) {
   const auto dragTimes = [&](const std::function<void(vtkPolyData*)>& rebuild) {
     medial::Skeleton dragged = skeleton;
     return medianSeconds(steps, [&, i = 0]() mutable {
-      medial::moveNode(dragged, leaf, start + Eigen::Vector3d(step * ++i, 0.5 * step * i, 0));
+      ++i;
+      medial::moveNode(dragged, leaf, start + Eigen::Vector3d(step * i, 0.5 * step * i, 0));
       rebuild(medial::polyDataFromSkeleton(dragged));
     });
   };
@@ -242,17 +248,75 @@ void editorRows(int steps) {
   std::printf("%-28s %9.2f %9s %10s\n", "vtkTubeFilter (peer)", 1e3 * tube, "-", "1.00");
 }
 
+// Long chains at scale (issue 46): time linear in the nodes, the overlap count well below the meshing.
+void scaleRows(int repeat) {
+  std::printf(
+      "\nAt scale: data/make-long-chain.py chains (tubes overlap where the walk returns), median of %d\n",
+      repeat);
+  std::printf("%7s %8s %6s | %8s %8s %7s | %8s %8s | %8s %9s\n", "nodes", "faces", "pairs", "SQM s",
+              "count s", "us/node", "tube s", "SQM/tube", "CGAL s", "CGAL/ours");
+  for (const int nodes : {1000, 10000, 100000}) {
+    const std::string path = "/tmp/medial-bench-chain-" + std::to_string(nodes) + ".swc";
+    const std::string make = "python3 '" + std::string(MEDIAL_SOURCE_DIR) + "/data/make-long-chain.py' " +
+                             std::to_string(nodes) + " '" + path + "'";
+    if (std::system(make.c_str()) != 0) {
+      std::printf("%7d cannot make the chain (python3 data/make-long-chain.py)\n", nodes);
+      continue;
+    }
+    auto reader = vtkSmartPointer<vtkMedialReader>::New();
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    auto skeleton = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+    auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+    sqm->SetInputData(skeleton);
+    sqm->CountOverlapsOn();
+    std::vector<double> counts;
+    const double sqmSeconds = medianSeconds(repeat, [&] {
+      sqm->Modified();
+      sqm->Update();
+      counts.push_back(sqm->GetStageSeconds("union"));
+    });
+    std::nth_element(counts.begin(), counts.begin() + long(counts.size() / 2), counts.end());
+    auto withScalars = vtkSmartPointer<vtkPolyData>::New();
+    withScalars->ShallowCopy(skeleton);
+    withScalars->GetPointData()->SetScalars(skeleton->GetPointData()->GetArray("Radius"));
+    auto tube = vtkSmartPointer<vtkTubeFilter>::New();
+    tube->SetInputData(withScalars);
+    tube->SetNumberOfSides(8);
+    tube->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
+    const double tubeSeconds = medianSeconds(repeat, [&] {
+      tube->Modified();
+      tube->Update();
+    });
+    const auto points = medial::pointsOf(sqm->GetOutput());
+    const auto faces = medial::polygonsOf(sqm->GetOutput());
+    const double cgalSeconds = medianSeconds(1, [&] { medial::selfIntersectingFaces(points, faces); });
+    std::printf("%7d %8lld %s%5d | %8.3f %8.3f %7.1f | %8.3f %8.2f | %8.3f %9.2f\n", nodes,
+                static_cast<long long>(faces.size()), sqm->GetOverlapCountComplete() ? " " : ">",
+                sqm->GetOverlappingFacePairs(), sqmSeconds, counts[counts.size() / 2],
+                1e6 * sqmSeconds / nodes, tubeSeconds, sqmSeconds / tubeSeconds, cgalSeconds,
+                cgalSeconds / counts[counts.size() / 2]);
+    std::remove(path.c_str());
+  }
+}
+
 int main(int argc, char** argv) {
   int repeat = 200;
   std::vector<std::string> paths;
-  bool givenPaths = false;
+  bool givenPaths = false, scaleOnly = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc)
       repeat = std::max(1, std::atoi(argv[++i]));
+    else if (!std::strcmp(argv[i], "--scale"))
+      scaleOnly = true;
     else
       paths.push_back(argv[i]);
   }
   givenPaths = !paths.empty();
+  if (scaleOnly) {
+    scaleRows(std::max(1, std::min(repeat, 3)));
+    return 0;
+  }
   if (paths.empty()) {
     const std::string data = std::string(MEDIAL_SOURCE_DIR) + "/data/skeletons/";
     for (const char* name : {"sqm/worm.vtp", "sqm/fish.vtp", "sqm/humanoid.vtp", "sqm/quadruped.vtp",
@@ -304,6 +368,9 @@ int main(int argc, char** argv) {
   table1(paths, repeat);
   refinedRows(paths, std::max(1, std::min(repeat, 5)));
   editorRows(std::max(3, std::min(repeat, 40)));
-  if (!givenPaths) unionRows(std::max(1, std::min(repeat, 3)));  // the whole benchmark only: seconds per run
+  if (!givenPaths) {  // the whole benchmark only: seconds per run
+    unionRows(std::max(1, std::min(repeat, 3)));
+    scaleRows(std::max(1, std::min(repeat, 3)));
+  }
   return 0;
 }

@@ -39,19 +39,21 @@ void countTable1(vtkMedialSQM* filter, Timings& timings) {
 void noteOverlaps(vtkMedialSQM* filter) {
   const int nodes = filter->GetOverlappingNodePairs(), faces = filter->GetOverlappingFacePairs();
   if (faces == 0) return;
+  // Past the count's limit the figures are lower bounds.
+  const char* atLeast = filter->GetOverlapCountComplete() ? "" : "at least ";
   if (filter->GetUnion())
     std::fprintf(
         stderr,
-        "medial sqm: note: tubes overlapped at %d pair%s of nodes (%d pairs of faces cutting each other); "
-        "the union cut %d polygons along the intersection curves and removed %d inside it\n",
-        nodes, nodes == 1 ? "" : "s", faces, filter->GetUnionCutPolygons(),
+        "medial sqm: note: tubes overlapped at %s%d pair%s of nodes (%s%d pairs of faces cutting each "
+        "other); the union cut %d polygons along the intersection curves and removed %d inside it\n",
+        atLeast, nodes, nodes == 1 ? "" : "s", atLeast, faces, filter->GetUnionCutPolygons(),
         filter->GetUnionRemovedPolygons());
   else
-    std::fprintf(
-        stderr,
-        "medial sqm: note: tubes overlap at %d pair%s of nodes (%d pairs of faces cut each other): the "
-        "mesh bounds no volume; --union makes it one closed surface without self-intersections\n",
-        nodes, nodes == 1 ? "" : "s", faces);
+    std::fprintf(stderr,
+                 "medial sqm: note: tubes overlap at %s%d pair%s of nodes (%s%d pairs of faces cut each "
+                 "other): the mesh bounds no volume; --union makes it one closed surface without "
+                 "self-intersections\n",
+                 atLeast, nodes, nodes == 1 ? "" : "s", atLeast, faces);
 }
 
 }  // namespace

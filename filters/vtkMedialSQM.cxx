@@ -128,12 +128,14 @@ int vtkMedialSQM::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   this->Quads = this->Triangles = 0;
   this->OverlappingFacePairs = this->OverlappingNodePairs = this->UnionCutPolygons =
       this->UnionRemovedPolygons = 0;
+  this->OverlapCountComplete = true;
   this->Seconds.assign(GetStageNames().size(), 0.0);
   this->Stages.clear();
   const medial::SqmResult result =
       medial::sqmMesh(skeleton, this->MakeParameters(), medial::progressOf(this));
   this->OverlappingFacePairs = result.overlaps.facePairs;
   this->OverlappingNodePairs = result.overlaps.nodePairs;
+  this->OverlapCountComplete = result.overlaps.complete;
   if (!result.ok()) {
     medial::reportError(this, result.error);
     return 0;

@@ -129,9 +129,11 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   vtkGetMacro(Triangles, int);
   // After an update with Union or CountOverlaps: the pairs of polygons that cut each other and the pairs of
   // skeleton nodes they belong to (before the union); with Union, the polygons cut along the intersection
-  // curves and those removed (inside the union).
+  // curves and those removed (inside the union). Counting stops after 100,000 face pairs
+  // (medial::kOverlapCountLimit): then GetOverlapCountComplete() is false and the counts are lower bounds.
   vtkGetMacro(OverlappingFacePairs, int);
   vtkGetMacro(OverlappingNodePairs, int);
+  vtkGetMacro(OverlapCountComplete, bool);
   vtkGetMacro(UnionCutPolygons, int);
   vtkGetMacro(UnionRemovedPolygons, int);
   /// After an update: the seconds of a stage of GetStageNames() (the paper's Table 1: straightening,
@@ -169,6 +171,7 @@ class MEDIALFILTERS_EXPORT vtkMedialSQM : public vtkPolyDataAlgorithm {
   int MergedNodes = 0;
   int FoldRepairedVertices = 0;
   int BranchNodes = 0, ConnectionNodes = 0, LeafNodes = 0, IrregularVertices = 0, Quads = 0, Triangles = 0;
+  bool OverlapCountComplete = true;
   int OverlappingFacePairs = 0, OverlappingNodePairs = 0, UnionCutPolygons = 0, UnionRemovedPolygons = 0;
   std::vector<double> Seconds;  // per stage of GetStageNames()
 };

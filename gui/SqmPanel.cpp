@@ -134,15 +134,18 @@ void SqmPanel::collect(vtkAlgorithm* filter, SceneObject* input, double) {
   const int merged = sqm->GetMergedNodes();
   const int unfolded = sqm->GetFoldRepairedVertices();
   const int overlaps = sqm->GetOverlappingNodePairs();
+  const QString atLeast = sqm->GetOverlapCountComplete() ? "" : "at least ";  // past the count's limit
   QString overlapNote;
   if (overlaps > 0 && sqm->GetUnion())
-    overlapNote = QString("; tubes overlapped at %1 pairs of nodes, united (%2 polygons cut)")
+    overlapNote = QString("; tubes overlapped at %1%2 pairs of nodes, united (%3 polygons cut)")
+                      .arg(atLeast)
                       .arg(overlaps)
                       .arg(sqm->GetUnionCutPolygons());
   else if (overlaps > 0)
     overlapNote = QString(
-                      "; tubes overlap at %1 pairs of nodes (%2 pairs of faces cut each other): the mesh "
+                      "; tubes overlap at %1%2 pairs of nodes (%1%3 pairs of faces cut each other): the mesh "
                       "bounds no volume, tick \"Union of overlapping tubes\"")
+                      .arg(atLeast)
                       .arg(overlaps)
                       .arg(sqm->GetOverlappingFacePairs());
   emit message(

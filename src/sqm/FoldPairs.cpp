@@ -1,6 +1,6 @@
 #include "sqm/FoldPairs.h"
 
-#include "mesh/SelfIntersections.h"
+#include "mesh/FaceIntersections.h"
 
 #include <algorithm>
 
@@ -37,7 +37,7 @@ FoldPairs::FoldPairs(const SqmMesh& base, const Skeleton& skeleton) {
     }
     for (int n : seen) near_.insert(ordered(start, n));
   }
-  for (const auto& [a, b] : selfIntersectingFaces(base.vertices, base.faces))
+  for (const auto& [a, b] : intersectingFaces(base.vertices, base.faces).facePairs)
     baseOverlaps_.insert(ordered(faceNode_[size_t(a)], faceNode_[size_t(b)]));
 }
 

@@ -588,11 +588,18 @@ int SqmMesh::quadCount() const {
 }
 
 int SqmMesh::faceNode(size_t f) const {
-  std::map<int, int> votes;
-  for (const int v : faces[f]) ++votes[vertexNode[size_t(v)]];
-  return std::max_element(votes.begin(), votes.end(),
-                          [](const auto& a, const auto& b) { return a.second < b.second; })
-      ->first;
+  // Faces have a handful of vertices: counting each one's node among them beats a map (a million faces).
+  int best = 0, bestVotes = 0;
+  for (const int v : faces[f]) {
+    const int node = vertexNode[size_t(v)];
+    int votes = 0;
+    for (const int w : faces[f]) votes += vertexNode[size_t(w)] == node;
+    if (votes > bestVotes || (votes == bestVotes && node < best)) {
+      best = node;
+      bestVotes = votes;
+    }
+  }
+  return best;
 }
 
 SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,

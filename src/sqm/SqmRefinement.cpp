@@ -1,6 +1,6 @@
 #include "sqm/SqmRefinement.h"
 
-#include "mesh/SelfIntersections.h"
+#include "mesh/FaceIntersections.h"
 #include "common/Parallel.h"
 #include "sqm/FoldPairs.h"
 #include "sqm/SweptSpheres.h"
@@ -215,7 +215,7 @@ class FoldFinder {
     faces.reserve(tested.size());
     for (int f : tested) faces.push_back(faces_[size_t(f)]);
     std::vector<bool> result;
-    for (const auto& [a, b] : selfIntersectingFaces(points, faces)) {
+    for (const auto& [a, b] : intersectingFaces(points, faces).facePairs) {
       const int f = tested[size_t(a)], g = tested[size_t(b)];
       if (!isFold_(f, g)) {
         if (overlaps) overlaps->emplace_back(f, g);

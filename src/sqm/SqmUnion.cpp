@@ -1,8 +1,8 @@
 #include "sqm/SqmUnion.h"
 
+#include "mesh/FaceIntersections.h"
 #include "mesh/InsideTest.h"
 #include "mesh/MeshTopology.h"
-#include "mesh/SelfIntersections.h"
 #include "common/Parallel.h"
 #include "common/Stopwatch.h"
 #include "common/UnionFind.h"
@@ -395,7 +395,7 @@ void cleanAlongCurves(SqmMesh& mesh, const std::vector<char>& band,
                       const std::vector<std::pair<int, int>>& curves, SqmUnionResult& result) {
   int pairsBefore = -1;  // the uncleaned mesh's, counted when needed
   const auto uncleanedPairs = [&] {
-    if (pairsBefore < 0) pairsBefore = int(selfIntersectingFaces(mesh.vertices, mesh.faces).size());
+    if (pairsBefore < 0) pairsBefore = int(intersectingFaces(mesh.vertices, mesh.faces).facePairs.size());
     return pairsBefore;
   };
   std::vector<char> frozen;
@@ -405,7 +405,7 @@ void cleanAlongCurves(SqmMesh& mesh, const std::vector<char>& band,
     const CurveCleanup cleanup = cleanCurveBands(cleaned, band, curves, frozen, &original);
     if (round == 0) result.cleanup = cleanup;
     if (!cleanup.applied || !topologyOf(cleaned).isClosedManifold()) break;
-    const auto pairs = selfIntersectingFaces(cleaned.vertices, cleaned.faces);
+    const auto pairs = intersectingFaces(cleaned.vertices, cleaned.faces).facePairs;
     if (pairs.empty() || int(pairs.size()) <= uncleanedPairs()) {
       result.cleanup = cleanup;
       result.intersectingAfter = int(pairs.size());
@@ -429,7 +429,10 @@ void cleanAlongCurves(SqmMesh& mesh, const std::vector<char>& band,
 }  // namespace
 
 SqmOverlaps sqmOverlaps(const SqmMesh& mesh) {
-  return sqmOverlaps(mesh, selfIntersectingFaces(mesh.vertices, mesh.faces));
+  const FaceIntersections found = intersectingFaces(mesh.vertices, mesh.faces, size_t(kOverlapCountLimit));
+  SqmOverlaps overlaps = sqmOverlaps(mesh, found.facePairs);
+  overlaps.complete = found.complete;
+  return overlaps;
 }
 
 SqmOverlaps sqmOverlaps(const SqmMesh& mesh, const std::vector<std::pair<int, int>>& facePairs) {

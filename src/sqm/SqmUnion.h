@@ -30,11 +30,17 @@
 namespace medial {
 
 struct SqmOverlaps {
-  int facePairs = 0;  // pairs of polygons that cut each other
-  int nodePairs = 0;  // distinct pairs of skeleton nodes whose faces cut each other
+  int facePairs = 0;     // pairs of polygons that cut each other
+  int nodePairs = 0;     // distinct pairs of skeleton nodes whose faces cut each other
+  bool complete = true;  // false: counting stopped at kOverlapCountLimit face pairs ("at least")
 };
 
-/// The self-intersections of an SQM mesh, counted by polygons and by the skeleton nodes they belong to.
+/// Counting overlaps stops after this many pairs of faces: a note needs no more, and a skeleton whose
+/// tubes cross everywhere would spend longer counting than meshing.
+constexpr int kOverlapCountLimit = 100000;
+
+/// Where the tubes of an SQM mesh overlap: pairs of polygons of different skeleton nodes, not neighbours
+/// on the surface, that cut each other (GroupIntersections), and the pairs of nodes they belong to.
 SqmOverlaps sqmOverlaps(const SqmMesh& mesh);
 /// The same from pairs of polygons already known to cut each other (the refinement's last fold test).
 SqmOverlaps sqmOverlaps(const SqmMesh& mesh, const std::vector<std::pair<int, int>>& facePairs);
