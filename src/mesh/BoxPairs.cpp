@@ -55,14 +55,16 @@ using Entry = std::pair<uint64_t, int>;  // a cell's key and a box in it
 
 // The pairs of a bucket's entries that overlap, each reported in one cell only: the one holding the low
 // corner of the two boxes' overlap.
-void pairsInBucket(const std::vector<Box3>& boxes, const Grid& grid, std::vector<Entry>::iterator first,
-                   std::vector<Entry>::iterator last, std::vector<std::pair<int, int>>& pairs) {
+void pairsInBucket(const std::vector<Box3>& boxes, const std::vector<char>* selected, const Grid& grid,
+                   std::vector<Entry>::iterator first, std::vector<Entry>::iterator last,
+                   std::vector<std::pair<int, int>>& pairs) {
   std::sort(first, last);  // a handful of cells per bucket: equal keys become runs
   for (auto run = first; run != last;) {
     auto end = run;
     while (end != last && end->first == run->first) ++end;
     for (auto a = run; a != end; ++a)
       for (auto b = a + 1; b != end; ++b) {
+        if (selected && !(*selected)[size_t(a->second)] && !(*selected)[size_t(b->second)]) continue;
         const Box3 &p = boxes[size_t(a->second)], &q = boxes[size_t(b->second)];
         if (overlap(p, q) && keyOf(grid.cellOf(p.low.cwiseMax(q.low))) == run->first)
           pairs.emplace_back(std::min(a->second, b->second), std::max(a->second, b->second));
@@ -73,23 +75,43 @@ void pairsInBucket(const std::vector<Box3>& boxes, const Grid& grid, std::vector
 
 }  // namespace
 
-std::vector<std::pair<int, int>> overlappingBoxPairs(const std::vector<Box3>& boxes) {
+std::vector<std::pair<int, int>> overlappingBoxPairs(const std::vector<Box3>& boxes,
+                                                     const std::vector<char>* selected) {
   std::vector<std::pair<int, int>> pairs;
   if (boxes.size() < 2) return pairs;
   const Grid grid = gridFor(boxes);
-  // (cell, box) entries, grouped by cell with a counting sort on a hash of the key.
-  std::vector<Entry> entries;
+  const auto isSelected = [&](size_t b) { return !selected || (*selected)[b]; };
+  const auto cellsOf = [&](size_t b, auto&& visit) {
+    const Eigen::Array3i from = grid.cellOf(boxes[b].low), to = grid.cellOf(boxes[b].high);
+    for (int x = from.x(); x <= to.x(); ++x)
+      for (int y = from.y(); y <= to.y(); ++y)
+        for (int z = from.z(); z <= to.z(); ++z) visit(keyOf({x, y, z}));
+  };
   std::vector<int> large;  // boxes over too many cells
+  std::vector<char> isLarge(boxes.size(), 0);
   for (size_t b = 0; b < boxes.size(); ++b) {
     const Eigen::Array3i from = grid.cellOf(boxes[b].low), to = grid.cellOf(boxes[b].high);
     if ((to - from + 1).cast<int64_t>().prod() > kMaxCellsPerBox) {
       large.push_back(int(b));
-      continue;
+      isLarge[b] = 1;
     }
-    for (int x = from.x(); x <= to.x(); ++x)
-      for (int y = from.y(); y <= to.y(); ++y)
-        for (int z = from.z(); z <= to.z(); ++z) entries.emplace_back(keyOf({x, y, z}), int(b));
   }
+  // With a selection, only the cells its boxes cover.
+  std::vector<uint64_t> selectedCells;
+  if (selected) {
+    for (size_t b = 0; b < boxes.size(); ++b)
+      if (isSelected(b) && !isLarge[b]) cellsOf(b, [&](uint64_t key) { selectedCells.push_back(key); });
+    std::sort(selectedCells.begin(), selectedCells.end());
+    selectedCells.erase(std::unique(selectedCells.begin(), selectedCells.end()), selectedCells.end());
+  }
+  // (cell, box) entries, grouped by cell with a counting sort on a hash of the key.
+  std::vector<Entry> entries;
+  for (size_t b = 0; b < boxes.size(); ++b)
+    if (!isLarge[b])
+      cellsOf(b, [&](uint64_t key) {
+        if (!selected || std::binary_search(selectedCells.begin(), selectedCells.end(), key))
+          entries.emplace_back(key, int(b));
+      });
   const size_t buckets = std::max<size_t>(1, entries.size());
   const auto bucketOf = [&](uint64_t key) { return size_t((key * 0x9E3779B97F4A7C15ull) >> 20) % buckets; };
   std::vector<size_t> start(buckets + 1, 0);
@@ -107,17 +129,16 @@ std::vector<std::pair<int, int>> overlappingBoxPairs(const std::vector<Box3>& bo
       chunks,
       [&](size_t c) {
         for (size_t k = c * buckets / chunks; k < (c + 1) * buckets / chunks; ++k)
-          pairsInBucket(boxes, grid, grouped.begin() + long(start[k]), grouped.begin() + long(start[k + 1]),
-                        found[c]);
+          pairsInBucket(boxes, selected, grid, grouped.begin() + long(start[k]),
+                        grouped.begin() + long(start[k + 1]), found[c]);
       },
       1);
   for (const auto& part : found) pairs.insert(pairs.end(), part.begin(), part.end());
   // Boxes over many cells against every other box (a pair of two such boxes once).
-  std::vector<char> isLarge(boxes.size(), 0);
-  for (int b : large) isLarge[size_t(b)] = 1;
   for (int a : large)
     for (size_t b = 0; b < boxes.size(); ++b)
-      if (int(b) != a && (!isLarge[b] || int(b) > a) && overlap(boxes[size_t(a)], boxes[b]))
+      if (int(b) != a && (!isLarge[b] || int(b) > a) && (isSelected(size_t(a)) || isSelected(b)) &&
+          overlap(boxes[size_t(a)], boxes[b]))
         pairs.emplace_back(std::min(a, int(b)), std::max(a, int(b)));
   return pairs;
 }

@@ -16,7 +16,9 @@ struct Box3 {
 };
 
 /// Pairs (i, j), i < j, of boxes that overlap (touching counts), each once. The order is fixed by the
-/// boxes alone (grid cell by grid cell), not sorted.
-std::vector<std::pair<int, int>> overlappingBoxPairs(const std::vector<Box3>& boxes);
+/// boxes alone (grid cell by grid cell), not sorted. With `selected` (a flag per box), only the pairs with
+/// a selected box, in time for the selected boxes' cells (a few moved faces of a large mesh).
+std::vector<std::pair<int, int>> overlappingBoxPairs(const std::vector<Box3>& boxes,
+                                                     const std::vector<char>* selected = nullptr);
 
 }  // namespace medial

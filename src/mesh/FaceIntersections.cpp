@@ -72,7 +72,8 @@ bool polygonsCut(const std::vector<Point>& points, const std::vector<int>& f, co
 }  // namespace
 
 FaceIntersections intersectingFaces(const std::vector<Eigen::Vector3d>& vertices,
-                                    const std::vector<std::vector<int>>& faces, size_t limit) {
+                                    const std::vector<std::vector<int>>& faces, size_t limit,
+                                    const FacePairFilter& consider, const std::vector<char>* selected) {
   FaceIntersections result;
   std::vector<Point> points;
   points.reserve(vertices.size());
@@ -80,12 +81,15 @@ FaceIntersections intersectingFaces(const std::vector<Eigen::Vector3d>& vertices
   // Pairs of polygons (of three vertices or more) whose boxes overlap.
   std::vector<int> polygon;
   std::vector<Box3> tested;
+  std::vector<char> testedSelected;
   for (size_t f = 0; f < faces.size(); ++f)
     if (faces[f].size() >= 3) {
       tested.push_back(boxOf(vertices, faces[f]));
       polygon.push_back(int(f));
+      if (selected) testedSelected.push_back((*selected)[f]);
     }
-  std::vector<std::pair<int, int>> candidates = overlappingBoxPairs(tested);  // a fixed order
+  std::vector<std::pair<int, int>> candidates =
+      overlappingBoxPairs(tested, selected ? &testedSelected : nullptr);  // a fixed order
   for (auto& [a, b] : candidates) {
     a = polygon[size_t(a)];
     b = polygon[size_t(b)];
@@ -100,7 +104,7 @@ FaceIntersections intersectingFaces(const std::vector<Eigen::Vector3d>& vertices
         count,
         [&](size_t i) {
           const auto [f, g] = candidates[first + i];
-          cut[i] = polygonsCut(points, faces[size_t(f)], faces[size_t(g)]);
+          cut[i] = (!consider || consider(f, g)) && polygonsCut(points, faces[size_t(f)], faces[size_t(g)]);
         },
         1024);
     for (size_t i = 0; i < count; ++i)

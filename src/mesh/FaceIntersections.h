@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -24,9 +25,14 @@ struct FaceIntersections {
 /// vertices or the edge they share; triangles of one polygon are not tested against each other, nor
 /// degenerate ones (a vertex repeated). The result is the same on any number of cores: pairs are tested
 /// in a fixed order, and past `limit` pairs the search stops (FaceIntersections::complete is false) with
-/// the first `limit` of that order.
+/// the first `limit` of that order. With `consider`, only the pairs of polygons (indices into `faces`)
+/// for which it returns true are tested; it is called from several threads at once. With `selected` (a
+/// flag per face), only the pairs with a selected face, in time for the selected faces.
+using FacePairFilter = std::function<bool(int, int)>;
 FaceIntersections intersectingFaces(const std::vector<Eigen::Vector3d>& vertices,
                                     const std::vector<std::vector<int>>& faces,
-                                    size_t limit = std::numeric_limits<size_t>::max());
+                                    size_t limit = std::numeric_limits<size_t>::max(),
+                                    const FacePairFilter& consider = {},
+                                    const std::vector<char>* selected = nullptr);
 
 }  // namespace medial

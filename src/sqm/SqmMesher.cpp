@@ -687,9 +687,7 @@ SqmResult sqmMesh(const Skeleton& input, const SqmParameters& p,
   }
   if (p.unite || p.countOverlaps) {
     Stopwatch clock;
-    // The fold repair's last test, when it covered the final mesh, already found the overlaps.
-    result.overlaps = refinement.overlapsKnown ? sqmOverlaps(result.mesh, refinement.overlappingFaces)
-                                               : sqmOverlaps(result.mesh);
+    result.overlaps = sqmOverlaps(result.mesh);
     if (p.unite) {
       // Components smaller than a tenth of the smallest input node's ball are pockets between tubes (the
       // smallest part, a lone node, is a sphere of six quads: 0.37 of its ball).

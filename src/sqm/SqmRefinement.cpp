@@ -3,6 +3,7 @@
 #include "mesh/FaceIntersections.h"
 #include "common/Parallel.h"
 #include "sqm/FoldPairs.h"
+#include "sqm/FoldRepair.h"
 #include "sqm/SweptSpheres.h"
 
 #include <Eigen/Geometry>
@@ -133,108 +134,8 @@ double sharpScaleFactor(double t, double s) {
 
 namespace {
 
-// Fold repair (beyond the paper): the projection onto the swept surfaces can fold the refined surface
-// where tubes of different edges crowd (a thin tube leaving a flat ellipsoid, a right-angle bend), while
-// the base mesh's faces tessellated without projection lie on the base mesh, which does not cut itself.
-// Each vertex of a face that cuts another goes back halfway from its projection towards that unprojected
-// point, as often as needed (at most kFoldRepairSteps times, then all the way); every other vertex stays on
-// its surface.
-constexpr int kFoldRepairSteps = 6;
-constexpr int kFoldSmoothingSteps = 10;
-// How near (in radii of the face's nodes) a tube of another part must come to a base face for its refined
-// faces to be tested for overlaps (foldCandidates).
-constexpr double kCrowdedMargin = 0.3;
 // Rings of faces around the faces that can fold, tested with them (the other face of a fold).
 constexpr int kCandidateRings = 1;
-
-std::vector<std::vector<int>> vertexNeighbours(const std::vector<std::vector<int>>& faces, size_t vertices) {
-  std::vector<std::vector<int>> neighbours(vertices);
-  for (const auto& f : faces)
-    for (size_t k = 0; k < f.size(); ++k) {
-      const int a = f[k], b = f[(k + 1) % f.size()];
-      neighbours[size_t(a)].push_back(b);
-      neighbours[size_t(b)].push_back(a);
-    }
-  for (auto& n : neighbours) {  // each edge is seen from both of its faces
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-  }
-  return neighbours;
-}
-
-// Finds the vertices of faces that cut others, where the two are a fold (FoldPairs: not tubes of other
-// parts overlapping). After the first test over the whole mesh, only the faces around vertices that were
-// folded are tested again (the repair may test many times, and a full test of a refined mesh is slow),
-// and a last full test confirms that no fold is left elsewhere.
-class FoldFinder {
- public:
-  using IsFold = std::function<bool(int, int)>;  // of two faces that cut each other
-  // `candidates`: the faces that can fold at all (FoldCandidates); the full test covers these.
-  FoldFinder(const std::vector<std::vector<int>>& faces, size_t vertices, IsFold isFold,
-             std::vector<int> candidates)
-      : faces_(faces), vertices_(vertices), isFold_(std::move(isFold)), everyFace_(std::move(candidates)) {}
-  // Every vertex of a candidate face that folds over another (empty when none does).
-  std::vector<bool> all(const std::vector<Eigen::Vector3d>& points) {
-    local_.clear();
-    inRegion_.assign(faces_.size(), false);
-    overlaps_.clear();
-    return folded(points, everyFace_, &overlaps_);
-  }
-  // From now on the full tests cover every face: once folds are found, the repair moves vertices, and the
-  // moved faces may cut faces that could not fold before (the figure refined four times kept one pair).
-  void testEveryFace() {
-    everyFace_.resize(faces_.size());
-    std::iota(everyFace_.begin(), everyFace_.end(), 0);
-  }
-  // The pairs of faces that cut each other without being a fold, in the last full test.
-  const std::vector<std::pair<int, int>>& overlaps() const { return overlaps_; }
-  // The same, testing only the faces near the vertices folded so far; a full test when none is left.
-  std::vector<bool> again(const std::vector<Eigen::Vector3d>& points, const std::vector<bool>& foldedBefore) {
-    if (facesOf_.empty()) {  // built once folds are found (most meshes have none)
-      facesOf_.resize(vertices_);
-      for (size_t f = 0; f < faces_.size(); ++f)
-        for (int v : faces_[f]) facesOf_[size_t(v)].push_back(int(f));
-    }
-    for (size_t v = 0; v < foldedBefore.size(); ++v)
-      if (foldedBefore[v])
-        for (int f : facesOf_[v])
-          for (int w : faces_[size_t(f)])  // the faces around the folded faces too
-            for (int g : facesOf_[size_t(w)])
-              if (!inRegion_[size_t(g)]) {
-                inRegion_[size_t(g)] = true;
-                local_.push_back(g);
-              }
-    const std::vector<bool> found = folded(points, local_);
-    return found.empty() ? all(points) : found;
-  }
-
- private:
-  std::vector<bool> folded(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& tested,
-                           std::vector<std::pair<int, int>>* overlaps = nullptr) const {
-    std::vector<std::vector<int>> faces;
-    faces.reserve(tested.size());
-    for (int f : tested) faces.push_back(faces_[size_t(f)]);
-    std::vector<bool> result;
-    for (const auto& [a, b] : intersectingFaces(points, faces).facePairs) {
-      const int f = tested[size_t(a)], g = tested[size_t(b)];
-      if (!isFold_(f, g)) {
-        if (overlaps) overlaps->emplace_back(f, g);
-        continue;
-      }
-      result.resize(points.size(), false);
-      for (int h : {f, g})
-        for (int v : faces_[size_t(h)]) result[size_t(v)] = true;
-    }
-    return result;
-  }
-  const std::vector<std::vector<int>>& faces_;
-  size_t vertices_;
-  std::vector<std::vector<int>> facesOf_;  // the faces of each vertex
-  IsFold isFold_;
-  std::vector<int> everyFace_, local_;  // the candidates; the faces tested again
-  std::vector<std::pair<int, int>> overlaps_;
-  std::vector<bool> inRegion_;
-};
 
 // Two edges meeting at a node at less than kGentleBend degrees: their swept surfaces join smoothly there.
 constexpr double kGentleBend = 30;
@@ -251,19 +152,16 @@ bool gentleBend(const Skeleton& skeleton, int e, int g) {
   return false;
 }
 
-// The faces of a refined level that can fold or overlap at all, and a ring of faces around them: faces
-// whose vertices went onto the surfaces of edges that share no node or into a crease (not the inner side
-// of a gentle bend), faces
-// turned by the projection by more than a right angle from their place on the base mesh, and the faces of
-// base faces near tubes of other parts (`crowded`). Elsewhere every vertex of a face went onto one smooth
-// swept surface, along its normal, from a base mesh that does not cut itself: nothing there can cut
-// anything. Once folds are found, the
-// tests cover every face (FoldFinder::testEveryFace).
+// The faces of a refined level that can fold at all, and a ring of faces around them: faces whose vertices
+// went onto the surfaces of edges that share no node or into a crease (not the inner side of a gentle
+// bend), and faces turned by the projection by more than a right angle from their place on the base mesh.
+// Elsewhere every vertex of a face went onto one smooth swept surface, along its normal, from a base mesh
+// that does not fold: nothing there can fold (tubes of other parts may cut it: those overlaps are counted
+// on the final mesh, sqmOverlaps). Once folds are found, the tests cover every face (FoldRepair).
 std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces,
                                 const std::vector<Eigen::Vector3d>& flat,
                                 const std::vector<Eigen::Vector3d>& projected,
                                 const std::vector<int>& chosenEdge, const std::vector<char>& blended,
-                                const std::vector<int>& baseFace, const std::vector<char>& crowded,
                                 const Skeleton& skeleton) {
   // Two edges' surfaces meet smoothly where the edges share a node (both hold its sphere).
   auto joined = [&](int a, int b) {
@@ -279,7 +177,7 @@ std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces,
   std::vector<char> marked(flat.size(), 0);
   for (size_t f = 0; f < faces.size(); ++f) {
     const auto& face = faces[f];
-    bool risky = crowded[size_t(baseFace[f])] || normal(projected, face).dot(normal(flat, face)) <= 0;
+    bool risky = normal(projected, face).dot(normal(flat, face)) <= 0;
     for (int v : face)
       risky = risky || blended[size_t(v)] || !joined(chosenEdge[size_t(v)], chosenEdge[size_t(face[0])]);
     if (risky)
@@ -297,46 +195,6 @@ std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces,
     if (std::any_of(faces[f].begin(), faces[f].end(), [&](int v) { return marked[size_t(v)]; }))
       candidates.push_back(int(f));
   return candidates;
-}
-
-// Returns the vertices moved; *settled tells whether no face folds over another any more, and then
-// *overlaps has the pairs of faces that cut each other without being folds (the last test was a full one).
-int repairFolds(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& flat,
-                std::vector<Eigen::Vector3d>& points, const FoldFinder::IsFold& isFold,
-                std::vector<int> candidates, bool* settled, std::vector<std::pair<int, int>>* overlaps) {
-  const std::vector<Eigen::Vector3d> projected = points;
-  std::vector<double> weight(points.size(), 1.0);  // 1: projected, 0: on the base mesh
-  int moved = 0;
-  FoldFinder finder(faces, points.size(), isFold, std::move(candidates));
-  std::vector<bool> folded = finder.all(points);
-  if (!folded.empty()) finder.testEveryFace();
-  for (int step = 0; step <= kFoldRepairSteps && !folded.empty(); ++step) {
-    for (size_t v = 0; v < points.size(); ++v) {
-      if (!folded[v]) continue;
-      moved += weight[v] == 1.0;
-      weight[v] = step < kFoldRepairSteps ? 0.5 * weight[v] : 0.0;
-      points[v] = flat[v] + weight[v] * (projected[v] - flat[v]);
-    }
-    folded = finder.again(points, folded);
-  }
-  // A fold of the base mesh itself (two faces almost coplanar across a sharp vertex, once on the hand
-  // sample) shows once its quads are split: the vertices still folded move to the centroid of their
-  // neighbours, at most kFoldSmoothingSteps times.
-  const auto neighbours =
-      folded.empty() ? std::vector<std::vector<int>>{} : vertexNeighbours(faces, points.size());
-  for (int step = 0; step < kFoldSmoothingSteps && !folded.empty(); ++step) {
-    const std::vector<Eigen::Vector3d> before = points;
-    for (size_t v = 0; v < points.size(); ++v) {
-      if (!folded[v] || neighbours[v].empty()) continue;
-      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-      for (int n : neighbours[v]) sum += before[size_t(n)];
-      points[v] = sum / double(neighbours[v].size());
-    }
-    folded = finder.again(points, folded);
-  }
-  *settled = folded.empty();
-  if (*settled) *overlaps = finder.overlaps();
-  return moved;
 }
 
 // A vertex as OpenSubdiv's PrimvarRefiner interpolates it.
@@ -388,18 +246,10 @@ std::vector<std::vector<int>> levelFaces(const Far::TopologyLevel& level) {
 
 // Per base face: the edges it can project onto, those whose swept volume comes within a radius of it and
 // which are near its node on the skeleton (a tube of another part passing through is not its surface: the
-// overlap is SqmUnion's work); and whether a tube of another part comes near it (`crowded`: its refined
-// surface bulges out of the base face by a fraction of the radius, where tubes can overlap).
-struct FaceSurroundings {
+// overlap is SqmUnion's work).
+std::vector<std::vector<int>> nearEdgesOf(const SqmMesh& mesh, const Skeleton& skeleton,
+                                          const SweptSpheres& spheres, const FoldPairs& folds) {
   std::vector<std::vector<int>> nearEdges;
-  std::vector<char> crowded;
-};
-
-FaceSurroundings surroundingsOf(const SqmMesh& mesh, const Skeleton& skeleton, const SweptSpheres& spheres,
-                                const FoldPairs& folds) {
-  FaceSurroundings result;
-  std::vector<std::vector<int>>& nearEdges = result.nearEdges;
-  result.crowded.assign(mesh.faces.size(), 0);
   const double largestRadius = *std::max_element(skeleton.radii.begin(), skeleton.radii.end());
   for (size_t f = 0; f < mesh.faces.size(); ++f) {
     Eigen::Vector3d low = mesh.vertices[size_t(mesh.faces[f][0])], high = low;
@@ -419,12 +269,8 @@ FaceSurroundings surroundingsOf(const SqmMesh& mesh, const Skeleton& skeleton, c
                                                      !folds.near(node, skeleton.edges[size_t(e)][1]);
                                             }),
                              nearEdges.back().end());
-    const std::vector<int> close = spheres.edgesNear(low, high, kCrowdedMargin * radius);
-    result.crowded[f] = std::any_of(close.begin(), close.end(), [&](int e) {
-      return std::find(nearEdges.back().begin(), nearEdges.back().end(), e) == nearEdges.back().end();
-    });
   }
-  return result;
+  return nearEdges;
 }
 
 // One level's vertices on the swept surfaces (the paper's tessellation: the bilinear points of the faces,
@@ -506,8 +352,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
   if (!refiner) return 0;
   const SweptSpheres spheres(skeleton);
   const FoldPairs folds(mesh, skeleton);
-  const FaceSurroundings around = surroundingsOf(mesh, skeleton, spheres, folds);
-  const std::vector<std::vector<int>>& nearEdges = around.nearEdges;
+  const std::vector<std::vector<int>> nearEdges = nearEdgesOf(mesh, skeleton, spheres, folds);
   const std::vector<Eigen::Vector3d> sharp =
       scaling.enabled ? sharpVertices(mesh) : std::vector<Eigen::Vector3d>{};
 
@@ -524,7 +369,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
     std::vector<RefinedPoint> onBase = points;  // the base mesh's tessellation
     baseFace.resize(mesh.faces.size());
     for (size_t f = 0; f < baseFace.size(); ++f) baseFace[f] = int(f);
-    bool settled = true;
+    bool nothingToRedo = true;  // no fold left that repairing the coarser levels could undo
     for (int level = 1; level <= levels; ++level) {
       const Far::TopologyLevel& topology = refiner->GetLevel(level);
       std::vector<RefinedPoint> next(size_t(topology.GetNumVertices()));
@@ -541,14 +386,13 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
           return folds.isFold(nextBaseFace[size_t(f)], nextBaseFace[size_t(g)]);
         };
         auto faces = levelFaces(topology);
-        const int moved =
+        FoldRepairResult repair =
             repairFolds(faces, projection.flat, projection.projected, isFold,
                         foldCandidates(faces, projection.flat, projection.projected, projection.chosenEdge,
-                                       projection.blended, nextBaseFace, around.crowded, skeleton),
-                        &settled, &report->overlappingFaces);
+                                       projection.blended, skeleton));
+        nothingToRedo = !repair.repairable;
         if (level == levels) {
-          report->repairedVertices = moved;
-          report->overlapsKnown = settled;
+          report->repairedVertices = repair.movedVertices;
           lastFaces = std::move(faces);
         }
       }
@@ -557,7 +401,7 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
       onBase = std::move(nextOnBase);
       baseFace = std::move(nextBaseFace);
     }
-    return settled;
+    return nothingToRedo;
   };
   if (!runLevels(false)) runLevels(true);
   storeRefined(refiner->GetLevel(levels), points, baseFace, nearEdges, skeleton, std::move(lastFaces), mesh);

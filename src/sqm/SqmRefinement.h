@@ -16,10 +16,9 @@
 // the surface's radius times B(t), a cubic Bézier curve with control values (s, s, 1, 1), s =
 // minimumScale, at t = (distance to the nearest sharp base vertex) / (radius there), clamped to [0, 1]:
 // s at the sharp vertex, 1 one radius away. The paper's curve is likewise constant (not tuned per vertex).
-// Fold repair (beyond the paper): after each level's projection, the vertices of faces that cut other
-// faces (CGAL's exact test) move back halfway towards the base mesh's own tessellation (unprojected),
-// repeatedly, until no face cuts another (at most six halvings, then all the way); a fold of the base mesh
-// itself is then smoothed (the folded vertices go to their neighbours' centroid).
+// Fold repair (beyond the paper, FoldRepair): after the last level's projection, the vertices of faces
+// that fold over others move back towards the base mesh's own tessellation until none do; when folds are
+// left that repairing the coarser levels could undo, every level is refined again with the repair.
 // After refinement every face is a quad, and the mesh stays closed and manifold.
 #pragma once
 
@@ -34,11 +33,6 @@ namespace medial {
 // What the refinement's fold repair found, beside the refined mesh.
 struct RefinementReport {
   int repairedVertices = 0;  // vertices moved back towards the base mesh
-  // With the fold repair, its last test covered the whole final mesh: the pairs of faces that cut each
-  // other there without being folds (tubes of other parts overlapping, FoldPairs) are known, and counting
-  // them again (sqmOverlaps) is not needed.
-  bool overlapsKnown = false;
-  std::vector<std::pair<int, int>> overlappingFaces;
 };
 
 // Refines `mesh` in place; `skeleton` is the skeleton it was made from (nodes, radii, edges). With
