@@ -6,7 +6,10 @@ skeleton: faces, quad share, open (border) and non-manifold edges, pairs of face
 exact test, vtkMedialMeshTopology), and median seconds of each (Blender's the modifier's evaluation inside
 Blender 3.4 run headless, not its start-up), and the time ratio Blender / SQM. The skeletons whose tubes overlap
 (data/skeletons/overlapping) get a second SQM row with the union (SetUnion): the only row of the two tools whose
-mesh bounds a volume there. Needs `blender` on the PATH (Debian's Blender 3.4); without it the script says so
+mesh bounds a volume there. A second table compares SQM's refinement (--subdivide 3: tessellation projected
+onto the swept spheres, fold repair, overlap count) with Blender's Subdivision Surface modifier (Catmull-Clark,
+level 3) on the same base mesh, SQM's own at K = 0: median seconds of each and Blender's first evaluation (its
+cold run, caches empty). Needs `blender` on the PATH (Debian's Blender 3.4); without it the script says so
 and exits 0.
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 bench/sqm_blender_bench.py [--repeat N] [SKELETON...]
 """
@@ -38,6 +41,27 @@ BLENDER_SCRIPT = r'''
 import bpy, json, sys, time
 skeletons = json.load(open(sys.argv[sys.argv.index("--") + 1]))
 repeat = int(sys.argv[sys.argv.index("--") + 2])
+
+def subdivision_row(s):
+    """Catmull-Clark level 3 on SQM's base mesh: one MEDIAL-SUBSURF line."""
+    mesh = bpy.data.meshes.new(s["name"] + " base")
+    mesh.from_pydata(s["base"]["vertices"], [], s["base"]["polygons"])
+    obj = bpy.data.objects.new(s["name"] + " base", mesh)
+    bpy.context.collection.objects.link(obj)
+    modifier = obj.modifiers.new("subsurf", "SUBSURF")
+    modifier.levels = modifier.render_levels = 3
+    seconds = []
+    for run in range(repeat + 1):
+        mesh.update()
+        start = time.perf_counter()
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        result = obj.evaluated_get(depsgraph).to_mesh()
+        seconds.append(time.perf_counter() - start)
+        faces = len(result.polygons)
+        obj.evaluated_get(depsgraph).to_mesh_clear()
+    later = sorted(seconds[1:])
+    print("MEDIAL-SUBSURF " + json.dumps({"name": s["name"], "faces": faces, "first": seconds[0],
+                                          "seconds": later[len(later) // 2]}), flush=True)
 for s in skeletons:
     mesh = bpy.data.meshes.new(s["name"])
     mesh.from_pydata(s["nodes"], s["edges"], [])
@@ -69,6 +93,8 @@ for s in skeletons:
                                        "vertices": [list(v.co) for v in result.vertices],
                                        "polygons": [list(p.vertices) for p in result.polygons],
                                        "seconds": sorted(seconds)[len(seconds) // 2]}), flush=True)
+    if "base" in s:
+        subdivision_row(s)
 '''
 
 
@@ -124,6 +150,34 @@ def sqm_row(skeleton, repeat, union=False):
             "pairs": topology.GetNumberOfIntersectingFacePairs(), "seconds": statistics.median(seconds)}
 
 
+def mesh_arrays(mesh):
+    """Vertices and polygons of a vtkPolyData, as lists."""
+    ids = vtk.vtkIdList()
+    polygons = []
+    for c in range(mesh.GetNumberOfCells()):
+        mesh.GetCellPoints(c, ids)
+        polygons.append([ids.GetId(k) for k in range(ids.GetNumberOfIds())])
+    return {"vertices": [list(mesh.GetPoint(i)) for i in range(mesh.GetNumberOfPoints())], "polygons": polygons}
+
+
+def refined_row(skeleton, repeat, levels=3):
+    """SQM at K = `levels` (median and first seconds), and its base mesh (K = 0) for Blender."""
+    sqm = medial.vtkMedialSQM()
+    sqm.SetInputData(skeleton)
+    sqm.Update()
+    base = mesh_arrays(sqm.GetOutput())
+    sqm.SetSubdivisionLevels(levels)
+    seconds = []
+    for _ in range(repeat + 1):
+        sqm.Modified()
+        start = time.perf_counter()
+        sqm.Update()
+        seconds.append(time.perf_counter() - start)
+    return base, {"faces": sqm.GetOutput().GetNumberOfCells(), "first": seconds[0],
+                  "seconds": statistics.median(seconds[1:]),
+                  "pairs": intersecting_pairs(sqm.GetOutput()).GetNumberOfIntersectingFacePairs()}
+
+
 def skin_pairs(report):
     """The intersecting face pairs of Blender's evaluated mesh."""
     points, polygons = vtk.vtkPoints(), vtk.vtkCellArray()
@@ -149,10 +203,11 @@ def main():
     if not shutil.which("blender"):
         print("sqm_blender_bench: blender is not installed; Blender's Skin modifier row left out")
         return 0
-    rows, skeletons = {}, []
+    rows, refined, skeletons = {}, {}, []
     for path in args.skeletons:
         data, skeleton = read_skeleton(path)
         rows[skeleton["name"]] = sqm_row(data, args.repeat)
+        skeleton["base"], refined[skeleton["name"]] = refined_row(data, max(1, min(args.repeat, 5)))
         if overlapping(path):  # the union, beside Blender's same row
             rows[skeleton["name"] + " union"] = sqm_row(data, max(1, min(args.repeat, 3)), union=True)
         skeletons.append(skeleton)
@@ -165,11 +220,14 @@ def main():
         env = {k: v for k, v in os.environ.items() if k not in ("LD_PRELOAD", "ASAN_OPTIONS")}
         done = subprocess.run(["blender", "-b", "--factory-startup", "--python", script, "--", spec, str(args.repeat)],
                               capture_output=True, text=True, timeout=1800, env=env)
-    skin = {}
+    skin, subsurf = {}, {}
     for line in done.stdout.splitlines():
         if line.startswith("MEDIAL-SKIN "):
             report = json.loads(line[len("MEDIAL-SKIN "):])
             skin[report["name"]] = report
+        elif line.startswith("MEDIAL-SUBSURF "):
+            report = json.loads(line[len("MEDIAL-SUBSURF "):])
+            subsurf[report["name"]] = report
     print("SQM (vtkMedialSQM) vs Blender 3.4's Skin modifier, median of %d runs" % args.repeat)
     print("%-20s | %8s %6s %5s %5s %5s %6s | %8s %6s %5s %5s %5s %6s | %9s" % (
         "skeleton", "SQM ms", "faces", "quads", "open", "nonm", "pairs", "Skin ms", "faces", "quads", "open", "nonm",
@@ -186,6 +244,17 @@ def main():
             ours["nonmanifold"], ours["pairs"], 1e3 * peer["seconds"], peer["faces"],
             100.0 * peer["quads"] / max(1, peer["faces"]), peer["open"], peer["nonmanifold"], peer["pairs"],
             peer["seconds"] / ours["seconds"]))
+    print("\nSQM --subdivide 3 vs Blender's Subdivision Surface (Catmull-Clark, level 3) on SQM's base mesh,"
+          " median of the runs after the first")
+    print("%-20s | %8s %8s %7s %6s | %8s %8s %7s | %8s %8s" % (
+        "skeleton", "SQM ms", "first ms", "faces", "pairs", "CC ms", "first ms", "faces", "SQM/CC", "first"))
+    for name, ours in refined.items():
+        peer = subsurf.get(name)
+        if not peer:
+            continue
+        print("%-20s | %8.1f %8.1f %7d %6d | %8.1f %8.1f %7d | %8.2f %8.2f" % (
+            name, 1e3 * ours["seconds"], 1e3 * ours["first"], ours["faces"], ours["pairs"], 1e3 * peer["seconds"],
+            1e3 * peer["first"], peer["faces"], ours["seconds"] / peer["seconds"], ours["first"] / peer["first"]))
     return 0
 
 

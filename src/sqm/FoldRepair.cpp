@@ -60,13 +60,9 @@ class FoldFinder {
     return found.vertices;
   }
   // From now on the confirming tests cover every face: once folds are found, the repair moves vertices,
-  // and the moved faces may cut faces that could not fold before; and the faces left out as unable to
-  // fold are tested once too (the figure refined four times kept a fold of two of them).
+  // and the moved faces may cut faces that could not fold before (the figure refined four times kept one
+  // pair).
   void testEveryFace() {
-    std::vector<char> candidate(faces_.size(), 0);
-    for (int f : everyFace_) candidate[size_t(f)] = 1;
-    for (size_t f = 0; f < faces_.size(); ++f)
-      if (!candidate[f]) touch(int(f));
     everyFace_.resize(faces_.size());
     std::iota(everyFace_.begin(), everyFace_.end(), 0);
   }

@@ -153,23 +153,17 @@ bool gentleBend(const Skeleton& skeleton, int e, int g) {
 }
 
 // The faces of a refined level that can fold at all, and a ring of faces around them: faces whose vertices
-// went onto the surfaces of edges that share no node or into a crease (not the inner side of a gentle
-// bend), and faces turned by the projection by more than a right angle from their place on the base mesh.
-// Elsewhere every vertex of a face went onto one smooth swept surface, along its normal, from a base mesh
-// that does not fold: nothing there can fold (tubes of other parts may cut it: those overlaps are counted
-// on the final mesh, sqmOverlaps). Once folds are found, the tests cover every face (FoldRepair).
+// went onto the surfaces of different edges (where two swept surfaces meet: the figure refined four times
+// folded at the inner side of a bend, between faces on the surfaces of two edges sharing a node) or into a
+// crease (not the inner side of a gentle bend), and faces turned by the projection by more than a right
+// angle from their place on the base mesh. Elsewhere every vertex of a face went onto one smooth swept
+// surface, along its normal, from a base mesh that does not fold: nothing there can fold (tubes of other
+// parts may cut it: those overlaps are counted on the final mesh, sqmOverlaps). Once folds are found, the
+// tests cover every face (FoldRepair).
 std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces,
                                 const std::vector<Eigen::Vector3d>& flat,
                                 const std::vector<Eigen::Vector3d>& projected,
-                                const std::vector<int>& chosenEdge, const std::vector<char>& blended,
-                                const Skeleton& skeleton) {
-  // Two edges' surfaces meet smoothly where the edges share a node (both hold its sphere).
-  auto joined = [&](int a, int b) {
-    if (a == b) return true;
-    if (a < 0 || b < 0) return false;
-    const auto &e = skeleton.edges[size_t(a)], &g = skeleton.edges[size_t(b)];
-    return e[0] == g[0] || e[0] == g[1] || e[1] == g[0] || e[1] == g[1];
-  };
+                                const std::vector<int>& chosenEdge, const std::vector<char>& blended) {
   auto normal = [](const std::vector<Eigen::Vector3d>& points, const std::vector<int>& f) {
     return (points[size_t(f[2])] - points[size_t(f[0])])
         .cross(points[size_t(f[3 % f.size()])] - points[size_t(f[1])]);
@@ -179,7 +173,7 @@ std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces,
     const auto& face = faces[f];
     bool risky = normal(projected, face).dot(normal(flat, face)) <= 0;
     for (int v : face)
-      risky = risky || blended[size_t(v)] || !joined(chosenEdge[size_t(v)], chosenEdge[size_t(face[0])]);
+      risky = risky || blended[size_t(v)] || chosenEdge[size_t(v)] != chosenEdge[size_t(face[0])];
     if (risky)
       for (int v : face) marked[size_t(v)] = 1;
   }
@@ -386,10 +380,9 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
           return folds.isFold(nextBaseFace[size_t(f)], nextBaseFace[size_t(g)]);
         };
         auto faces = levelFaces(topology);
-        FoldRepairResult repair =
-            repairFolds(faces, projection.flat, projection.projected, isFold,
-                        foldCandidates(faces, projection.flat, projection.projected, projection.chosenEdge,
-                                       projection.blended, skeleton));
+        FoldRepairResult repair = repairFolds(faces, projection.flat, projection.projected, isFold,
+                                              foldCandidates(faces, projection.flat, projection.projected,
+                                                             projection.chosenEdge, projection.blended));
         nothingToRedo = !repair.repairable;
         if (level == levels) {
           report->repairedVertices = repair.movedVertices;
