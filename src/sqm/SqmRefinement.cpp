@@ -163,7 +163,13 @@ bool gentleBend(const Skeleton& skeleton, int e, int g) {
 std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces,
                                 const std::vector<Eigen::Vector3d>& flat,
                                 const std::vector<Eigen::Vector3d>& projected,
-                                const std::vector<int>& chosenEdge, const std::vector<char>& blended) {
+                                const std::vector<int>& chosenEdge, const std::vector<char>& blended,
+                                const Skeleton& skeleton) {
+  // Two edges' surfaces meet smoothly where the edges share a node (both hold its sphere) at a gentle bend.
+  auto smoothlyJoined = [&](int a, int b) {
+    if (a == b) return true;
+    return a >= 0 && b >= 0 && gentleBend(skeleton, a, b);
+  };
   auto normal = [](const std::vector<Eigen::Vector3d>& points, const std::vector<int>& f) {
     return (points[size_t(f[2])] - points[size_t(f[0])])
         .cross(points[size_t(f[3 % f.size()])] - points[size_t(f[1])]);
@@ -173,7 +179,8 @@ std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces,
     const auto& face = faces[f];
     bool risky = normal(projected, face).dot(normal(flat, face)) <= 0;
     for (int v : face)
-      risky = risky || blended[size_t(v)] || chosenEdge[size_t(v)] != chosenEdge[size_t(face[0])];
+      risky =
+          risky || blended[size_t(v)] || !smoothlyJoined(chosenEdge[size_t(v)], chosenEdge[size_t(face[0])]);
     if (risky)
       for (int v : face) marked[size_t(v)] = 1;
   }
@@ -380,9 +387,10 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
           return folds.isFold(nextBaseFace[size_t(f)], nextBaseFace[size_t(g)]);
         };
         auto faces = levelFaces(topology);
-        FoldRepairResult repair = repairFolds(faces, projection.flat, projection.projected, isFold,
-                                              foldCandidates(faces, projection.flat, projection.projected,
-                                                             projection.chosenEdge, projection.blended));
+        FoldRepairResult repair =
+            repairFolds(faces, projection.flat, projection.projected, isFold,
+                        foldCandidates(faces, projection.flat, projection.projected, projection.chosenEdge,
+                                       projection.blended, skeleton));
         nothingToRedo = !repair.repairable;
         if (level == levels) {
           report->repairedVertices = repair.movedVertices;
