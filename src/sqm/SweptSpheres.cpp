@@ -36,7 +36,14 @@ SweptPoint onEllipsoidCone(const Eigen::Vector3d& p, const Skeleton& s, int edge
   SweptPoint c = onSphere(p, a + t * ab, (1 - t) * s.radii[size_t(e[0])] + t * s.radii[size_t(e[1])]);
   if (!c.found) return c;
   const Eigen::Matrix3d m = (1 - t) * s.ellipsoidAxes[size_t(e[0])] + t * s.ellipsoidAxes[size_t(e[1])];
-  const Eigen::Vector3d local = m.fullPivLu().solve(c.direction);
+  // Eigen's closed-form 3x3 inverse (cofactors) where m is well conditioned: 4x faster than a pivoting LU,
+  // and this runs for every refined vertex of an ellipsoid's tubes.
+  double determinant = 0;
+  bool invertible = false;
+  Eigen::Matrix3d inverse;
+  m.computeInverseAndDetWithCheck(inverse, determinant, invertible, 1e-12 * std::pow(m.norm(), 3));
+  const Eigen::Vector3d local =
+      invertible ? Eigen::Vector3d(inverse * c.direction) : m.fullPivLu().solve(c.direction);
   if (local.norm() > 0) c.radius = 1 / local.norm();
   return c;
 }
