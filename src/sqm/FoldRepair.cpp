@@ -35,9 +35,10 @@ std::vector<std::vector<int>> vertexNeighbours(const std::vector<std::vector<int
 
 // Finds the vertices of faces that fold over others; only pairs that are folds are tested (a refined level
 // of a dense tree has 100,000 faces and tens of thousands of pairs of overlapping tubes). After the first
-// test over every candidate face, only the pairs with a face that moved in the last step are tested, among
-// the faces around those moved so far; when none is left there, a confirming test covers the pairs of every
-// face with a face moved since the last full test - pairs of faces that did not move are as they were.
+// test over every candidate face, only the pairs with a face that moved in the last step are tested,
+// among the faces within kLocalRings rings of those; when none is left there, a confirming test covers the
+// pairs of every face with a face moved since the last full test - pairs of faces that did not move are as
+// they were.
 class FoldFinder {
  public:
   FoldFinder(const std::vector<std::vector<int>>& faces, size_t vertices, IsFold isFold,
