@@ -8,8 +8,10 @@ install(TARGETS medial medial-make-colon-phantom RUNTIME DESTINATION ${CMAKE_INS
 if(TARGET medial-gui)
   install(TARGETS medial-gui RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
 endif()
-install(FILES ${MEDIAL_PYTHON_PATH}/medial/__init__.py ${MEDIAL_PYTHON_PATH}/medial/batch.py DESTINATION ${medial_python_destination}/medial
-        COMPONENT runtime)
+list(TRANSFORM MEDIAL_PYTHON_MODULES PREPEND ${MEDIAL_PYTHON_PATH}/medial/ OUTPUT_VARIABLE python_modules)
+list(TRANSFORM python_modules APPEND .py)
+install(FILES ${MEDIAL_PYTHON_PATH}/medial/__init__.py ${python_modules}
+        DESTINATION ${medial_python_destination}/medial COMPONENT runtime)
 
 configure_file(${CMAKE_CURRENT_LIST_DIR}/MedialConfig.cmake.in ${CMAKE_BINARY_DIR}/lib/cmake/medial/MedialConfig.cmake
                @ONLY)

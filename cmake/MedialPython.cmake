@@ -12,8 +12,13 @@ vtk_module_wrap_python(
 set(MEDIAL_PYTHON_PATH ${CMAKE_BINARY_DIR}/${medial_python_destination} CACHE INTERNAL "")
 configure_file(${CMAKE_CURRENT_LIST_DIR}/medial_init.py.in
                ${MEDIAL_PYTHON_PATH}/medial/__init__.py @ONLY)
-# The pure-Python modules of the package (the batch runner).
-configure_file(${PROJECT_SOURCE_DIR}/python/medial/batch.py ${MEDIAL_PYTHON_PATH}/medial/batch.py COPYONLY)
+# The pure-Python modules of the package: the API (api, inputs, options, results, convert, errors) and
+# the batch runner.
+set(MEDIAL_PYTHON_MODULES api batch convert errors inputs options results CACHE INTERNAL "")
+foreach(module IN LISTS MEDIAL_PYTHON_MODULES)
+  configure_file(${PROJECT_SOURCE_DIR}/python/medial/${module}.py ${MEDIAL_PYTHON_PATH}/medial/${module}.py
+                 COPYONLY)
+endforeach()
 
 # The environment of tests that run Debian's interpreter on the package. Under the sanitizers
 # (scripts/sanitize) the interpreter is not instrumented: the runtimes are preloaded, and leaks are not
