@@ -89,4 +89,6 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${CMAKE_BINARY_DIR}/lib)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
     "python3, python3-vtk9, python3-numpy, python3-distributed, xvfb, xauth, libgl1-mesa-dri")
+# meshio: medial.read's formats beyond VTK's (the API works without it).
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-meshio")
 include(CPack)

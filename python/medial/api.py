@@ -264,6 +264,7 @@ def sketch(strokes, **options):
                     notes)
 
 
+UP_AXES = ("x", "y", "z", "-x", "-y", "-z")
 RIG_OPTIONS = {"max_influences": Number("MaxInfluences"), "scale": Number("Scale")}
 
 
@@ -301,6 +302,8 @@ def rig(skeleton, mesh=None, path="rig.glb", *, up_axis="y", heat=None, **option
     """
     writer = vtkMedialRigWriter()
     apply_options(writer, RIG_OPTIONS, options, "rig")
+    if str(up_axis) not in UP_AXES:  # before the binding, which takes seconds on a large mesh
+        raise MedialError("rig: up_axis must be one of %s, got %r" % (", ".join(UP_AXES), up_axis))
     skin, bones = _bind(skeleton, mesh, heat)
     writer.SetFileName(str(path))
     writer.SetUpAxis(str(up_axis))
