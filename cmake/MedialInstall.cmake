@@ -26,6 +26,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/meshes ${PROJECT_SOURCE_DIR}/data/s
         DESTINATION ${CMAKE_INSTALL_DATADIR}/medial/samples COMPONENT runtime)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
 
 # Desktop integration: the application menu entry, its icon, and the file types it opens.
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/medial-gui.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications

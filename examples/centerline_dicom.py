@@ -5,6 +5,7 @@
 With `phantom` (the default), medial-make-colon-phantom makes a synthetic colon CT as a DICOM series.
 """
 import os
+import shutil
 import subprocess
 import sys
 
@@ -18,7 +19,8 @@ os.makedirs(out, exist_ok=True)
 ct = sys.argv[1] if len(sys.argv) > 1 else "phantom"
 if ct == "phantom":
     ct = os.path.join(out, "colon-dicom")
-    maker = os.environ.get("MEDIAL_COLON_PHANTOM", "build/bin/medial-make-colon-phantom")
+    maker = os.environ.get("MEDIAL_COLON_PHANTOM") or shutil.which("medial-make-colon-phantom") or \
+        "build/bin/medial-make-colon-phantom"  # the installed one, else the build tree's
     subprocess.run([maker, ct], check=True, stdout=subprocess.DEVNULL)
 
 colon = medial.centerline(ct, threshold=(-1024, -600), sections=True, surface=True)
