@@ -6,11 +6,21 @@
 #include <vtkSmartPointer.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <unistd.h>
 
 namespace medial::cli {
 
-ProgressLine::ProgressLine(bool quiet) : enabled_(!quiet && ::isatty(STDERR_FILENO)) {}
+namespace {
+bool progressAsLines() {
+  const char* mode = std::getenv("MEDIAL_PROGRESS");
+  return mode && std::strcmp(mode, "lines") == 0;
+}
+}  // namespace
+
+ProgressLine::ProgressLine(bool quiet)
+    : enabled_(!quiet && (progressAsLines() || ::isatty(STDERR_FILENO))), asLines_(progressAsLines()) {}
 
 ProgressLine::~ProgressLine() { finish(); }
 
@@ -37,13 +47,16 @@ void ProgressLine::show(const std::string& label, double fraction) {
   const int percent = static_cast<int>(fraction * 100.0 + 0.5);
   if (drawn_ && percent == lastPercent_) return;
   lastPercent_ = percent;
-  std::fprintf(stderr, "\r\033[K%s %3d%%", label.c_str(), percent);
+  if (asLines_)
+    std::fprintf(stderr, "medial-progress %s %d\n", label.c_str(), percent);
+  else
+    std::fprintf(stderr, "\r\033[K%s %3d%%", label.c_str(), percent);
   std::fflush(stderr);
   drawn_ = true;
 }
 
 void ProgressLine::finish() {
-  if (enabled_ && drawn_) {
+  if (enabled_ && drawn_ && !asLines_) {
     std::fprintf(stderr, "\r\033[K");
     std::fflush(stderr);
   }

@@ -1,5 +1,7 @@
 // Progress line of the `medial` command: "label  42%" redrawn on stderr when it is a terminal and
 // --quiet was not given (docs/ARCHITECTURE.md §6). Observes a VTK algorithm's ProgressEvent.
+// With the environment variable MEDIAL_PROGRESS=lines (for programs running `medial`, such as the
+// Blender add-on) it is one line "medial-progress LABEL PERCENT" per change instead, on a pipe too.
 #pragma once
 
 #include <string>
@@ -21,6 +23,7 @@ class ProgressLine {
 
  private:
   bool enabled_;
+  bool asLines_;
   bool drawn_ = false;
   int lastPercent_ = -1;
 };

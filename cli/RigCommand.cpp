@@ -47,7 +47,7 @@ const std::string& rigUsage() {
            "  -o, --output RIG          the rig as glTF 2.0 (.glb) or FBX (.fbx)\n"
            "  --weights MESH_OUT        also the mesh with point data SkinWeights (a component per bone) "
            "and\n"
-           "                            Bone (the strongest)\n"
+           "                            Bone (the strongest); without -o, the weights alone (no rig)\n"
            "  --root N                  the root node (default: the skeleton's Root, else its body centre: "
            "the\n"
            "                            branch node nearest the mesh's middle among the central ones, the "
@@ -66,11 +66,11 @@ int runRig(const std::vector<std::string>& args) {
   if (parsed.positional.size() != 2) throw UsageError("rig needs a SKELETON file and a MESH file");
   const std::string skeletonFile = parsed.positional[0], meshFile = parsed.positional[1];
   const std::string output = parsed.value("-o", parsed.value("--output"));
-  if (output.empty()) throw UsageError("rig needs -o RIG.glb|RIG.fbx");
-  if (!vtkMedialRigWriter::CanWriteFile(output.c_str()))
+  const std::string weights = parsed.value("--weights");
+  if (output.empty() && weights.empty()) throw UsageError("rig needs -o RIG.glb|RIG.fbx or --weights MESH_OUT");
+  if (!output.empty() && !vtkMedialRigWriter::CanWriteFile(output.c_str()))
     throw UsageError(std::string("-o must end in one of ") + vtkMedialRigWriter::GetExtensions() + ": " +
                      output);
-  const std::string weights = parsed.value("--weights");
   if (parsed.has("--weights")) requireWritableExtension(weights, "--weights");
 
   auto binding = vtkSmartPointer<vtkMedialSkinBinding>::New();
@@ -94,7 +94,7 @@ int runRig(const std::vector<std::string>& args) {
 
   command.timings().start("write");
   if (!weights.empty()) writePolyData(binding->GetOutput(0), weights);
-  writeRig(writer, binding->GetOutput(0), binding->GetOutput(1), output);
+  if (!output.empty()) writeRig(writer, binding->GetOutput(0), binding->GetOutput(1), output);
   return command.finish();
 }
 
