@@ -35,7 +35,7 @@ const std::string& rigUsage() {
   static const std::string text = [] {
     const auto binding = vtkSmartPointer<vtkMedialSkinBinding>::New();
     return std::string() +
-           "usage: medial rig SKELETON MESH -o RIG.glb|RIG.fbx [--weights MESH_OUT] [--root N] [--heat C]\n"
+           "usage: medial rig SKELETON MESH (-o RIG.glb|RIG.fbx | --weights MESH_OUT) [--root N] [--heat C]\n"
            "                  [--up-axis AXIS] [--scale F] [--max-influences N] [--quiet] [--timings]\n\n"
            "Binds MESH (.off .obj .ply .stl .vtp .vtk) to SKELETON (.vtp .swc ...) with heat-diffusion "
            "skinning\n"
@@ -67,7 +67,8 @@ int runRig(const std::vector<std::string>& args) {
   const std::string skeletonFile = parsed.positional[0], meshFile = parsed.positional[1];
   const std::string output = parsed.value("-o", parsed.value("--output"));
   const std::string weights = parsed.value("--weights");
-  if (output.empty() && weights.empty()) throw UsageError("rig needs -o RIG.glb|RIG.fbx or --weights MESH_OUT");
+  if (output.empty() && weights.empty())
+    throw UsageError("rig needs -o RIG.glb|RIG.fbx or --weights MESH_OUT");
   if (!output.empty() && !vtkMedialRigWriter::CanWriteFile(output.c_str()))
     throw UsageError(std::string("-o must end in one of ") + vtkMedialRigWriter::GetExtensions() + ": " +
                      output);

@@ -40,7 +40,7 @@ class MEDIAL_PT_panel(bpy.types.Panel):
         column.label(text="Mesh selected, armature active:")
         column.operator("medial.bind", icon="GROUP_BONE")
         column.separator()
-        column.label(text="Skin-modifier edges or armature:")
+        column.label(text="Skin edges or armature:")
         column.operator("medial.sqm_mesh", icon="MOD_SKIN")
 
 

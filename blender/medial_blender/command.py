@@ -26,7 +26,7 @@ def find_medial(preferred=""):
 
 
 class Job:
-    """One run of `medial ARGS --quiet`-less with progress lines, in its own temporary folder."""
+    """One run of `medial ARGS`, its progress read as lines from stderr, in its own temporary folder."""
 
     def __init__(self, executable):
         self.executable = executable

@@ -137,7 +137,7 @@ class MEDIAL_OT_rig_mesh(MedialOperator, bpy.types.Operator):
     def apply(self, context, job):
         obj = context.active_object
         skeleton = vtp.read(job.path("skeleton.vtp"))
-        weights = vtp.read(job.path("weights.vtp")).point_data["SkinWeights"]
+        weights = vtp.read(job.path("weights.vtp"), only=["SkinWeights"]).point_data["SkinWeights"]
         root = int(skeleton.field_data["Root"][0]) if "Root" in skeleton.field_data else 0
         up = _up_vector(self.up_axis)
         matrix = mathutils.Matrix.Identity(4) if self.use_transform else obj.matrix_world.copy()
@@ -182,7 +182,7 @@ class MEDIAL_OT_bind(MedialOperator, bpy.types.Operator):
         return ["rig", "skeleton.vtp", "mesh.ply", "--weights", "weights.vtp", "--heat", self.heat]
 
     def apply(self, context, job):
-        weights = vtp.read(job.path("weights.vtp")).point_data["SkinWeights"]
+        weights = vtp.read(job.path("weights.vtp"), only=["SkinWeights"]).point_data["SkinWeights"]
         obj = bpy.data.objects[self.mesh_name]
         scene.set_weights(obj, self.bones, weights, self.max_influences)
         scene.bind_to_armature(obj, context.active_object)

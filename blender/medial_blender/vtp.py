@@ -69,29 +69,39 @@ def _cells(element, root):
     if element is None:
         return []
     arrays = {a.get("Name"): _array(a, root) for a in element.findall("DataArray")}
-    connectivity, offsets = arrays.get("connectivity", []), arrays.get("offsets", [])
-    cells, start = [], 0
-    for end in offsets:
-        cells.append(numpy.asarray(connectivity[start:int(end)], dtype=numpy.int64))
-        start = int(end)
-    return cells
+    connectivity = numpy.asarray(arrays.get("connectivity", []), dtype=numpy.int64)
+    offsets = numpy.asarray(arrays.get("offsets", []), dtype=numpy.int64)
+    if len(offsets) == 0:
+        return []
+    sizes = numpy.diff(offsets, prepend=0)
+    if numpy.all(sizes == sizes[0]):  # triangles, or 2-point lines: one reshape
+        return connectivity.reshape(-1, int(sizes[0]))
+    starts = offsets - sizes
+    return [connectivity[start:end] for start, end in zip(starts.tolist(), offsets.tolist())]
 
 
-def read(path):
-    """The PolyData of the .vtp file at path (one piece)."""
+def read(path, only=None):
+    """The PolyData of the .vtp file at path (one piece). With only (point data names), just those arrays
+    are decoded: no points, cells or field data."""
     root = ElementTree.parse(path).getroot()
     if root.get("type") != "PolyData":
         raise ValueError("%s: not a VTK PolyData file" % path)
     poly = root.find("PolyData")
     piece = poly.find("Piece")
     result = PolyData()
+    for array in piece.findall("PointData/DataArray"):
+        if only is None or array.get("Name") in only:
+            result.point_data[array.get("Name")] = _array(array, root)
+    if only is not None:
+        missing = set(only) - set(result.point_data)
+        if missing:
+            raise ValueError("%s has no point data %s" % (path, ", ".join(sorted(missing))))
+        return result
     points = piece.find("Points/DataArray")
     if points is not None:
         result.points = _array(points, root).astype(float).reshape(-1, 3)
     result.lines = _cells(piece.find("Lines"), root)
     result.polys = _cells(piece.find("Polys"), root)
-    for array in piece.findall("PointData/DataArray"):
-        result.point_data[array.get("Name")] = _array(array, root)
     for array in poly.findall("FieldData/DataArray"):
         result.field_data[array.get("Name")] = _array(array, root)
     return result
