@@ -92,4 +92,6 @@ set(CPACK_DEBIAN_PACKAGE_DEPENDS
     "python3, python3-vtk9, python3-numpy, python3-distributed, xvfb, xauth, libgl1-mesa-dri")
 # meshio: medial.read's formats beyond VTK's (the API works without it).
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-meshio")
+# Blender runs the add-on installed into its system add-on folder (share/blender/scripts/addons).
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "blender")
 include(CPack)

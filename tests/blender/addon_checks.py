@@ -18,7 +18,8 @@ def report(name, **facts):
 
 
 def read_off(path):
-    tokens = [t for line in open(path) for t in line.split("#")[0].split()]
+    with open(path) as stream:
+        tokens = [t for line in stream for t in line.split("#")[0].split()]
     n, m = int(tokens[1]), int(tokens[2])
     numbers = tokens[4:]
     vertices = [tuple(map(float, numbers[3 * i:3 * i + 3])) for i in range(n)]

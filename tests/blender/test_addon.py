@@ -21,7 +21,8 @@ MODE = sys.argv.pop(1) if len(sys.argv) > 1 else "background"
 
 def off_to_obj(off, obj):
     """An OBJ of an OFF mesh, for Blender's OBJ importer (the way most meshes reach Blender)."""
-    tokens = [t for line in open(off) for t in line.split("#")[0].split()]
+    with open(off) as stream:
+        tokens = [t for line in stream for t in line.split("#")[0].split()]
     n, m = int(tokens[1]), int(tokens[2])
     numbers = tokens[4:]
     with open(obj, "w") as out:

@@ -382,6 +382,12 @@ TEST(Cli, RigBindsSketchAndSqmMeshesToTheirSkeletons) {
       medialCommand("rig " + skeleton + " " + dir + "/fish.obj -o " + dir + "/fish.glb --root 0 --quiet"));
   ASSERT_EQ(sqm.exitCode, 0) << sqm.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/fish.glb"));
+
+  // Weights alone (no rig file): what the Blender add-on's Bind runs.
+  auto weightsOnly = runCommand(medialCommand("rig " + skeleton + " " + dir + "/fish.obj --weights " + dir +
+                                              "/fish-weights.vtp --quiet"));
+  ASSERT_EQ(weightsOnly.exitCode, 0) << weightsOnly.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/fish-weights.vtp"));
 }
 
 TEST(Cli, RigErrorsAreOneLineAndLeaveNoFile) {

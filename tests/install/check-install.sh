@@ -42,7 +42,8 @@ case $mode in
   prefix)
     cmake --install "$build" --prefix "$scratch/prefix" >/dev/null
     for f in include/medial/vtkMedialSQM.h include/medial/sqm/SqmMesher.h lib/cmake/medial/MedialConfig.cmake \
-             lib/python3/dist-packages/medial/__init__.py share/applications/medial-gui.desktop; do
+             lib/python3/dist-packages/medial/__init__.py share/applications/medial-gui.desktop \
+             share/blender/scripts/addons/medial_blender/__init__.py; do
       [ -e "$scratch/prefix/$f" ] || fail "$f is not installed"
     done
     mv "$scratch/prefix" "$scratch/moved"  # relative RUNPATHs: the tree runs from anywhere
@@ -59,11 +60,20 @@ case $mode in
     for f in ./usr/bin/medial ./usr/bin/medial-gui ./usr/lib/libMedialFilters.so ./usr/lib/libMedialITKIO.so \
              ./usr/lib/python3/dist-packages/medial/__init__.py ./usr/share/applications/medial-gui.desktop \
              ./usr/share/icons/hicolor/scalable/apps/medial.svg ./usr/share/man/man1/medial.1 \
-             ./usr/share/man/man1/medial-skeleton.1 ./usr/share/man/man1/medial-gui.1; do
+             ./usr/share/man/man1/medial-skeleton.1 ./usr/share/man/man1/medial-gui.1 \
+             ./usr/share/blender/scripts/addons/medial_blender/__init__.py \
+             ./usr/share/blender/scripts/addons/medial_blender/operators.py; do
       echo "$contents" | grep -q " $f\$" || fail "the package lacks $f"
     done
     dpkg-deb -x "$deb" "$scratch/root"
     run_tree "$scratch/root/usr"
+    if command -v blender >/dev/null; then  # the installed add-on folder, as Blender's add-on search sees it
+      BLENDER_USER_SCRIPTS="$scratch/root/usr/share/blender/scripts" blender -b --factory-startup --python-exit-code 1 \
+        --python-expr "import addon_utils, bpy
+assert addon_utils.enable('medial_blender', default_set=True) is not None
+assert hasattr(bpy.types, 'MEDIAL_OT_rig_mesh') and hasattr(bpy.types, 'MEDIAL_PT_panel')" \
+        >"$scratch/blender.log" 2>&1 || fail "Blender cannot enable the packaged add-on: $(tail -5 "$scratch/blender.log")"
+    fi
     echo "check-install: $(basename "$deb"), $(echo "$contents" | wc -l) entries, $(echo "$info" | grep Depends)"
     ;;
   *) fail "mode is prefix or deb" ;;
