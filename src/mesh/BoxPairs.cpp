@@ -54,21 +54,37 @@ Grid gridFor(const std::vector<Box3>& boxes) {
 using Entry = std::pair<uint64_t, int>;  // a cell's key and a box in it
 
 // The pairs of a bucket's entries that overlap, each reported in one cell only: the one holding the low
-// corner of the two boxes' overlap.
+// corner of the two boxes' overlap. Within a cell the boxes are swept along x (sorted by their low x, each
+// tested only against those starting before it ends): a cell of a refined mesh where tubes overlap holds
+// dozens of faces, and testing all pairs there took most of the search.
 void pairsInBucket(const std::vector<Box3>& boxes, const std::vector<char>* selected, const Grid& grid,
                    std::vector<Entry>::iterator first, std::vector<Entry>::iterator last,
-                   std::vector<std::pair<int, int>>& pairs) {
+                   std::vector<std::pair<int, int>>& pairs, std::vector<Box3>& cellBoxes,
+                   std::vector<int>& cellIds) {
   std::sort(first, last);  // a handful of cells per bucket: equal keys become runs
   for (auto run = first; run != last;) {
     auto end = run;
     while (end != last && end->first == run->first) ++end;
-    for (auto a = run; a != end; ++a)
-      for (auto b = a + 1; b != end; ++b) {
-        if (selected && !(*selected)[size_t(a->second)] && !(*selected)[size_t(b->second)]) continue;
-        const Box3 &p = boxes[size_t(a->second)], &q = boxes[size_t(b->second)];
+    std::sort(run, end, [&](const Entry& a, const Entry& b) {
+      const double ax = boxes[size_t(a.second)].low.x(), bx = boxes[size_t(b.second)].low.x();
+      return ax < bx || (ax == bx && a.second < b.second);
+    });
+    cellBoxes.clear();
+    cellIds.clear();
+    for (auto e = run; e != end; ++e) {
+      cellBoxes.push_back(boxes[size_t(e->second)]);
+      cellIds.push_back(e->second);
+    }
+    for (size_t a = 0; a < cellBoxes.size(); ++a) {
+      const Box3& p = cellBoxes[a];
+      for (size_t b = a + 1; b < cellBoxes.size() && cellBoxes[b].low.x() <= p.high.x(); ++b) {
+        const int i = cellIds[a], j = cellIds[b];
+        if (selected && !(*selected)[size_t(i)] && !(*selected)[size_t(j)]) continue;
+        const Box3& q = cellBoxes[b];
         if (overlap(p, q) && keyOf(grid.cellOf(p.low.cwiseMax(q.low))) == run->first)
-          pairs.emplace_back(std::min(a->second, b->second), std::max(a->second, b->second));
+          pairs.emplace_back(std::min(i, j), std::max(i, j));
       }
+    }
     run = end;
   }
 }
@@ -128,9 +144,11 @@ std::vector<std::pair<int, int>> overlappingBoxPairs(const std::vector<Box3>& bo
   inParallel(
       chunks,
       [&](size_t c) {
+        std::vector<Box3> cellBoxes;
+        std::vector<int> cellIds;
         for (size_t k = c * buckets / chunks; k < (c + 1) * buckets / chunks; ++k)
           pairsInBucket(boxes, selected, grid, grouped.begin() + long(start[k]),
-                        grouped.begin() + long(start[k + 1]), found[c]);
+                        grouped.begin() + long(start[k + 1]), found[c], cellBoxes, cellIds);
       },
       1);
   for (const auto& part : found) pairs.insert(pairs.end(), part.begin(), part.end());
