@@ -144,6 +144,8 @@ FaceIntersections intersectingFaces(const std::vector<Eigen::Vector3d>& vertices
   std::vector<int> polygon;
   std::vector<Box3> tested;
   std::vector<char> testedSelected;
+  polygon.reserve(faces.size());
+  tested.reserve(faces.size());
   for (size_t f = 0; f < faces.size(); ++f)
     if (faces[f].size() >= 3) {
       tested.push_back(boxOf(vertices, faces[f]));
