@@ -52,8 +52,8 @@ struct CutTracker : PMP::Corefinement::Default_visitor<Surface> {
 // CGAL 5.5's autorefine() builds its intersection functor with a constructor that leaves the member
 // `const_mesh_ptr` uninitialised (the two-mesh constructor sets it to nullptr). Whatever the stack held
 // there decides whether degenerate faces are filtered out of the box intersections and how coplanar
-// degenerate pairs are handled: the same mesh gave 42709 or 42701 faces in one process (the dense tree
-// refined twice), and valgrind reports the jump on it. This is autorefine() (corefinement.h) with the member
+// degenerate pairs are handled: the same mesh gave 42709 or 42701 faces from run to run (the dense tree
+// refined twice), and valgrind reported the jump on it. This is autorefine() (corefinement.h) with the member
 // set to nullptr before the run, reached through the explicit-instantiation access rule ([temp.spec]:
 // access checking does not apply to the names in an explicit instantiation).
 using PointMap = boost::property_map<Surface, boost::vertex_point_t>::type;
