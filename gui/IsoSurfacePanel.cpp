@@ -35,7 +35,7 @@ void IsoSurfacePanel::inputChanged(SceneObject* input) {
   double range[2];
   image->GetPointData()->GetScalars()->GetRange(range, 0);
   // A CT: bone (300 HU) when it holds any, else the wall between air and soft tissue (-500 HU: the colon's,
-  // as the README says; the middle of the range was -438.5 on the colon phantom); any other volume: the
+  // as docs/gui.md says; the middle of the range was -438.5 on the colon phantom); any other volume: the
   // middle of its range.
   const bool ct = range[0] < -500;
   form()->setValue("Value", ct ? (range[1] > 300 ? 300.0 : -500.0) : 0.5 * (range[0] + range[1]));

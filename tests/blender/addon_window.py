@@ -102,7 +102,7 @@ def steps():
            groups=len(big.vertex_groups), seconds=cancel_seconds)
     bpy.data.objects.remove(big)
 
-    # The picture for the README: the elephant's rig, the Medial tab of the sidebar open.
+    # The picture for docs/blender.md: the elephant's rig, the Medial tab of the sidebar open.
     elephant = bpy.data.objects.get("elephant")
     select_only(elephant)
     space = area.spaces.active

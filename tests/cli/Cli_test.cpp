@@ -832,27 +832,27 @@ std::vector<std::string> words(const std::string& text) {
 
 }  // namespace
 
-// The README's usage block is every command's --help synopsis, word for word, so the two cannot drift.
-TEST(Cli, ReadmeUsageMatchesEveryCommandsHelp) {
-  std::ifstream file(sourceDir() + "/README.md");
-  const std::string readme((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  const size_t section = readme.find("## The `medial` command");
+// docs/cli.md's synopsis is every command's --help synopsis, word for word, so the two cannot drift.
+TEST(Cli, CliPageUsageMatchesEveryCommandsHelp) {
+  std::ifstream file(sourceDir() + "/docs/cli.md");
+  const std::string page((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const size_t section = page.find("## Synopsis");
   ASSERT_NE(section, std::string::npos);
-  const size_t open = readme.find("```\n", section) + 4, close = readme.find("```", open);
-  std::istringstream block(readme.substr(open, close - open));
-  std::map<std::string, std::string> readmeUsage;  // command -> its lines in the block
+  const size_t open = page.find("```\n", section) + 4, close = page.find("```", open);
+  std::istringstream block(page.substr(open, close - open));
+  std::map<std::string, std::string> pageUsage;  // command -> its lines in the block
   std::string current;
   for (std::string line; std::getline(block, line);) {
     if (line.rfind("medial ", 0) == 0) current = words(line)[1];
-    readmeUsage[current] += line + "\n";
+    pageUsage[current] += line + "\n";
   }
   for (const char* command : {"render", "skeleton", "sqm", "centerline", "sketch", "rig"}) {
     const auto help = runCommand(medialCommand(std::string(command) + " --help"));
     ASSERT_EQ(help.exitCode, 0) << command;
     const size_t start = help.out.find("usage: ") + 7;
     const std::string synopsis = help.out.substr(start, help.out.find("\n\n", start) - start);
-    EXPECT_EQ(words(readmeUsage[command]), words(synopsis))
-        << "README.md's usage of medial " << command << " differs from medial " << command << " --help";
+    EXPECT_EQ(words(pageUsage[command]), words(synopsis))
+        << "docs/cli.md's usage of medial " << command << " differs from medial " << command << " --help";
   }
 }
 

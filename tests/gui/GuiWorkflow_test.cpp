@@ -659,7 +659,7 @@ TEST_F(GuiWorkflow, ColonPhantomDicomThresholdSeedCenterlineFlyThrough) {
   EXPECT_LT(sum / computed->GetNumberOfPoints(), 1.5) << "mean distance to the true axis (mm)";
   EXPECT_GT(panel->flyThrough().length(), 300.0) << "the centerline runs most of the colon's 422 mm";
 
-  // The iso-surface panel offers the colon's wall for this CT without bone (-500 HU, as the README says).
+  // The iso-surface panel offers the colon's wall for this CT without bone (-500 HU, as docs/gui.md says).
   EXPECT_DOUBLE_EQ(window->isoSurfacePanel()->form()->value("Value"), -500.0);
   // The lumen's surface comes with the centerline (the GUI's default), and the fly-through is inside it.
   SceneObject* lumen = object(ct->name + " lumen");
