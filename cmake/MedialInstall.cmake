@@ -27,6 +27,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/meshes ${PROJECT_SOURCE_DIR}/data/s
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+# The pages and pictures the README links to, at the same relative paths.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
 
 # Desktop integration: the application menu entry, its icon, and the file types it opens.
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/medial-gui.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications
