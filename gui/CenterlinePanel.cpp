@@ -89,6 +89,7 @@ CenterlinePanel::CenterlinePanel(ObjectList* objects, QWidget* parent)
     : FilterPanel("Centerline", SceneObject::Kind::Volume, centerlineParameters(), objects, parent) {
   seedLabel_ = new QLabel(this);
   seedLabel_->setObjectName("seed");
+  seedLabel_->setWordWrap(true);  // the seed's coordinates must not widen the dock
   auto* clear = new QPushButton("Clear seed", this);
   connect(clear, &QPushButton::clicked, this, &CenterlinePanel::clearSeed);
   auto* seedRow = new QHBoxLayout;
@@ -141,9 +142,10 @@ void CenterlinePanel::buildFlyControls() {
   auto* flyRow = new QHBoxLayout;
   flyRow->addWidget(playButton_);
   flyRow->addWidget(backward_);
-  flyRow->addWidget(speed_);
   auto* flyForm = new QFormLayout;
+  flyForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
   flyForm->addRow("Fly-through", flyRow);
+  flyForm->addRow("Speed", speed_);  // a row of its own: beside Play and Backward it widened the dock
   flyForm->addRow("Field of view", viewAngle_);
   flyForm->addRow("Position", positionSlider_);
   extraLayout()->addLayout(flyForm);

@@ -5,6 +5,7 @@
 #include "IsoSurfacePanel.h"
 #include "MedialSketchData.h"
 #include "ObjectList.h"
+#include "SampleMenu.h"
 #include "SkeletonEditor.h"
 #include "SketchPanel.h"
 #include "SkeletonPanel.h"
@@ -135,6 +136,9 @@ MainWindow::MainWindow(QWidget* parent)
   buildPanels();
   buildGhostToolBar();
   buildMenus();
+  // At 1024x768 the 3-D view keeps at least half the width: the docks start narrow (Objects 180,
+  // Filters 300 pixels); users widen them, or close them from View > Panels.
+  resizeDocks({objectDock, findChild<QDockWidget*>("filtersDock")}, {180, 300}, Qt::Horizontal);
   resize(1400, 900);
 }
 
@@ -242,8 +246,9 @@ void MainWindow::buildPanels() {
   auto* dock = new QDockWidget("Filters", this);
   dock->setObjectName("filtersDock");
   dock->setWidget(tabs_);
-  dock->setMinimumWidth(330);
+  dock->setMinimumWidth(260);
   addDockWidget(Qt::RightDockWidgetArea, dock);
+  tabs_->setUsesScrollButtons(true);  // six tabs must not make the dock wider than its panels
 }
 
 FilterPanel* MainWindow::panel(const QString& name) const {
@@ -348,6 +353,8 @@ void MainWindow::buildMenus() {
   file->addAction("&Open...", QKeySequence::Open, this, &MainWindow::openDialog);
   file->addAction("Open &DICOM Folder...", this, &MainWindow::openDicomDialog);
   recentMenu_ = file->addMenu("Open &Recent");
+  fillSampleMenu(file->addMenu("Open a &Sample"), this,
+                 [this](const QString& path) { return openFile(path); });
   updateRecentMenu();
   file->addAction("Save &Image...", QKeySequence("Ctrl+Shift+S"), this, &MainWindow::saveScreenshotDialog);
   file->addSeparator();
@@ -359,6 +366,8 @@ void MainWindow::buildMenus() {
   connect(slices, &QAction::toggled, slices_, &QWidget::setVisible);
   connect(objects_, &ObjectList::objectsChanged, slices,
           [this, slices] { slices->setChecked(slices_->isVisible()); });
+  QMenu* panels = view->addMenu("&Panels");  // a closed dock comes back from here
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) panels->addAction(dock->toggleViewAction());
   QMenu* rendering = view->addMenu("&Volume Rendering");
   rendering->setToolTip("Ray-cast rendering of the volume shown in the slice views");
   volumeRenderingActions_ = new QActionGroup(this);

@@ -43,6 +43,7 @@ Parameter Parameter::choice(QString name, QString label, QStringList choices, QS
 ParameterForm::ParameterForm(std::vector<Parameter> parameters, QWidget* parent)
     : QWidget(parent), parameters_(std::move(parameters)) {
   auto* layout = new QFormLayout(this);
+  layout->setRowWrapPolicy(QFormLayout::WrapLongRows);  // a narrow dock puts fields under their labels
   layout->setContentsMargins(0, 0, 0, 0);
   for (const Parameter& p : parameters_) {
     QWidget* editor = nullptr;

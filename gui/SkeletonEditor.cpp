@@ -16,7 +16,7 @@
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFormLayout>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMouseEvent>
@@ -121,8 +121,10 @@ SkeletonEditor::SkeletonEditor(ObjectList* objects, vtkMedialScene* scene, VtkVi
   saveButton->setToolTip("Save the edited skeleton (VTP keeps radii and root; SWC for neuron tools)");
   auto* done = new QPushButton("Done", this);
   done->setToolTip("Add the edited skeleton and its mesh to the objects (save or rig them from there)");
-  auto* buttons = new QHBoxLayout;
-  for (QPushButton* b : {undo, redo, remove, root, saveButton, done}) buttons->addWidget(b);
+  // Three buttons a row: six in one row made the panel wider than the Filters dock at 1024x768.
+  auto* buttons = new QGridLayout;
+  QPushButton* const order[] = {undo, redo, remove, root, saveButton, done};
+  for (int i = 0; i < 6; ++i) buttons->addWidget(order[i], i / 3, i % 3);
   status_ = new QLabel(this);
   status_->setWordWrap(true);
   auto* help = new QLabel(

@@ -11,6 +11,7 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QToolButton>
 #include <QSlider>
 #include <QVBoxLayout>
 
@@ -71,6 +72,7 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
     : FilterPanel("Sketch", SceneObject::Kind::Sketch, sketchParameters(), objects, parent),
       global_(globalDefaults()) {
   auto* rows = new QFormLayout;
+  rows->setRowWrapPolicy(QFormLayout::WrapLongRows);
   scope_ = new QComboBox(this);
   scope_->setObjectName("thresholdScope");
   scope_->setToolTip(
@@ -109,9 +111,11 @@ SketchPanel::SketchPanel(ObjectList* objects, QWidget* parent)
   auto* partTools = new QGridLayout;
   const auto tool = [this, partTools](const QString& text, const QString& tip, int row, int column,
                                       const std::function<void(int)>& action) {
-    auto* button = new QPushButton(text, this);
+    auto* button = new QToolButton(this);  // tool buttons: four push buttons a row overflowed the dock
+    button->setText(text);
     button->setToolTip(tip);
-    connect(button, &QPushButton::clicked, this, [this, action] {
+    button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    connect(button, &QToolButton::clicked, this, [this, action] {
       if (scopePart() >= 0) action(scopePart());
     });
     partTools->addWidget(button, row, column);

@@ -73,6 +73,7 @@ SqmPanel::SqmPanel(ObjectList* objects, QWidget* parent)
   live_->setChecked(true);
   live_->setToolTip("Re-run when a parameter changes, replacing the previous mesh");
   auto* rows = new QFormLayout;
+  rows->setRowWrapPolicy(QFormLayout::WrapLongRows);
   rows->addRow("Subdivision", subdivision_);
   rows->addRow(live_);
   extraLayout()->addLayout(rows);

@@ -7,6 +7,7 @@
 #include "CenterlinePanel.h"
 #include "IsoSurfacePanel.h"
 #include "ProfileChart.h"
+#include "SampleMenu.h"
 #include "TerrainView.h"
 #include "MainWindow.h"
 #include "ObjectList.h"
@@ -32,11 +33,14 @@
 #include <QDragEnterEvent>
 #include <QDockWidget>
 #include <QDropEvent>
+#include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QUrl>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSlider>
 #include <QTabWidget>
@@ -1153,4 +1157,56 @@ TEST_F(GuiWorkflow, StartupRunAndEditWorkInTheWindowThatStaysOpen) {
   while (!finished && clock.elapsed() < 130000) QTest::qWait(20);
   EXPECT_TRUE(finished);
   EXPECT_FALSE(succeeded);
+}
+
+// Issue 49: at the default 1024x768 the 3-D view keeps at least half the window's width, and no filter
+// panel is wider than its dock (no horizontal scroll bar, "Done" not clipped).
+TEST_F(GuiWorkflow, DefaultWindowLeavesHalfToThe3dViewAndNoPanelOverflows) {
+  window->resize(1024, 768);
+  QTest::qWait(100);
+  EXPECT_GE(window->view()->width(), window->width() / 2)
+      << "3-D view " << window->view()->width() << " of " << window->width() << " pixels";
+  auto* tabs = window->findChild<QTabWidget*>("filters");
+  ASSERT_TRUE(tabs);
+  for (int i = 0; i < tabs->count(); ++i) {
+    tabs->setCurrentIndex(i);
+    QTest::qWait(30);
+    auto* scroll = qobject_cast<QScrollArea*>(tabs->widget(i));
+    ASSERT_TRUE(scroll) << tabs->tabText(i).toStdString();
+    std::string tooWide;  // the widgets whose own minimum does not fit: those to make narrower
+    for (QWidget* child : scroll->widget()->findChildren<QWidget*>())
+      if (child->isVisible() && child->minimumSizeHint().width() > scroll->viewport()->width() - 12)
+        tooWide += std::string(" ") + child->metaObject()->className() + " '" +
+                   child->objectName().toStdString() + "' " +
+                   std::to_string(child->minimumSizeHint().width()) + ";";
+    EXPECT_FALSE(scroll->horizontalScrollBar()->isVisible())
+        << tabs->tabText(i).toStdString() << ": panel " << scroll->widget()->minimumSizeHint().width()
+        << " pixels wide in a viewport of " << scroll->viewport()->width() << "; too wide:" << tooWide;
+  }
+  // A closed dock comes back from View > Panels.
+  auto* filters = window->findChild<QDockWidget*>("filtersDock");
+  ASSERT_TRUE(filters);
+  filters->toggleViewAction()->trigger();
+  QTest::qWait(30);
+  EXPECT_FALSE(filters->isVisible());
+  filters->toggleViewAction()->trigger();
+  EXPECT_TRUE(filters->isVisible());
+}
+
+// File > Open a Sample: the bundled samples and a colon CT phantom made on the spot.
+TEST_F(GuiWorkflow, OpenASampleOpensBundledSamplesAndAColonPhantom) {
+  QMenu* samples = nullptr;
+  for (QMenu* menu : window->findChildren<QMenu*>())
+    if (menu->title() == "Open a &Sample") samples = menu;
+  ASSERT_TRUE(samples);
+  ASSERT_EQ(samples->actions().size(), medial::gui::bundledSamples().size() + 1)
+      << "a bundled sample is missing from " << medial::gui::sampleDirectory().toStdString();
+  samples->actions().front()->trigger();  // the torus
+  QTest::qWait(50);
+  EXPECT_TRUE(object("torus.off")) << errors.join("\n").toStdString();
+  samples->actions().back()->trigger();  // the colon phantom, a DICOM series
+  QTest::qWait(50);
+  EXPECT_FALSE(window->objects()->ofKind(SceneObject::Kind::Volume).empty())
+      << errors.join("\n").toStdString();
+  EXPECT_TRUE(errors.isEmpty()) << errors.join("\n").toStdString();
 }
