@@ -1,5 +1,7 @@
 #include "mesh/MeshUnion.h"
 
+#include "mesh/StableBoxIds.h"  // before CGAL's Polygon_mesh_processing headers
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>

@@ -7,6 +7,8 @@
 #include "common/Stopwatch.h"
 #include "common/UnionFind.h"
 
+#include "mesh/StableBoxIds.h"  // before CGAL's Polygon_mesh_processing headers
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <Eigen/Geometry>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
