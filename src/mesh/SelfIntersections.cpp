@@ -1,7 +1,5 @@
 #include "mesh/SelfIntersections.h"
 
-#include "mesh/StableBoxIds.h"  // before CGAL's Polygon_mesh_processing headers
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
