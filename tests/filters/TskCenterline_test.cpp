@@ -355,8 +355,9 @@ TEST(TskCenterlineFilter, BranchingTreeGivesOnePolylinePerBranch) {
   EXPECT_LT(sum / double(tree->GetNumberOfPoints()), 0.5);
   EXPECT_LT(worst, 2.5);
   // Through the junctions (within 3 branch radii, 12 mm, of where the true axes meet) the line stays within
-  // 0.3 of the branch radius (4 mm) of the true axis: 0.58 mm measured; 1.91 when the parent ran on up the
-  // middle of the junction's blob (src/centerline/Junctions.h).
+  // 0.3 of the branch radius (4 mm) of the true axis, and closer than VMTK's worst on this tree (0.50 mm,
+  // issue 45): 0.42 mm measured; 0.58 with one junction curve leaving along the parent, 1.91 when the
+  // parent ran on up the middle of the junction's blob (src/centerline/Junctions.h).
   const double junctions[2][3] = {{40, 30, 42}, {62, 30, 70}};
   double worstAtJunctions = 0;
   for (vtkIdType i = 0; i < tree->GetNumberOfPoints(); ++i) {
@@ -367,6 +368,7 @@ TEST(TskCenterlineFilter, BranchingTreeGivesOnePolylinePerBranch) {
         worstAtJunctions = std::max(worstAtJunctions, distanceToLine(p, vtkPolyData::SafeDownCast(axisData)));
   }
   EXPECT_LT(worstAtJunctions, 0.3 * 4) << "mm off the true axis at a junction";
+  EXPECT_LT(worstAtJunctions, 0.5) << "mm off the true axis at a junction: VMTK's worst is 0.50";
   auto ids = vtkSmartPointer<vtkIdList>::New();
   std::vector<std::vector<vtkIdType>> cells;
   for (tree->GetLines()->InitTraversal(); tree->GetLines()->GetNextCell(ids);)
