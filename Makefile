@@ -3,7 +3,7 @@
 #   ./scripts/install-deps && make test     build, fetch the real samples, run the whole test suite
 PRESET ?= default
 
-.PHONY: all deps configure build samples demo test package clean
+.PHONY: all deps configure build samples demo test docs package clean
 
 all: build
 
@@ -25,6 +25,10 @@ demo: build
 # Rendering and GUI tests need an X server: scripts/run-tests gives them a private one (xvfb-run).
 test: build samples
 	./scripts/run-tests $(PRESET)
+
+# The C++ API reference: build/docs/api/html/index.html (Doxygen; fails on any warning).
+docs:
+	./scripts/api-docs build/docs/api
 
 # The Debian package: build/medial_<version>_amd64.deb (CPack).
 package: build

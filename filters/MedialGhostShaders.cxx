@@ -6,7 +6,7 @@
 namespace medial::ghost {
 
 const char* const kFragmentDeclarations = R"(
-// Medial ghost view (importance map, Hoffmann et al. 2008)
+// Medial ghost view (importance map, Luboschik and Schumann 2008)
 uniform sampler2D medialGhostMap;    // r: importance, g: window depth, b: coverage (feathered)
 uniform int medialGhostPhase;        // 1: drawing the importance map, 2: drawing the scene
 uniform float medialGhostImportance; // this prop's importance

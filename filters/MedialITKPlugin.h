@@ -1,6 +1,7 @@
-// Volume reading through ITK lives in a library of its own, libMedialITKIO.so (filters/itk/), next to
-// libMedialFilters.so, loaded the first time a volume is read: ITK and GDCM cost each process time at
-// start, and most runs of `medial` (meshes, skeletons, sketches) never read a volume.
+/// \file
+/// Volume reading through ITK lives in a library of its own, libMedialITKIO.so (filters/itk/), next to
+/// libMedialFilters.so, loaded the first time a volume is read: ITK and GDCM cost each process time at
+/// start, and most runs of `medial` (meshes, skeletons, sketches) never read a volume.
 #pragma once
 
 #include <string>

@@ -1,5 +1,6 @@
-// MedialProfileCsv: the TSK filter's profile table (output port 1) as CSV, for the CLI's --profile and the
-// GUI's profile export.
+/// \file
+/// MedialProfileCsv: the TSK filter's profile table (output port 1) as CSV, for the CLI's --profile and the
+/// GUI's profile export.
 #pragma once
 
 #include <string>

@@ -1,8 +1,9 @@
-// MedialProgress: the one place where the progress and cancellation of src/'s algorithms meet VTK's. An
-// algorithm takes a callback that it calls with the fraction done and that returns false to stop it; its
-// result's Error is then a cancellation (src/common/Error.h). For a filter the callback forwards the
-// fraction to UpdateProgress and returns false once the filter's AbortExecute is set: by the GUI's Cancel,
-// the CLI's Ctrl-C, or any observer of ProgressEvent.
+/// \file
+/// MedialProgress: the one place where the progress and cancellation of src/'s algorithms meet VTK's. An
+/// algorithm takes a callback that it calls with the fraction done and that returns false to stop it; its
+/// result's Error is then a cancellation (src/common/Error.h). For a filter the callback forwards the
+/// fraction to UpdateProgress and returns false once the filter's AbortExecute is set: by the GUI's Cancel,
+/// the CLI's Ctrl-C, or any observer of ProgressEvent.
 #pragma once
 
 #include "common/Error.h"

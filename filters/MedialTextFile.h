@@ -1,6 +1,7 @@
-// The text input of the readers that Medial parses itself (SWC, sketch .txt, the OFF header): the file
-// opened with a clear error, read line by line with its line numbers and '#' comments stripped, and
-// fields parsed as numbers strictly (a field that is not wholly a number is an error, not a zero).
+/// \file
+/// The text input of the readers that Medial parses itself (SWC, sketch .txt, the OFF header): the file
+/// opened with a clear error, read line by line with its line numbers and '#' comments stripped, and
+/// fields parsed as numbers strictly (a field that is not wholly a number is an error, not a zero).
 #pragma once
 
 #include <fstream>
@@ -9,6 +10,7 @@
 
 namespace medial {
 
+/// A text file read line by line, comments removed, with "PATH:LINE: " for messages.
 class TextFile {
  public:
   /// Opens `path`; false with the reason ("no file name given", "PATH: cannot open the file").

@@ -1,14 +1,12 @@
-/**
- * @class vtkMedialScene
- * @brief Builds what Medial shows for a data object: meshes as smoothly shaded surfaces (their own RGB
- * colours when they have them), skeletons as tubes and spheres from `Radius`, volumes as three orthogonal
- * slices with an outline. One scene serves `medial render`, the GUI and Python, so they look alike.
- *
- * Colours follow the order of AddData (a palette of ivory, red, blue, green...). The default camera is a
- * three-quarter view from the front (+Z towards the viewer, +Y up, 30° azimuth, 20° elevation) that fits
- * everything; lights come from a vtkLightKit. RenderToImage renders offscreen (needs an X display; see
- * `medial render` for the private Xvfb) and writes a PNG atomically.
- */
+/// \class vtkMedialScene
+/// \brief Builds what Medial shows for a data object: meshes as smoothly shaded surfaces (their own RGB
+/// colours when they have them), skeletons as tubes and spheres from `Radius`, volumes as three orthogonal
+/// slices with an outline. One scene serves `medial render`, the GUI and Python, so they look alike.
+///
+/// Colours follow the order of AddData (a palette of ivory, red, blue, green...). The default camera is a
+/// three-quarter view from the front (+Z towards the viewer, +Y up, 30° azimuth, 20° elevation) that fits
+/// everything; lights come from a vtkLightKit. RenderToImage renders offscreen (needs an X display; see
+/// `medial render` for the private Xvfb) and writes a PNG atomically.
 #pragma once
 
 #include "MedialFiltersModule.h"
@@ -25,10 +23,14 @@ class vtkRenderer;
 
 class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
  public:
+  ///@{
+  /// VTK's object protocol: New() makes an instance with the defaults, PrintSelf() prints every property.
   static vtkMedialScene* New();
   vtkTypeMacro(vtkMedialScene, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
+  /// The renderer the scene's props go into (made on first use).
   vtkRenderer* GetRenderer();
 
   /// Adds a mesh, skeleton or volume and returns its prop (an actor, or an assembly for volumes), or
@@ -40,21 +42,27 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   /// Removes every prop added so far.
   void Clear();
 
+  ///@{
   /// Scale applied to `Radius` when drawing skeleton tubes (default 1: the node spheres themselves).
   vtkSetMacro(SkeletonRadiusScale, double);
   vtkGetMacro(SkeletonRadiusScale, double);
+  ///@}
 
+  ///@{
   /// How volumes added after this call are drawn: 0 three orthogonal slices with an outline (default),
   /// else a ray-cast volume rendering with a preset: 1 CT bone, 2 CT soft tissue and skin, 3 the image's
   /// full range (MedialVolumeRendering). A volume rendering is context to the ghost pass: it is ghosted
   /// or cut away in front of objects of interest like any occluder.
   vtkSetClampMacro(VolumeStyle, int, 0, 3);
   vtkGetMacro(VolumeStyle, int);
+  ///@}
 
+  ///@{
   /// Opacity of meshes added after this call (default 1). Below 1 a mesh shows what lies inside it
   /// (a skeleton, a centerline); translucency is sorted by depth peeling.
   vtkSetClampMacro(MeshOpacity, double, 0.0, 1.0);
   vtkGetMacro(MeshOpacity, double);
+  ///@}
 
   /// The ghost-view pass (vtkMedialGhostPass) of this scene's renderer, installed on first use: objects
   /// of interest stay visible through the meshes that hide them.
@@ -62,10 +70,12 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   /// Makes a prop an object of interest (importance in (0, 1]) or context (0), and installs the pass.
   void SetImportance(vtkProp* prop, double importance);
 
+  ///@{
   /// The default three-quarter view that fits every visible prop, for the window's aspect ratio (4:3
   /// when the renderer has no window yet).
   void ResetCamera();
   void ResetCamera(double aspect);
+  ///@}
   /// A view from `azimuth` and `elevation` degrees around the front view (+Z towards the viewer).
   void ResetCamera(double aspect, double azimuth, double elevation);
 
@@ -84,8 +94,12 @@ class MEDIALFILTERS_EXPORT vtkMedialScene : public vtkObject {
   static void GetPaletteColor(int i, double rgb[3]);
 
  protected:
+  ///@{
+  /// VTK's pipeline: the constructor sets the defaults; the overrides of vtkAlgorithm check the input, run
+  /// the algorithm and fill the outputs (errors leave them empty).
   vtkMedialScene();
   ~vtkMedialScene() override;
+  ///@}
 
  private:
   vtkMedialScene(const vtkMedialScene&) = delete;

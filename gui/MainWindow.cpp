@@ -267,7 +267,7 @@ void MainWindow::buildGhostToolBar() {
   ghostMode_->setCurrentIndex(1);
   ghostMode_->setToolTip(
       "How objects of interest (Interest column; Shift+click in the 3-D view) show through "
-      "what hides them (Hoffmann et al., WSCG 2008)");
+      "what hides them (Luboschik and Schumann, WSCG 2008)");
   bar->addWidget(ghostMode_);
   bar->addWidget(new QLabel(" Opacity ", bar));
   ghostOpacity_ = new QSlider(Qt::Horizontal, bar);

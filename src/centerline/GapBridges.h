@@ -1,14 +1,15 @@
-// GapBridges: one centerline across a colon split into parts by collapsed or fluid-filled segments (the
-// TSK paper claims robustness to such discontinuities; its method follows one connected structure).
-// Each part kept gets its own TSK centerline. The parts are chained from the lowest end (the rectum, the
-// paper's P0) or from the seed: from the chain's last point, the nearest end of a part not used yet is
-// taken if it lies within the maximum gap, and the gap is bridged by the least-cost path through the CT
-// (A*, 26-connected, the cost per mm of a voxel growing with its value above the selection window, so
-// that the bridge keeps to low densities and stays nearly straight), smoothed and resampled at the
-// centerline's spacing; where it runs through lumen (a TSK line stops short of its part's caps) it is
-// centred and measured like the rest, and where there is no lumen its points have `bridged` = 1 and
-// radius 0. A gap longer than the
-// maximum starts another chain: several polylines.
+/// \file
+/// GapBridges: one centerline across a colon split into parts by collapsed or fluid-filled segments (the
+/// TSK paper claims robustness to such discontinuities; its method follows one connected structure).
+/// Each part kept gets its own TSK centerline. The parts are chained from the lowest end (the rectum, the
+/// paper's P0) or from the seed: from the chain's last point, the nearest end of a part not used yet is
+/// taken if it lies within the maximum gap, and the gap is bridged by the least-cost path through the CT
+/// (A*, 26-connected, the cost per mm of a voxel growing with its value above the selection window, so
+/// that the bridge keeps to low densities and stays nearly straight), smoothed and resampled at the
+/// centerline's spacing; where it runs through lumen (a TSK line stops short of its part's caps) it is
+/// centred and measured like the rest, and where there is no lumen its points have `bridged` = 1 and
+/// radius 0. A gap longer than the
+/// maximum starts another chain: several polylines.
 #pragma once
 
 #include "centerline/TskAxis.h"
@@ -24,8 +25,9 @@ namespace medial {
 
 /// Cost per mm of every voxel of a box of the volume (voxel indices `first` .. `first + size - 1`).
 struct CostBox {
-  std::array<int, 3> first{}, size{};
-  std::vector<float> cost;  // x fastest, >= 1
+  std::array<int, 3> first{};  ///< the box's first voxel in the whole volume
+  std::array<int, 3> size{};   ///< voxels of the box along i, j, k
+  std::vector<float> cost;     ///< x fastest, >= 1
 };
 
 /// The least-cost 26-connected path from voxel `from` to voxel `to` (indices of the whole volume, both in
@@ -37,14 +39,19 @@ std::vector<std::array<int, 3>> leastCostPath(const CostBox& box, const Eigen::V
 /// A bridge across a gap: its points (ends excluded) and the gap's length, the mm of its path that lie
 /// outside the structure (infinite when no path was found).
 struct Bridge {
-  std::vector<Eigen::Vector3d> points;
-  double gap = std::numeric_limits<double>::infinity();
+  std::vector<Eigen::Vector3d> points;                   ///< mm, the ends excluded
+  double gap = std::numeric_limits<double>::infinity();  ///< mm outside the structure; infinite: no path
 };
 /// The two ends a bridge joins: the chain's last point and the direction it leaves in, the next part's end
 /// and the direction the line arrives at it in (unit vectors, along the line's way).
 struct BridgeEnds {
-  Eigen::Vector3d from, fromDirection, to, toDirection;
+  Eigen::Vector3d from;           ///< the chain's last point (mm)
+  Eigen::Vector3d fromDirection;  ///< the direction the chain leaves it in
+  Eigen::Vector3d to;             ///< the next part's end (mm)
+  Eigen::Vector3d toDirection;    ///< the direction the line arrives at it in
 };
+/// Makes the bridge between two ends (the least-cost path, a Hermite curve, or the one of both that
+/// fits the CT better).
 using BridgeFunction = std::function<Bridge(const BridgeEnds& ends)>;
 
 /// The cubic Hermite curve from `from` to `to` leaving along `fromDirection` and arriving along
@@ -63,14 +70,15 @@ constexpr double kBridgeTangentScale = 0.6;
 
 /// A part's centerline in a chain: which, whether it runs backwards, and the bridge that leads to it.
 struct ChainLink {
-  int part = 0;
-  bool reversed = false;
-  Bridge bridge;  // from the chain's previous part (none for the first)
+  int part = 0;           ///< the part (index into the parts' centerlines)
+  bool reversed = false;  ///< true: the part's centerline runs backwards in the chain
+  Bridge bridge;          ///< from the chain's previous part (none for the first)
 };
 
+/// The parts' centerlines linked into chains across the gaps between them.
 struct PartChains {
-  std::vector<std::vector<ChainLink>> chains;  // the first starts at `start` (or the lowest end)
-  std::vector<double> brokenGaps;  // mm: per chain after the first, the gap that ended the one before
+  std::vector<std::vector<ChainLink>> chains;  ///< the first starts at `start` (or the lowest end)
+  std::vector<double> brokenGaps;  ///< mm: per chain after the first, the gap that ended the one before
 };
 
 /// Orders the parts' centerlines into chains (see the header). `startPart` >= 0: the first chain starts at

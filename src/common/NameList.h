@@ -1,4 +1,5 @@
-// NameList: a list of option names (solvers, smoothing schemes, pairings) joined for messages and help.
+/// \file
+/// NameList: a list of option names (solvers, smoothing schemes, pairings) joined for messages and help.
 #pragma once
 
 #include <string>
@@ -6,6 +7,7 @@
 
 namespace medial {
 
+/// The names joined by `separator`: "a, b, c".
 inline std::string joinNames(const std::vector<std::string>& names, const std::string& separator = ", ") {
   std::string joined;
   for (const std::string& name : names) joined += (joined.empty() ? "" : separator) + name;

@@ -1,5 +1,6 @@
-// Parallel: runs independent work items on every core with plain threads (the refinement's projection of
-// a level's vertices, the union's winding-number tests per patch).
+/// \file
+/// Parallel: runs independent work items on every core with plain threads (the refinement's projection of
+/// a level's vertices, the union's winding-number tests per patch).
 #pragma once
 
 #include <algorithm>

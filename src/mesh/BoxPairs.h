@@ -1,7 +1,8 @@
-// BoxPairs: which axis-aligned boxes of a large set overlap, by a uniform grid of cells about as large as
-// the typical box. CGAL's box_intersection_d (a segment tree) spent 30 of 38 s sorting on the faces of a
-// 180,000-node SQM chain lying along one axis, where many boxes share coordinates; a grid takes time in
-// proportion to the boxes and the pairs found however they are laid out.
+/// \file
+/// BoxPairs: which axis-aligned boxes of a large set overlap, by a uniform grid of cells about as large as
+/// the typical box. CGAL's box_intersection_d (a segment tree) spent 30 of 38 s sorting on the faces of a
+/// 180,000-node SQM chain lying along one axis, where many boxes share coordinates; a grid takes time in
+/// proportion to the boxes and the pairs found however they are laid out.
 #pragma once
 
 #include <Eigen/Core>
@@ -11,8 +12,10 @@
 
 namespace medial {
 
+/// An axis-aligned box.
 struct Box3 {
-  Eigen::Vector3d low, high;
+  Eigen::Vector3d low;   ///< the smallest corner
+  Eigen::Vector3d high;  ///< the largest corner
 };
 
 /// Pairs (i, j), i < j, of boxes that overlap (touching counts), each once. The order is fixed by the

@@ -1,9 +1,10 @@
-// FaceIntersections: which polygons of a mesh cut through each other, found fast enough for a million
-// faces and stopped after a limit. CGAL's `self_intersections` (SelfIntersections.h) builds a halfedge
-// mesh and tests the pairs one after the other: on a 180,000-node SQM chain it took 75 s where the mesh
-// took 2 s. Here the polygons' bounding boxes are paired by CGAL's box intersection and the pairs are
-// tested on every core with the same exact predicates and the same rule for triangles that share a vertex
-// or an edge; tests/src/FaceIntersections_test.cpp holds the two to the same pairs.
+/// \file
+/// FaceIntersections: which polygons of a mesh cut through each other, found fast enough for a million
+/// faces and stopped after a limit. CGAL's `self_intersections` (SelfIntersections.h) builds a halfedge
+/// mesh and tests the pairs one after the other: on a 180,000-node SQM chain it took 75 s where the mesh
+/// took 2 s. Here the polygons' bounding boxes are paired by CGAL's box intersection and the pairs are
+/// tested on every core with the same exact predicates and the same rule for triangles that share a vertex
+/// or an edge; tests/src/FaceIntersections_test.cpp holds the two to the same pairs.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,11 +17,13 @@
 
 namespace medial {
 
+/// The polygons of a mesh that cut each other (intersectingFaces()).
 struct FaceIntersections {
-  std::vector<std::pair<int, int>> facePairs;  // polygon indices, first < second, sorted
-  bool complete = true;                        // false: the search stopped at the limit
+  std::vector<std::pair<int, int>> facePairs;  ///< polygon indices, first < second, sorted
+  bool complete = true;                        ///< false: the search stopped at the limit
 };
 
+///@{
 /// Pairs of polygons whose triangles (fanned from each polygon's first vertex) cut each other beyond the
 /// vertices or the edge they share; triangles of one polygon are not tested against each other, nor
 /// degenerate ones (a vertex repeated). The result is the same on any number of cores: pairs are tested
@@ -34,5 +37,6 @@ FaceIntersections intersectingFaces(const std::vector<Eigen::Vector3d>& vertices
                                     size_t limit = std::numeric_limits<size_t>::max(),
                                     const FacePairFilter& consider = {},
                                     const std::vector<char>* selected = nullptr);
+///@}
 
 }  // namespace medial

@@ -1,5 +1,6 @@
-// SegmentDistance: the point of a bone (a segment between two skeleton nodes) nearest a point, and the
-// distance to it - what the heat weights, the rig's ground root and the rig importer measure.
+/// \file
+/// SegmentDistance: the point of a bone (a segment between two skeleton nodes) nearest a point, and the
+/// distance to it - what the heat weights, the rig's ground root and the rig importer measure.
 #pragma once
 
 #include <Eigen/Core>
@@ -8,6 +9,7 @@
 
 namespace medial {
 
+/// The point of segment a-b nearest `p` (a for a degenerate segment).
 inline Eigen::Vector3d closestPointOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                              const Eigen::Vector3d& b) {
   const Eigen::Vector3d ab = b - a;
@@ -16,6 +18,7 @@ inline Eigen::Vector3d closestPointOnSegment(const Eigen::Vector3d& p, const Eig
   return a + t * ab;
 }
 
+/// The distance from `p` to segment a-b.
 inline double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                 const Eigen::Vector3d& b) {
   return (closestPointOnSegment(p, a, b) - p).norm();
