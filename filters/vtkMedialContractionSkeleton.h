@@ -1,6 +1,6 @@
 /// \class vtkMedialContractionSkeleton
-/// \brief Curve skeleton of a surface mesh by mesh contraction (\cite au2008 \cite berenguer
-/// section III, stages 1-4).
+/// \brief Curve skeleton of a surface mesh by mesh contraction (Au, Tai, Chu, Cohen-Or and Lee, SIGGRAPH
+/// 2008, section III, stages 1-4, with the node selection and weights of Berenguer Gómez and Moreno Alvarez).
 ///
 /// Input: a polygonal mesh (polygons and strips are triangulated; lines and vertices are ignored).
 /// Output port 0: the skeleton of docs/ARCHITECTURE.md §4 (nodes, 2-point lines, `Radius`, field data

@@ -1,6 +1,6 @@
 /// \class vtkMedialGhostPass
 /// \brief Ghost views and cutaway views driven by an importance map (Luboschik and Schumann, "Discovering the
-/// Covered: Ghost-Views in Information Visualization", WSCG 2008 \cite luboschik2008): objects of interest
+/// Covered: Ghost-Views in Information Visualization", WSCG 2008): objects of interest
 /// stay visible through whatever hides them.
 ///
 /// Each prop carries an importance in [0, 1] (SetImportance, or the IMPORTANCE() key of its property keys);

@@ -1,7 +1,7 @@
 /// \class vtkMedialSQM
-/// \brief Skeleton to quad-dominant mesh (SQM \cite baerentzen2012, with the extensions \cite piovarci2014):
-/// a skeleton with `Radius` per node becomes a closed manifold mesh of quads, triangles only in the leaf
-/// fans.
+/// \brief Skeleton to quad-dominant mesh (SQM of Bærentzen, Misztal and Wełnicka 2012, with the extensions of
+/// Piovarči, CESCG 2014): a skeleton with `Radius` per node becomes a closed manifold mesh of quads,
+/// triangles only in the leaf fans.
 ///
 /// Input: a skeleton (docs/ARCHITECTURE.md §4: nodes, 2-point lines, `Radius`, optional `EllipsoidAxes` and
 /// `Root`). Output: a polygonal mesh of quads and triangles (not triangulated), outward oriented, with point

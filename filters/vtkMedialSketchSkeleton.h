@@ -1,6 +1,6 @@
 /// \class vtkMedialSketchSkeleton
-/// \brief Real-time skeletonization of sketched closed strokes (\cite ma2021 ): straight skeleton,
-/// BoundedDP, connection of parts, global refinement; and the inflated mesh of each stroke.
+/// \brief Real-time skeletonization of sketched closed strokes (Ma, Wang, Li and Zhang 2021): straight
+/// skeleton, BoundedDP, connection of parts, global refinement; and the inflated mesh of each stroke.
 ///
 /// Input: a polydata whose line cells are closed 2-D strokes (x, y; z ignored), one per part in modelling
 /// order, optionally with cell data `Placement` (16 doubles, row-major 4x4 matrix placing the stroke's plane

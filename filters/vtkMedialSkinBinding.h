@@ -1,7 +1,7 @@
 /// \class vtkMedialSkinBinding
-/// \brief Binds any mesh to any skeleton with heat-diffusion skinning weights (§III.E \cite au2008,
-/// bone heat \cite baran2007), so that vtkMedialRigWriter can write a rig: a sketch's mesh and its skeleton,
-/// an SQM mesh and the skeleton it was made from, a mesh and a skeleton drawn by hand.
+/// \brief Binds any mesh to any skeleton with heat-diffusion skinning weights (Au, Tai, Chu, Cohen-Or and Lee
+/// 2008, §III.E; bone heat as Baran and Popović 2007), so that vtkMedialRigWriter can write a rig: a sketch's
+/// mesh and its skeleton, an SQM mesh and the skeleton it was made from, a mesh and a skeleton drawn by hand.
 ///
 /// Input port 0: a surface mesh (polygons of any size, or strips; triangulated for the solve only).
 /// Input port 1: a skeleton (docs/ARCHITECTURE.md §4; bone i is its 2-point line i after polylines are

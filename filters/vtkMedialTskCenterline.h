@@ -1,5 +1,5 @@
 /// \class vtkMedialTskCenterline
-/// \brief Centerline of a tubular structure in a CT or label image by the TSK method \cite tsk2008.
+/// \brief Centerline of a tubular structure in a CT or label image by the TSK method (WSCG 2008).
 ///
 /// Input: a 3-D vtkImageData (origin, spacing and direction honoured). The structure is the voxels equal to
 /// Label (label images), or within [ThresholdLow, ThresholdHigh] (e.g. colon air -1024..-600 HU), or else
