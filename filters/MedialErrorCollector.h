@@ -32,11 +32,10 @@ class ErrorCollector : public vtkCommand {
   bool HasErrors() const { return !Errors.empty(); }
   /// The messages, in the order they came.
   const std::vector<std::string>& GetErrors() const { return Errors; }
-  ///@{
   /// All messages joined by "; ", or an empty string.
   std::string Joined() const;
+  /// Forgets the messages collected so far.
   void Clear() { Errors.clear(); }
-  ///@}
 
   /// Removes VTK's "ERROR: In ..., line N\nclass (0x...): " prefix from a message.
   static std::string StripVtkPrefix(const std::string& message);

@@ -79,9 +79,10 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   vtkSetClampMacro(BorderParts, int, BORDER_PARTS_AUTOMATIC, BORDER_PARTS_KEEP);
   vtkGetMacro(BorderParts, int);
   ///@}
-  ///@{
   /// Whether the next update drops parts touching the border (BorderParts resolved for the selection).
   bool GetDropBorderParts() const;
+  ///@{
+  /// Fill the cavities of the kept structure before phase I (default off).
   vtkSetMacro(FillHoles, bool);
   vtkGetMacro(FillHoles, bool);
   vtkBooleanMacro(FillHoles, bool);
@@ -184,8 +185,9 @@ class MEDIALFILTERS_EXPORT vtkMedialTskCenterline : public vtkPolyDataAlgorithm 
   /// With RecordStages: the Manhattan layers (scalars `Layer`, Fig. 3) and the clusters (`Cluster`, Figs.
   /// 7-8) as an int label volume over the followed part's box (-1 outside), for the slice views.
   vtkImageData* GetStageLabels() const;
-  static std::vector<std::string> GetStageDataNames() { return {"voxels", "primitive", "tsk-model"}; }
   ///@}
+  /// The names GetStageData takes: "voxels", "primitive", "tsk-model".
+  static std::vector<std::string> GetStageDataNames() { return {"voxels", "primitive", "tsk-model"}; }
 
   ///@{
   /// Figures of the last update.
