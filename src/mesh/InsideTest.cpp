@@ -48,19 +48,21 @@ const Kernel::Vector_3 kDirections[3] = {
 
 bool InsideTest::contains(const Eigen::Vector3d& point) const {
   if (tree_->triangles.empty()) return false;
-  int insideVotes = 0;
-  for (const auto& direction : kDirections) {
+  int insideVotes = 0, outsideVotes = 0;
+  for (const auto& direction : kDirections) {  // two votes of three decide: the third ray is skipped then
     const Kernel::Ray_3 ray(toPoint(point), direction);
-    if (tree_->tree.number_of_intersected_primitives(ray) % 2 == 1) ++insideVotes;
+    ++(tree_->tree.number_of_intersected_primitives(ray) % 2 == 1 ? insideVotes : outsideVotes);
+    if (insideVotes == 2 || outsideVotes == 2) break;
   }
   return insideVotes >= 2;
 }
 
 bool InsideTest::wrapped(const Eigen::Vector3d& point) const {
   if (tree_->triangles.empty()) return false;
-  int insideVotes = 0;
+  int insideVotes = 0, outsideVotes = 0;
   std::vector<Primitive::Id> hits;
-  for (const auto& direction : kDirections) {
+  for (const auto& direction : kDirections) {  // two votes of three decide, as in contains()
+    if (insideVotes == 2 || outsideVotes == 2) break;
     hits.clear();
     tree_->tree.all_intersected_primitives(Kernel::Ray_3(toPoint(point), direction),
                                            std::back_inserter(hits));
@@ -69,7 +71,7 @@ bool InsideTest::wrapped(const Eigen::Vector3d& point) const {
       winding += CGAL::cross_product(t->vertex(1) - t->vertex(0), t->vertex(2) - t->vertex(0)) * direction > 0
                      ? 1
                      : -1;
-    if (winding >= 1) ++insideVotes;
+    ++(winding >= 1 ? insideVotes : outsideVotes);
   }
   return insideVotes >= 2;
 }

@@ -7,13 +7,10 @@
 #include "common/Stopwatch.h"
 #include "common/UnionFind.h"
 
-#include "mesh/StableBoxIds.h"  // before CGAL's Polygon_mesh_processing headers
+#include "sqm/UnionCutting.h"
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <Eigen/Geometry>
-#include <CGAL/Polygon_mesh_processing/corefinement.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
@@ -29,61 +26,9 @@ namespace medial {
 
 namespace {
 
-namespace PMP = CGAL::Polygon_mesh_processing;
-using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
-using Surface = CGAL::Surface_mesh<Exact::Point_3>;
+using Surface = ExactMesh;
 using Face = Surface::Face_index;
 using Vertex = Surface::Vertex_index;
-
-// Marks every triangle the autorefinement cuts, and gives each piece the polygon of the triangle it came
-// from. CGAL copies the visitor: the state is shared.
-struct CutTracker : PMP::Corefinement::Default_visitor<Surface> {
-  Surface::Property_map<Face, int> polygon;
-  Surface::Property_map<Face, bool> cut;
-  std::shared_ptr<int> current = std::make_shared<int>(-1);
-  void before_subface_creations(Face old, Surface&) {
-    *current = polygon[old];
-    cut[old] = true;
-  }
-  void after_subface_created(Face piece, Surface&) {
-    polygon[piece] = *current;
-    cut[piece] = true;
-  }
-};
-
-// CGAL 5.5's autorefine() builds its intersection functor with a constructor that leaves the member
-// `const_mesh_ptr` uninitialised (the two-mesh constructor sets it to nullptr). Whatever the stack held
-// there decides whether degenerate faces are filtered out of the box intersections and how coplanar
-// degenerate pairs are handled: the same mesh gave 42709 or 42701 faces from run to run (the dense tree
-// refined twice), and valgrind reported the jump on it. This is autorefine() (corefinement.h) with the member
-// set to nullptr before the run, reached through the explicit-instantiation access rule ([temp.spec]:
-// access checking does not apply to the names in an explicit instantiation).
-using PointMap = boost::property_map<Surface, boost::vertex_point_t>::type;
-using CurveMap = Surface::Property_map<Surface::Edge_index, bool>;
-using NoOutput = PMP::Corefinement::No_extra_output_from_corefinement<Surface>;
-using AutorefineVisitor =
-    PMP::Corefinement::Surface_intersection_visitor_for_corefinement<Surface, PointMap, PointMap, NoOutput,
-                                                                     CurveMap, CutTracker, true>;
-using Autorefinement =
-    PMP::Corefinement::Intersection_of_triangle_meshes<Surface, PointMap, PointMap, AutorefineVisitor>;
-
-struct MeshPointerMember {
-  using Type = const Surface* Autorefinement::*;
-  friend Type memberOf(MeshPointerMember);
-};
-template <class Tag, typename Tag::Type Member>
-struct PrivateMember {
-  friend typename Tag::Type memberOf(Tag) { return Member; }
-};
-template struct PrivateMember<MeshPointerMember, &Autorefinement::const_mesh_ptr>;
-
-void autorefine(Surface& surface, CutTracker& tracker, CurveMap curve) {
-  NoOutput noOutput;
-  const PointMap points = get(boost::vertex_point, surface);  // the functor keeps a reference to it
-  Autorefinement functor(surface, points, AutorefineVisitor(tracker, noOutput, curve));
-  functor.*memberOf(MeshPointerMember{}) = nullptr;
-  functor(CGAL::Emptyset_iterator(), true);
-}
 
 // Drops the closed components that enclose no volume (two sheets kept where tubes just touch) or less
 // than `smallestPart`, a cavity or a bubble (pockets left where three tubes meet: 6 cavities of 1e-5 or
@@ -170,47 +115,6 @@ void closeOpenEdges(const std::vector<std::array<int, 3>>& triangles, const std:
       break;
     }
   }
-}
-
-// Stage 1: the polygons as triangles fanned from their first vertex in an exact surface, each knowing its
-// polygon and each vertex its index in the SQM mesh.
-struct ExactSurface {
-  Surface surface;
-  Surface::Property_map<Vertex, int> source;  // the SQM mesh's vertex, -1 for a vertex on a curve
-  Surface::Property_map<Surface::Edge_index, bool> curve;
-  std::vector<Vertex> handles;  // of the SQM mesh's vertices
-  CutTracker tracker;
-};
-
-bool buildSurface(const SqmMesh& mesh, ExactSurface& exact, std::string& error) {
-  Surface& surface = exact.surface;
-  exact.source = surface.add_property_map<Vertex, int>("v:source", -1).first;
-  exact.handles.reserve(mesh.vertices.size());
-  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
-    const Eigen::Vector3d& p = mesh.vertices[v];
-    exact.handles.push_back(surface.add_vertex(Exact::Point_3(p.x(), p.y(), p.z())));
-    exact.source[exact.handles.back()] = int(v);
-  }
-  exact.tracker.polygon = surface.add_property_map<Face, int>("f:polygon", -1).first;
-  exact.tracker.cut = surface.add_property_map<Face, bool>("f:cut", false).first;
-  exact.curve = surface.add_property_map<Surface::Edge_index, bool>("e:curve", false).first;
-  for (size_t f = 0; f < mesh.faces.size(); ++f)
-    for (size_t k = 1; k + 1 < mesh.faces[f].size(); ++k) {
-      const auto& face = mesh.faces[f];
-      const Face t = surface.add_face(exact.handles[size_t(face[0])], exact.handles[size_t(face[k])],
-                                      exact.handles[size_t(face[k + 1])]);
-      if (t == Surface::null_face()) {
-        error = "the mesh is not a manifold (polygon " + std::to_string(f) + "): no union";
-        return false;
-      }
-      exact.tracker.polygon[t] = int(f);
-    }
-  // Winding numbers mean something only for a closed surface.
-  if (!CGAL::is_closed(surface)) {
-    error = "the mesh has open edges (no volume to unite): no union";
-    return false;
-  }
-  return true;
 }
 
 // Stage 3: the cut surface in doubles, rounded once: its points (one per point: the autorefinement leaves
@@ -326,7 +230,8 @@ std::vector<int> triangleSides(const ExactSurface& exact, const RoundedSurface& 
           const Eigen::Vector3d offset = 1e-3 * std::sqrt(area[t]) * normal[t].normalized();
           const bool solidBehind = winding.wrapped(centre - offset),
                      solidInFront = winding.wrapped(centre + offset);
-          ++votes[solidBehind == solidInFront ? 0 : solidBehind ? 1 : -1];
+          // Two of the (at most) three votes agreeing decide: the third is not cast.
+          if (++votes[solidBehind == solidInFront ? 0 : solidBehind ? 1 : -1] == 2) break;
         }
         side[k] = votes.empty()
                       ? 0
@@ -485,14 +390,20 @@ SqmOverlaps sqmOverlaps(const SqmMesh& mesh, const std::vector<std::pair<int, in
 
 SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlaps* known) {
   SqmUnionResult result;
-  result.before = known ? *known : sqmOverlaps(mesh);
-  if (result.before.facePairs == 0) return result;
+  if (known && known->facePairs == 0) {
+    result.before = *known;
+    return result;
+  }
+  const std::vector<std::pair<int, int>> cutting = intersectingFaces(mesh.vertices, mesh.faces).facePairs;
+  result.before = known ? *known : sqmOverlaps(mesh, cutting);
+  if (cutting.empty()) return result;
 
-  ExactSurface exact;
-  if (!buildSurface(mesh, exact, result.error)) return result;
-  // Stage 2: every intersection curve becomes edges (marked), no two triangles cut each other any more.
+  // Stages 1 and 2 (UnionCutting): every intersection curve becomes edges (marked), no two triangles cut
+  // each other any more.
   Stopwatch clock;
-  autorefine(exact.surface, exact.tracker, exact.curve);
+  ExactSurface exact;
+  if (!cutAlongIntersections(mesh, cutting, exact, result.error)) return result;
+  result.cutClusters = exact.clusters;
   result.autorefineSeconds = clock.seconds();
   const RoundedSurface rounded = roundedSurface(exact, mesh);
   const std::vector<int> sides = triangleSides(exact, rounded);
