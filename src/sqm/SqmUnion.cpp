@@ -403,7 +403,6 @@ SqmUnionResult unionSqmMesh(SqmMesh& mesh, double smallestPart, const SqmOverlap
   Stopwatch clock;
   ExactSurface exact;
   if (!cutAlongIntersections(mesh, cutting, exact, result.error)) return result;
-  result.cutClusters = exact.clusters;
   result.autorefineSeconds = clock.seconds();
   const RoundedSurface rounded = roundedSurface(exact, mesh);
   const std::vector<int> sides = triangleSides(exact, rounded);

@@ -54,7 +54,6 @@ struct SqmUnionResult {
   int removedPolygons = 0;  ///< polygons wholly inside the volume, removed
   int turnedPolygons = 0;   ///< polygons turned over (the solid lay in front of them)
   int droppedPockets = 0;   ///< closed components enclosing no volume or less than the smallest part, dropped
-  int cutClusters = 0;      ///< regions cut on their own (UnionCutting; 0: the whole mesh at once)
   double autorefineSeconds = 0;  ///< CGAL's cutting along the intersection curves
   double selectionSeconds = 0;   ///< the winding numbers that select the union's faces
   CurveCleanup cleanup;          ///< the cut triangles along the curves (CurveCleanup)

@@ -75,7 +75,8 @@ bool addPolygon(const SqmMesh& mesh, size_t p, const std::vector<Vertex>& handle
 const char* const kNotManifold = "the mesh is not a manifold (polygon ";
 
 // The polygons `polygons` of `mesh` as a surface of their own (vertices only those they use).
-bool buildPart(const SqmMesh& mesh, const std::vector<int>& polygons, ExactSurface& part, std::string& error) {
+bool buildPart(const SqmMesh& mesh, const std::vector<int>& polygons, ExactSurface& part,
+               std::string& error) {
   addProperties(part);
   part.handles.assign(mesh.vertices.size(), ExactMesh::null_vertex());
   for (const int p : polygons)
@@ -223,7 +224,6 @@ bool cutAlongIntersections(const SqmMesh& mesh, const std::vector<std::pair<int,
         error = "the cut mesh is not a manifold: no union";
         return false;
       }
-    exact.clusters = int(clusters.size());
     return closedOrError(exact, error);
   }
   // A cut reached a cluster's border: the whole mesh at once.

@@ -50,12 +50,11 @@ struct CutTracker : CGAL::Polygon_mesh_processing::Corefinement::Default_visitor
 /// The SQM mesh's polygons as triangles of an exact surface, each knowing its polygon and each vertex its
 /// index in the SQM mesh.
 struct ExactSurface {
-  ExactMesh surface;                                           ///< the triangles
+  ExactMesh surface;                                             ///< the triangles
   ExactMesh::Property_map<ExactMesh::Vertex_index, int> source;  ///< SQM vertex; -1 on a curve
   ExactMesh::Property_map<ExactMesh::Edge_index, bool> curve;    ///< edge on an intersection curve
-  std::vector<ExactMesh::Vertex_index> handles;                ///< of the SQM mesh's vertices
-  CutTracker tracker;                                          ///< polygon and cut flag per triangle
-  int clusters = 0;  ///< regions cut on their own (0: the whole mesh was cut at once)
+  std::vector<ExactMesh::Vertex_index> handles;                  ///< of the SQM mesh's vertices
+  CutTracker tracker;                                            ///< polygon and cut flag per triangle
 };
 
 /// Builds `exact` from `mesh` and cuts it along every intersection curve of the faces in `cutting` (pairs
