@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <tuple>
 
 namespace medial {
 
@@ -138,26 +139,27 @@ bool polygonsCut(const std::vector<Eigen::Vector3d>& vertices, const std::vector
 
 FaceIntersections intersectingFaces(const std::vector<Eigen::Vector3d>& vertices,
                                     const std::vector<std::vector<int>>& faces, size_t limit,
-                                    const FacePairFilter& consider, const std::vector<char>* selected) {
+                                    const FacePairFilter& consider, const std::vector<char>* selected,
+                                    const std::vector<int>* subset) {
   FaceIntersections result;
   // Pairs of polygons (of three vertices or more) whose boxes overlap.
+  const size_t listed = subset ? subset->size() : faces.size();
   std::vector<int> polygon;
   std::vector<Box3> tested;
   std::vector<char> testedSelected;
-  polygon.reserve(faces.size());
-  tested.reserve(faces.size());
-  for (size_t f = 0; f < faces.size(); ++f)
+  polygon.reserve(listed);
+  tested.reserve(listed);
+  for (size_t k = 0; k < listed; ++k) {
+    const size_t f = subset ? size_t((*subset)[k]) : k;
     if (faces[f].size() >= 3) {
       tested.push_back(boxOf(vertices, faces[f]));
       polygon.push_back(int(f));
       if (selected) testedSelected.push_back((*selected)[f]);
     }
+  }
   std::vector<std::pair<int, int>> candidates =
       overlappingBoxPairs(tested, selected ? &testedSelected : nullptr);  // a fixed order
-  for (auto& [a, b] : candidates) {
-    a = polygon[size_t(a)];
-    b = polygon[size_t(b)];
-  }
+  for (auto& [a, b] : candidates) std::tie(a, b) = std::minmax(polygon[size_t(a)], polygon[size_t(b)]);
   // Blocks of candidates, each tested in parallel; the search stops after the block that reaches the limit.
   constexpr size_t block = size_t(1) << 16;
   std::vector<char> cut;

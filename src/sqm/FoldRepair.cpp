@@ -125,21 +125,10 @@ class FoldFinder {
   // With `selected` (a flag per face of the level), only the pairs with a selected face.
   Found test(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& tested,
              const IsFold& consider, const std::vector<char>* selected = nullptr) const {
-    std::vector<std::vector<int>> faces;
-    std::vector<char> selection;
-    faces.reserve(tested.size());
-    for (int f : tested) {
-      faces.push_back(faces_[size_t(f)]);
-      if (selected) selection.push_back((*selected)[size_t(f)]);
-    }
     Found found;
-    const auto pairs = intersectingFaces(
-        points, faces, std::numeric_limits<size_t>::max(),
-        [&](int a, int b) { return consider(tested[size_t(a)], tested[size_t(b)]); },
-        selected ? &selection : nullptr);
-    for (const auto& [a, b] : pairs.facePairs) {
-      const int f = std::min(tested[size_t(a)], tested[size_t(b)]),
-                g = std::max(tested[size_t(a)], tested[size_t(b)]);
+    const auto pairs =
+        intersectingFaces(points, faces_, std::numeric_limits<size_t>::max(), consider, selected, &tested);
+    for (const auto& [f, g] : pairs.facePairs) {
       found.folds.emplace_back(f, g);
       found.vertices.resize(points.size(), false);
       for (int h : {f, g})
@@ -166,12 +155,10 @@ bool someCutOnlyWhenProjected(const std::vector<std::vector<int>>& faces,
   for (const auto& [f, g] : folds) involved.insert(involved.end(), {f, g});
   std::sort(involved.begin(), involved.end());
   involved.erase(std::unique(involved.begin(), involved.end()), involved.end());
-  std::vector<std::vector<int>> subset;
-  for (int f : involved) subset.push_back(faces[size_t(f)]);
   const std::set<std::pair<int, int>> wanted(folds.begin(), folds.end());
   const auto flatCuts = intersectingFaces(
-      flat, subset, std::numeric_limits<size_t>::max(),
-      [&](int a, int b) { return wanted.count(std::minmax(involved[size_t(a)], involved[size_t(b)])) > 0; });
+      flat, faces, std::numeric_limits<size_t>::max(),
+      [&](int f, int g) { return wanted.count(std::minmax(f, g)) > 0; }, nullptr, &involved);
   return flatCuts.facePairs.size() < folds.size();
 }
 
@@ -182,7 +169,8 @@ FoldRepairResult repairFolds(const std::vector<std::vector<int>>& faces,
                              const IsFold& isFold, std::vector<int> candidates) {
   FoldRepairResult result;
   const std::vector<Eigen::Vector3d> projected = points;
-  std::vector<double> weight(points.size(), 1.0);  // 1: projected, 0: on the base mesh
+  std::vector<double>& weight = result.shares;
+  weight.assign(points.size(), 1.0);
   FoldFinder finder(faces, points.size(), isFold, std::move(candidates));
   std::vector<bool> folded = finder.first(points);
   if (!folded.empty()) finder.testEveryFace();

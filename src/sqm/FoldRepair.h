@@ -30,6 +30,9 @@ struct FoldRepairResult {
   /// levels as well may undo them. False when every fold left is one of the base mesh itself.
   bool repairable = false;
   std::vector<std::pair<int, int>> foldsLeft;  ///< the pairs of faces still folded
+  /// Per vertex, the share of its move from `flat` to the given point that it kept: 1 where it did not
+  /// move, 0 back on the base mesh's tessellation (or smoothed there).
+  std::vector<double> shares;
 };
 
 /// Moves `points` (the projected vertices of `faces`; `flat` where they lie on the base mesh's tessellation)

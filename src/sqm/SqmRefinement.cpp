@@ -201,12 +201,7 @@ std::vector<int> foldCandidates(const std::vector<std::vector<int>>& faces,
 // Whether some pair of the candidate faces that is a fold cuts each other (the search stops at the first).
 bool anyFold(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector3d>& points,
              const std::function<bool(int, int)>& isFold, const std::vector<int>& candidates) {
-  std::vector<std::vector<int>> tested;
-  tested.reserve(candidates.size());
-  for (int f : candidates) tested.push_back(faces[size_t(f)]);
-  return !intersectingFaces(points, tested, 1, [&](int a, int b) {
-            return isFold(candidates[size_t(a)], candidates[size_t(b)]);
-          }).facePairs.empty();
+  return !intersectingFaces(points, faces, 1, isFold, nullptr, &candidates).facePairs.empty();
 }
 
 // A vertex as OpenSubdiv's PrimvarRefiner interpolates it.
@@ -214,6 +209,14 @@ struct RefinedPoint {
   Eigen::Vector3d p;
   void Clear(void* = nullptr) { p.setZero(); }
   void AddWithWeight(const RefinedPoint& source, double weight) { p += weight * source.p; }
+};
+
+// A vertex's share of the projection the fold repair left it (FoldRepairResult::shares), interpolated to
+// the next level.
+struct RefinedShare {
+  double share = 1;
+  void Clear(void* = nullptr) { share = 0; }
+  void AddWithWeight(const RefinedShare& source, double weight) { share += weight * source.share; }
 };
 
 std::unique_ptr<Far::TopologyRefiner> bilinearRefiner(const SqmMesh& mesh, int levels) {
@@ -381,6 +384,11 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
     std::vector<RefinedPoint> onBase = points;  // the base mesh's tessellation
     baseFace.resize(mesh.faces.size());
     for (size_t f = 0; f < baseFace.size(); ++f) baseFace[f] = int(f);
+    // Repairing every level, each level's vertices keep the share of the projection the repair left the
+    // coarser level (a vertex pulled halfway back is projected halfway at the next level): projected in
+    // full, the finer level folded again where the coarser one was mended (the dense tree's last level,
+    // 5,692 pairs) and its repair took a dozen steps there.
+    std::vector<RefinedShare> shares(repairEveryLevel ? mesh.vertices.size() : 0);
     bool nothingToRedo = true;  // no fold left that repairing the coarser levels could undo
     for (int level = 1; level <= levels; ++level) {
       const Far::TopologyLevel& topology = refiner->GetLevel(level);
@@ -393,6 +401,14 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
       const std::vector<int> faceOfVertex = vertexFaces(topology);
       LevelProjection projection = projectLevel(next, nextOnBase, faceOfVertex, nextBaseFace, nearEdges,
                                                 spheres, skeleton, sharp, scaling);
+      if (repairEveryLevel) {
+        std::vector<RefinedShare> nextShares(next.size());
+        primvars.Interpolate(level, shares, nextShares);
+        shares = std::move(nextShares);
+        for (size_t v = 0; v < next.size(); ++v)
+          projection.projected[v] =
+              projection.flat[v] + shares[v].share * (projection.projected[v] - projection.flat[v]);
+      }
       // Where tubes of other parts cut each other on the base mesh at more pairs of nodes than there are
       // nodes, a first level that folds is one whose last level the repair alone leaves folded (the dense
       // tree, 210 pairs for 150 nodes, at every K: the run repairing every level followed, and made the same
@@ -420,8 +436,13 @@ int refineSqmMesh(SqmMesh& mesh, const Skeleton& skeleton, int levels, const Sha
         FoldRepairResult repair =
             repairFolds(faces, projection.flat, projection.projected, isFold, std::move(candidates));
         nothingToRedo = !repair.repairable;
+        if (repairEveryLevel)
+          for (size_t v = 0; v < shares.size(); ++v) shares[v].share *= repair.shares[v];
         if (level == levels) {
-          report->repairedVertices = repair.movedVertices;
+          report->repairedVertices =
+              repairEveryLevel ? int(std::count_if(shares.begin(), shares.end(),
+                                                   [](const RefinedShare& s) { return s.share < 1; }))
+                               : repair.movedVertices;
           lastFaces = std::move(faces);
         }
       }
