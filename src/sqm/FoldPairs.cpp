@@ -39,13 +39,16 @@ FoldPairs::FoldPairs(const SqmMesh& base, const Skeleton& skeleton) {
   }
   for (const auto& [a, b] : intersectingFaces(base.vertices, base.faces).facePairs)
     baseOverlaps_.insert(ordered(faceNode_[size_t(a)], faceNode_[size_t(b)]));
+  foldPartners_.resize(size_t(skeleton.nodeCount()));
+  for (const auto& [a, b] : near_)
+    if (baseOverlaps_.count({a, b}) == 0) foldPartners_[size_t(a)].push_back(b);  // near_ is sorted
 }
 
 bool FoldPairs::isFold(int baseFaceA, int baseFaceB) const {
   const int a = faceNode_[size_t(baseFaceA)], b = faceNode_[size_t(baseFaceB)];
   if (a < 0 || b < 0) return true;  // capsule vertices: no node to tell by
-  const auto key = ordered(a, b);
-  return near_.count(key) > 0 && baseOverlaps_.count(key) == 0;
+  const auto& partners = foldPartners_[size_t(std::min(a, b))];
+  return std::binary_search(partners.begin(), partners.end(), std::max(a, b));
 }
 
 }  // namespace medial
