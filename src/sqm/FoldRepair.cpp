@@ -18,21 +18,6 @@ constexpr int kLocalRings = 2;
 
 using FacePairs = std::vector<std::pair<int, int>>;
 
-std::vector<std::vector<int>> vertexNeighbours(const std::vector<std::vector<int>>& faces, size_t vertices) {
-  std::vector<std::vector<int>> neighbours(vertices);
-  for (const auto& f : faces)
-    for (size_t k = 0; k < f.size(); ++k) {
-      const int a = f[k], b = f[(k + 1) % f.size()];
-      neighbours[size_t(a)].push_back(b);
-      neighbours[size_t(b)].push_back(a);
-    }
-  for (auto& n : neighbours) {  // each edge is seen from both of its faces
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-  }
-  return neighbours;
-}
-
 // Finds the vertices of faces that fold over others; only pairs that are folds are tested (a refined level
 // of a dense tree has 100,000 faces and tens of thousands of pairs of overlapping tubes). After the first
 // test over every candidate face, only the pairs with a face that moved in the last step are tested,
@@ -98,6 +83,19 @@ class FoldFinder {
     for (int f : movedNow) movingNow_[size_t(f)] = 0;
     for (int f : region) inRegion_[size_t(f)] = 0;
     return found.vertices.empty() ? confirm(points) : found.vertices;
+  }
+  // The vertices sharing an edge with v (of its faces, the corners before and after it), sorted.
+  std::vector<int> neighbours(int v) const {
+    std::vector<int> around;
+    for (int f : facesOf_[size_t(v)]) {
+      const auto& face = faces_[size_t(f)];
+      const size_t k = size_t(std::find(face.begin(), face.end(), v) - face.begin());
+      around.push_back(face[(k + 1) % face.size()]);
+      around.push_back(face[(k + face.size() - 1) % face.size()]);
+    }
+    std::sort(around.begin(), around.end());  // each edge is seen from both of its faces
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    return around;
   }
   // The folds as the mesh is now.
   const FacePairs& folds(const std::vector<Eigen::Vector3d>& points) {
@@ -183,26 +181,27 @@ FoldRepairResult repairFolds(const std::vector<std::vector<int>>& faces,
     }
     folded = finder.again(points, folded);
   }
-  const auto neighbours =
-      folded.empty() ? std::vector<std::vector<int>>{} : vertexNeighbours(faces, points.size());
   // Vertices of folds that appeared since the halvings go to the base mesh first; those already there are
   // smoothed, until kStepsWithoutProgress steps in a row leave as many folded vertices.
   size_t fewest = SIZE_MAX;
   for (int step = 0, stalled = 0;
        step < kFoldSmoothingSteps && !folded.empty() && stalled < kStepsWithoutProgress; ++step) {
-    const std::vector<Eigen::Vector3d> before = points;
+    std::vector<std::pair<size_t, Eigen::Vector3d>> moves;  // applied after: all from the points before
     for (size_t v = 0; v < points.size(); ++v) {
-      if (!folded[v] || neighbours[v].empty()) continue;
+      if (!folded[v]) continue;
+      const std::vector<int> around = finder.neighbours(int(v));
+      if (around.empty()) continue;
       if (weight[v] > 0) {
         result.movedVertices += weight[v] == 1.0;
         weight[v] = 0;
-        points[v] = flat[v];
+        moves.emplace_back(v, flat[v]);
         continue;
       }
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-      for (int n : neighbours[v]) sum += before[size_t(n)];
-      points[v] = sum / double(neighbours[v].size());
+      for (int n : around) sum += points[size_t(n)];
+      moves.emplace_back(v, sum / double(around.size()));
     }
+    for (const auto& [v, p] : moves) points[v] = p;
     folded = finder.again(points, folded);
     const size_t count = size_t(std::count(folded.begin(), folded.end(), true));
     stalled = count < fewest ? 0 : stalled + 1;
